@@ -1,0 +1,103 @@
+// burn_times.cpp -- see burn_times.h.
+#include "burn2/burn_times.h"
+
+#include <stdexcept>
+
+namespace grassfire {
+
+TimeId BurnTimes::ignition(std::uint32_t leaf) {
+  records_.push_back({graph_->node(leaf).radius, kNoTime, leaf, 0});
+  return static_cast<TimeId>(records_.size() - 1);
+}
+
+TimeId BurnTimes::advance(TimeId from, std::uint32_t edge) {
+  const Record& r = records_[from];
+  const Record next{r.value + graph_->edge(edge).length, from, edge, r.depth + 1};
+  records_.push_back(next);
+  return static_cast<TimeId>(records_.size() - 1);
+}
+
+ExactSum BurnTimes::exact(TimeId t) const {
+  ExactSum sum;
+  for (TimeId cur = t; cur != kNoTime; cur = records_[cur].pred) {
+    const Record& r = records_[cur];
+    if (r.pred == kNoTime)
+      sum += graph_->geometry().exact_radius(r.ref);
+    else
+      sum += graph_->geometry().exact_length(r.ref);
+  }
+  return sum;
+}
+
+GraphSum BurnTimes::as_graph_sum(TimeId t) const {
+  GraphSum sum;
+  for (TimeId cur = t; cur != kNoTime; cur = records_[cur].pred) {
+    const Record& r = records_[cur];
+    if (r.pred == kNoTime)
+      sum.add_radius(r.ref);
+    else
+      sum.add_length(r.ref);
+  }
+  return sum;
+}
+
+std::uint32_t BurnTimes::origin(TimeId t) const {
+  while (records_[t].pred != kNoTime) t = records_[t].pred;
+  return records_[t].ref;
+}
+
+ExactSum BurnTimes::exact_difference(TimeId a, TimeId b) const {
+  ExactSum sum;
+  auto add_record = [&](TimeId t, int s) {
+    const Record& r = records_[t];
+    ExactSum term = r.pred == kNoTime ? graph_->geometry().exact_radius(r.ref)
+                                      : graph_->geometry().exact_length(r.ref);
+    if (s > 0)
+      sum += term;
+    else
+      sum -= term;
+  };
+  // Walk both chains up to their common ancestor; the ancestor's value cancels.
+  while (a != b) {
+    const std::uint32_t da = a == kNoTime ? 0 : records_[a].depth + 1;
+    const std::uint32_t db = b == kNoTime ? 0 : records_[b].depth + 1;
+    if (da >= db) {
+      add_record(a, +1);
+      a = records_[a].pred;
+    } else {
+      add_record(b, -1);
+      b = records_[b].pred;
+    }
+  }
+  return sum;
+}
+
+int BurnTimes::compare(TimeId a, TimeId b) const {
+  if (a == b) return 0;
+  const Interval& x = records_[a].value;
+  const Interval& y = records_[b].value;
+  if (x.hi < y.lo) {
+    ++stats_.filter_decided;
+    return -1;
+  }
+  if (y.hi < x.lo) {
+    ++stats_.filter_decided;
+    return 1;
+  }
+  return sign(exact_difference(a, b), &stats_);
+}
+
+int BurnTimes::compare_quench(TimeId a, TimeId b, std::uint32_t edge, TimeId c) const {
+  const Interval q = half(records_[a].value + records_[b].value + graph_->edge(edge).length);
+  const int quick = certified_sign(q - records_[c].value);
+  if (quick != kUndecided) {
+    ++stats_.filter_decided;
+    return quick;
+  }
+  ExactSum d = exact(a) + exact(b) + graph_->geometry().exact_length(edge);
+  d.scale(mpq_class(1, 2));
+  d -= exact(c);
+  return sign(d, &stats_);
+}
+
+}  // namespace grassfire

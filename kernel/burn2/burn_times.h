@@ -1,0 +1,65 @@
+// burn_times.h -- burn times on a medial graph, kept as a DAG of exact expressions.
+//
+// Computes: certified comparisons of burn times. A burn time is either an ignition,
+// R(z) at a leaf z, or an advance, T + length(e) along an edge (3.3.1). Each record keeps
+// a certified double enclosure, so most comparisons are decided by the interval filter;
+// otherwise both times are expanded into ExactSums (R at the ignition leaf plus the edge
+// lengths along the chain), their common ancestor cancelled, and the sign of the
+// difference decided exactly (number/exact_sum.h).
+// Contract: the graph outlives this object; every edge id and node id is valid.
+// Complexity: O(1) to create a time; a comparison is O(1) when the filter decides, and
+// O(L) exact work for chains of length L otherwise.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "burn2/graph_sum.h"
+#include "medial2/medial_graph.h"
+#include "number/exact_sum.h"
+
+namespace grassfire {
+
+using TimeId = std::uint32_t;
+constexpr TimeId kNoTime = 0xffffffffu;
+
+class BurnTimes {
+ public:
+  explicit BurnTimes(const MedialGraph& graph) : graph_(&graph) {}
+
+  TimeId ignition(std::uint32_t leaf);
+  TimeId advance(TimeId from, std::uint32_t edge);
+
+  const Interval& approx(TimeId t) const { return records_[t].value; }
+  // The exact value, as R(leaf) + the lengths of the edges on the chain.
+  ExactSum exact(TimeId t) const;
+  // The same value as a sum of graph atoms (for exact comparison with other sums).
+  GraphSum as_graph_sum(TimeId t) const;
+  // The leaf whose ignition starts the chain of t.
+  std::uint32_t origin(TimeId t) const;
+  // Certified sign of a - b (0 exactly when equal, up to the uncertified case of
+  // exact_sum.h for transcendental edge lengths).
+  int compare(TimeId a, TimeId b) const;
+  // Certified sign of (a + b + length(edge)) / 2 - c; used to compare quench values.
+  int compare_quench(TimeId a, TimeId b, std::uint32_t edge, TimeId c) const;
+
+  std::size_t size() const { return records_.size(); }
+  const NumberStats& stats() const { return stats_; }
+  const MedialGraph& graph() const { return *graph_; }
+
+ private:
+  struct Record {
+    Interval value;
+    TimeId pred;         // kNoTime for an ignition
+    std::uint32_t ref;   // the leaf for an ignition, the edge for an advance
+    std::uint32_t depth; // chain length
+  };
+  // Exact a - b with the shared part of the two chains cancelled.
+  ExactSum exact_difference(TimeId a, TimeId b) const;
+
+  const MedialGraph* graph_;
+  std::vector<Record> records_;
+  mutable NumberStats stats_;
+};
+
+}  // namespace grassfire

@@ -1,0 +1,14 @@
+// point2.h -- a point of the plane with double coordinates (inputs, drawing positions).
+#pragma once
+
+namespace grassfire {
+
+struct Point2 {
+  double x = 0.0;
+  double y = 0.0;
+};
+
+inline bool operator==(const Point2& a, const Point2& b) { return a.x == b.x && a.y == b.y; }
+inline bool operator!=(const Point2& a, const Point2& b) { return !(a == b); }
+
+}  // namespace grassfire

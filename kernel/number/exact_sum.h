@@ -1,0 +1,119 @@
+// exact_sum.h -- real numbers of the form  q + sum_i c_i sqrt(r_i) + sum_k c_k A_k,
+// with rational q, c_i, r_i >= 0, and certified constants A_k; their certified sign.
+//
+// Computes: the exact sign of such a sum (hence exact comparison of burn times, which
+// are sums of a boundary distance and edge lengths along a path of the medial axis).
+// Method (DESIGN.md 3): a double interval filter, then MPFR enclosures at doubling
+// precision; when those cannot separate the value from zero, an exact zero test.
+// Square roots of rationals in different square classes (r_i / r_j not the square of a
+// rational) are linearly independent over Q (Besicovitch 1940), so after grouping the
+// terms by square class the sum is zero iff every class coefficient is zero. A nonzero
+// sum is then separated from zero by raising the precision, which terminates.
+// Certified constants (transcendental values such as parabolic arc lengths, issue 4)
+// cancel only by identity; a sum with uncancelled constants that no precision up to
+// kMaxBits separates from zero is reported as zero and counted as an uncertified tie.
+// Complexity: O(k log k) for k terms plus the MPFR work; the zero test does pairwise
+// perfect-square tests only inside buckets of equal Legendre-symbol fingerprints.
+#pragma once
+
+#include <gmpxx.h>
+#include <mpfr.h>
+
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "number/interval.h"
+
+namespace grassfire {
+
+// A real constant known through certified enclosures at any precision.
+class CertifiedConstant {
+ public:
+  virtual ~CertifiedConstant() = default;
+  // Sets lo <= value <= hi, each rounded at its own precision.
+  virtual void enclose(mpfr_ptr lo, mpfr_ptr hi) const = 0;
+  // Constants with equal identity strings are equal; distinct strings say nothing.
+  virtual std::string identity() const = 0;
+  Interval approx() const;
+};
+
+struct SqrtTerm {
+  mpq_class coef;
+  mpq_class radicand;  // >= 0
+};
+
+struct ConstantTerm {
+  mpq_class coef;
+  std::shared_ptr<const CertifiedConstant> value;
+};
+
+class ExactSum {
+ public:
+  ExactSum() = default;
+  static ExactSum rational(const mpq_class& q);
+  static ExactSum sqrt_of(const mpq_class& radicand);
+  static ExactSum constant(std::shared_ptr<const CertifiedConstant> c);
+
+  ExactSum& operator+=(const ExactSum& other);
+  ExactSum& operator-=(const ExactSum& other);
+  ExactSum& scale(const mpq_class& factor);
+  friend ExactSum operator+(ExactSum a, const ExactSum& b) { return a += b; }
+  friend ExactSum operator-(ExactSum a, const ExactSum& b) { return a -= b; }
+
+  const mpq_class& rational_part() const { return rational_; }
+  const std::vector<SqrtTerm>& sqrt_terms() const { return sqrt_; }
+  const std::vector<ConstantTerm>& constant_terms() const { return constants_; }
+  std::size_t term_count() const { return 1 + sqrt_.size() + constants_.size(); }
+
+  // Merges equal radicands and equal constants, moves square radicands into the
+  // rational part and drops zero coefficients. The value does not change.
+  void simplify();
+
+  Interval approx() const;                       // certified double enclosure
+  void enclose(mpfr_ptr lo, mpfr_ptr hi) const;  // at the precision of lo and hi
+  double to_double() const { return approx().mid(); }
+
+ private:
+  mpq_class rational_ = 0;
+  std::vector<SqrtTerm> sqrt_;
+  std::vector<ConstantTerm> constants_;
+};
+
+// How often each stage of the certified sign decided (DESIGN.md 3: count fallbacks).
+struct NumberStats {
+  std::uint64_t filter_decided = 0;    // decided by the double interval
+  std::uint64_t mpfr_decided = 0;      // decided by a multiprecision enclosure
+  std::uint64_t exact_zero = 0;        // proved zero by the square-class test
+  std::uint64_t uncertified_zero = 0;  // constants left, no precision up to kMaxBits separated
+  std::uint64_t max_bits_used = 0;
+  void merge(const NumberStats& o);
+};
+
+constexpr long kMaxBits = 1 << 14;
+
+// Exact sign (-1, 0, +1) of x; see the header comment for the one uncertified case.
+int sign(const ExactSum& x, NumberStats* stats = nullptr);
+inline int compare(const ExactSum& a, const ExactSum& b, NumberStats* stats = nullptr) {
+  return sign(a - b, stats);
+}
+
+// Exact zero test for the rational and square-root part (constants must be absent).
+bool is_zero_sqrt_part(const ExactSum& x);
+
+// Human-readable form, e.g. "3/2 + 1*sqrt(2) - 1/2*sqrt(5)".
+std::string to_string(const ExactSum& x);
+
+// The canonical rational n / d (gmpxx's two-argument constructor does not reduce, and
+// every mpq function requires reduced operands).
+inline mpq_class make_rational(const mpz_class& n, const mpz_class& d) {
+  mpq_class q(n, d);
+  q.canonicalize();
+  return q;
+}
+
+// Exact enclosure of a rational as a double interval.
+Interval enclose(const mpq_class& q);
+
+}  // namespace grassfire

@@ -1,0 +1,54 @@
+// options.h -- a small command-line option parser shared by every subcommand.
+//
+// Declare options (flags and valued options) and positional arguments with their help
+// text, then parse(). `--help`/`-h` prints the generated usage and makes parse() return
+// false with exit code 0; a malformed command line prints the usage and an error and
+// returns false with exit code 2. Values are checked when read (integers, reals).
+#pragma once
+
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace grassfire::cli {
+
+class Options {
+ public:
+  Options(std::string command, std::string summary);
+
+  Options& positional(const std::string& name, const std::string& help);
+  Options& flag(const std::string& name, const std::string& help);
+  Options& option(const std::string& name, const std::string& value_name, const std::string& help,
+                  std::optional<std::string> default_value = std::nullopt);
+  // Free text printed after the option list (formats, examples).
+  Options& epilog(const std::string& text);
+
+  // False when the caller should exit with exit_code() (help printed, or an error).
+  bool parse(int argc, char** argv);
+  int exit_code() const { return exit_code_; }
+
+  const std::string& arg(const std::string& positional_name) const;
+  bool has(const std::string& name) const;  // a flag given, or an option with a value
+  std::string get(const std::string& name) const;
+  long get_long(const std::string& name, long min_value, long max_value) const;
+  double get_double(const std::string& name) const;
+  std::string usage() const;
+
+ private:
+  struct Spec {
+    std::string name, value_name, help;
+    bool takes_value;
+    std::optional<std::string> default_value;
+  };
+  const Spec* find(const std::string& name) const;
+
+  std::string command_, summary_, epilog_;
+  std::vector<std::pair<std::string, std::string>> positionals_;
+  std::vector<Spec> specs_;
+  std::map<std::string, std::string> values_;
+  std::map<std::string, std::string> args_;
+  int exit_code_ = 0;
+};
+
+}  // namespace grassfire::cli

@@ -1,0 +1,124 @@
+// main.cpp -- regenerates the dissertation's figures into one folder with an index.html.
+//
+// usage: paper_figures [--out DIR] [--data DIR] [--only ID] [--list]
+// Writes every registered figure, then DIR/index.html, which shows each figure (as PNG,
+// produced from the SVG by run.sh) with its caption, and inlines DIR/proof-checks.html
+// (the proof-check report) when it exists. Exit code 1 when a generator fails.
+#include <algorithm>
+#include <chrono>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <sstream>
+
+#include "figure_registry.h"
+
+namespace grassfire::figures {
+
+namespace {
+std::vector<FigureEntry>& registry() {
+  static std::vector<FigureEntry> list;
+  return list;
+}
+
+std::string gallery_name(const std::string& file) {
+  const std::string svg = ".svg";
+  if (file.size() > svg.size() && file.compare(file.size() - svg.size(), svg.size(), svg) == 0)
+    return file.substr(0, file.size() - svg.size()) + ".png";
+  return file;
+}
+
+void write_index(const std::string& dir, const std::vector<std::pair<FigureEntry, std::vector<FigureFile>>>& done) {
+  std::ofstream os(dir + "/index.html");
+  os << "<!doctype html>\n<html><head><meta charset=\"utf-8\"><title>grassfire: figures of Liu 2011</title>\n"
+        "<style>body{font-family:sans-serif;max-width:1200px;margin:auto;padding:1em}"
+        "figure{display:inline-block;vertical-align:top;margin:0.5em;max-width:560px}"
+        "img{max-width:100%;border:1px solid #ccc}figcaption{font-size:0.9em}"
+        "table.checks{border-collapse:collapse}table.checks td,table.checks th{border:1px solid #bbb;padding:3px 6px}"
+        "td.pass{color:#070}td.fail{color:#b00;font-weight:bold}</style></head><body>\n"
+        "<h1>grassfire: the figures of <i>Multi-Dimensional Medial Geometry</i> (Liu 2011), regenerated</h1>\n";
+  std::ifstream checks(dir + "/proof-checks.html");
+  if (checks) {
+    os << "<h2>Proof checks</h2>\n" << checks.rdbuf() << "\n";
+  }
+  for (const auto& [entry, files] : done) {
+    os << "<h2 id=\"" << entry.id << "\">" << entry.title << "</h2>\n";
+    for (const FigureFile& f : files) {
+      const std::string shown = gallery_name(f.file);
+      if (shown.size() > 4 && shown.substr(shown.size() - 4) == ".png")
+        os << "<figure><a href=\"" << f.file << "\"><img src=\"" << shown << "\" alt=\"" << f.file
+           << "\"></a><figcaption>" << f.caption << "</figcaption></figure>\n";
+      else
+        os << "<p><a href=\"" << f.file << "\">" << f.file << "</a>: " << f.caption << "</p>\n";
+    }
+  }
+  os << "</body></html>\n";
+}
+}  // namespace
+
+bool register_figure(std::string id, std::string title, FigureFn fn) {
+  registry().push_back({std::move(id), std::move(title), std::move(fn)});
+  return true;
+}
+
+std::vector<FigureEntry> registered_figures() {
+  auto list = registry();
+  std::stable_sort(list.begin(), list.end(), [](const FigureEntry& a, const FigureEntry& b) { return a.id < b.id; });
+  return list;
+}
+
+}  // namespace grassfire::figures
+
+int main(int argc, char** argv) {
+  using namespace grassfire::figures;
+  FigureContext ctx;
+  ctx.out_dir = "paper-figures/out";
+  ctx.data_dir = GF_PROJECT_DATA;
+  std::string only;
+  for (int i = 1; i < argc; ++i) {
+    const std::string a = argv[i];
+    auto value = [&]() -> std::string {
+      if (i + 1 >= argc) {
+        std::cerr << "paper_figures: " << a << " needs a value\n";
+        std::exit(2);
+      }
+      return argv[++i];
+    };
+    if (a == "--out")
+      ctx.out_dir = value();
+    else if (a == "--data")
+      ctx.data_dir = value();
+    else if (a == "--only")
+      only = value();
+    else if (a == "--list") {
+      for (const FigureEntry& f : registered_figures()) std::cout << f.id << "\t" << f.title << "\n";
+      return 0;
+    } else if (a == "--help" || a == "-h") {
+      std::cout << "usage: paper_figures [--out DIR] [--data DIR] [--only ID] [--list]\n"
+                   "Regenerates the dissertation's figures as SVG into DIR (default paper-figures/out)\n"
+                   "and writes DIR/index.html.\n";
+      return 0;
+    } else {
+      std::cerr << "paper_figures: unknown argument '" << a << "' (see --help)\n";
+      return 2;
+    }
+  }
+  std::filesystem::create_directories(ctx.out_dir);
+  std::vector<std::pair<FigureEntry, std::vector<FigureFile>>> done;
+  int failures = 0;
+  for (const FigureEntry& f : registered_figures()) {
+    if (!only.empty() && f.id != only) continue;
+    const auto start = std::chrono::steady_clock::now();
+    try {
+      done.emplace_back(f, f.fn(ctx));
+      const double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+      std::cerr << "paper_figures: " << f.id << ": " << done.back().second.size() << " files in " << secs << " s"
+                << std::endl;
+    } catch (const std::exception& e) {
+      std::cerr << "paper_figures: " << f.id << " failed: " << e.what() << std::endl;
+      ++failures;
+    }
+  }
+  write_index(ctx.out_dir, done);
+  return failures == 0 ? 0 : 1;
+}

@@ -1,0 +1,54 @@
+#!/usr/bin/env bash
+# grassfire: set up, build and run.
+#   ./run.sh main   install what is missing, build, regenerate the figures and the
+#                   proof-check report into paper-figures/out/ (open index.html)
+#   ./run.sh test   install what is missing, build, run the whole test suite (CTest)
+# Works on a fresh Debian bookworm machine as root (or with sudo).
+set -euo pipefail
+cd "$(dirname "$0")"
+
+PACKAGES=(cmake make g++ libcgal-dev libgmp-dev libmpfr-dev libboost-graph-dev catch2
+          nlohmann-json3-dev librsvg2-bin)
+JOBS=${JOBS:-2}
+BUILD_DIR=${BUILD_DIR:-build}
+
+install_missing() {
+  local missing=()
+  for p in "${PACKAGES[@]}"; do
+    dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+  done
+  [ ${#missing[@]} -eq 0 ] && return 0
+  echo "run.sh: installing ${missing[*]}"
+  local sudo=""
+  [ "$(id -u)" -ne 0 ] && sudo=sudo
+  $sudo apt-get update -qq
+  DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq --no-install-recommends "${missing[@]}"
+}
+
+build() {
+  cmake -S . -B "$BUILD_DIR" -DCMAKE_BUILD_TYPE=Release
+  cmake --build "$BUILD_DIR" -j"$JOBS"
+}
+
+main_job() {
+  local out=paper-figures/out
+  mkdir -p "$out"
+  "$BUILD_DIR"/proofs-checks/proof_checks --markdown "$out/proof-checks.md" --html "$out/proof-checks.html" \
+    | tee "$out/proof-checks.txt"
+  local checks=${PIPESTATUS[0]}
+  "$BUILD_DIR"/paper-figures/paper_figures --out "$out"
+  local n=0
+  for svg in "$out"/*.svg; do
+    [ -e "$svg" ] || continue
+    rsvg-convert --width 1200 --keep-aspect-ratio --background-color white -o "${svg%.svg}.png" "$svg"
+    n=$((n + 1))
+  done
+  echo "run.sh: $n figures in $out; open $out/index.html"
+  [ "$checks" -eq 0 ] || { echo "run.sh: some proof checks failed (see $out/proof-checks.md)"; exit 1; }
+}
+
+case "${1:-}" in
+  main) install_missing; build; main_job ;;
+  test) install_missing; build; (cd "$BUILD_DIR" && ctest --output-on-failure -j"$JOBS") ;;
+  *) sed -n '2,6p' "$0"; exit 2 ;;
+esac

@@ -1,0 +1,122 @@
+// The exact extended grassfire (burn2/extended_grassfire.h) on hand-built graphs with
+// exact expected values, and against the definitional oracle on seeded random graphs.
+#include <catch2/catch.hpp>
+
+#include "burn2/edf_definition.h"
+#include "burn2/extended_grassfire.h"
+#include "medial2/synthetic_graphs.h"
+#include "support.h"
+
+using namespace grassfire;
+using namespace grassfire::testing;
+
+TEST_CASE("two leaves quench in the middle of their edge", "[grassfire]") {
+  const MedialGraph g = integer_graph({1, 1}, {{0, 1, 2}});
+  const GrassfireResult r = extended_grassfire(g);
+  CHECK(exact_value(r, 0) == 1);
+  CHECK(exact_value(r, 1) == 1);
+  REQUIRE(r.ema.size() == 1);
+  const ExtendedMedialAxis& ema = r.ema[0];
+  REQUIRE(ema.kind == ExtendedMedialAxis::Kind::Point);
+  CHECK_FALSE(ema.point.at_node);
+  CHECK(exact_ema_offset(r, ema) == 1);
+  CHECK(exact_ema_edf(r, ema) == 2);
+}
+
+TEST_CASE("a star: the second arrival burns the centre, the quench lies on the long edge", "[grassfire]") {
+  // centre 0 (R = 1); leaves 1 (R 0, w 10), 2 (R 1, w 1), 3 (R 2, w 1).
+  const MedialGraph g = integer_graph({1, 0, 1, 2}, {{0, 1, 10}, {0, 2, 1}, {0, 3, 1}});
+  const GrassfireResult r = extended_grassfire(g);
+  CHECK(exact_value(r, 0) == 3);
+  const ExtendedMedialAxis& ema = r.ema.at(0);
+  REQUIRE_FALSE(ema.point.at_node);
+  CHECK(ema.point.edge == 0);
+  CHECK(ema.point.from == 1);
+  CHECK(exact_ema_offset(r, ema) == mpq_class(13, 2));
+  CHECK(exact_ema_edf(r, ema) == mpq_class(13, 2));
+  // ignite x3, one annihilation at the centre (leaf 2's front), one quench.
+  std::vector<BurnEventType> types;
+  for (const BurnEvent& e : r.events) types.push_back(e.type);
+  CHECK(types == std::vector<BurnEventType>{BurnEventType::Ignite, BurnEventType::Ignite, BurnEventType::Ignite,
+                                            BurnEventType::Annihilate, BurnEventType::Quench});
+  CHECK(r.events[3].place.node == 0);
+  CHECK(r.events[3].time.contains(2));
+}
+
+TEST_CASE("fronts meeting exactly at a node quench on the node", "[grassfire]") {
+  const MedialGraph g = integer_graph({1, 0, 0}, {{0, 1, 1}, {0, 2, 1}});
+  const GrassfireResult r = extended_grassfire(g);
+  const ExtendedMedialAxis& ema = r.ema.at(0);
+  REQUIRE(ema.point.at_node);
+  CHECK(ema.point.node == 0);
+  CHECK(exact_value(r, 0) == 1);
+}
+
+TEST_CASE("a symmetric cross quenches at its centre with two annihilations", "[grassfire]") {
+  const MedialGraph g = integer_graph({1, 0, 0, 0, 0}, {{0, 1, 1}, {0, 2, 1}, {0, 3, 1}, {0, 4, 1}});
+  const GrassfireResult r = extended_grassfire(g);
+  REQUIRE(r.ema.at(0).point.at_node);
+  CHECK(r.ema[0].point.node == 0);
+  int annihilations = 0;
+  for (const BurnEvent& e : r.events) annihilations += e.type == BurnEventType::Annihilate;
+  CHECK(annihilations == 2);
+  CHECK(r.queue_ties > 0);
+}
+
+TEST_CASE("cycles never burn and are the extended medial axis", "[grassfire]") {
+  // triangle 0-1-2 with a pendant path 2-3-4.
+  const MedialGraph g =
+      integer_graph({2, 2, 2, 1, 0}, {{0, 1, 1}, {1, 2, 1}, {2, 0, 1}, {2, 3, 1}, {3, 4, 1}});
+  const GrassfireResult r = extended_grassfire(g);
+  for (std::uint32_t v : {0u, 1u, 2u}) CHECK(r.is_infinite(v));
+  CHECK(exact_value(r, 3) == 1);
+  CHECK(exact_value(r, 4) == 0);
+  const ExtendedMedialAxis& ema = r.ema.at(0);
+  REQUIRE(ema.kind == ExtendedMedialAxis::Kind::Cycles);
+  CHECK(ema.nodes == std::vector<std::uint32_t>{0, 1, 2});
+  CHECK(ema.edges == std::vector<std::uint32_t>{0, 1, 2});
+  for (const BurnEvent& e : r.events) CHECK(e.type != BurnEventType::Quench);
+}
+
+TEST_CASE("an isolated node is its own extended medial axis", "[grassfire]") {
+  const MedialGraph g = integer_graph({5}, {});
+  const GrassfireResult r = extended_grassfire(g);
+  CHECK(exact_value(r, 0) == 5);
+  REQUIRE(r.ema.at(0).point.at_node);
+}
+
+TEST_CASE("square-root lengths: a symmetric Y quenches exactly at its junction", "[grassfire]") {
+  // Junction at the origin, leaves at (3,4), (-3,4), (0,-5), all R = 0: lengths 5 = sqrt(25)
+  // on two arms and sqrt(25) on the third, written as square roots of different forms.
+  std::vector<ExactSum> radii{ExactSum::sqrt_of(4), ExactSum::rational(0), ExactSum::rational(0),
+                              ExactSum::rational(0)};
+  std::vector<ExactSum> lengths{ExactSum::sqrt_of(25), ExactSum::sqrt_of(make_rational(100, 4)),
+                                ExactSum::rational(5)};
+  const MedialGraph g = MedialGraph::from_exact({{0, 0}, {3, 4}, {-3, 4}, {0, -5}}, radii,
+                                                {{0, 1}, {0, 2}, {0, 3}}, lengths);
+  const GrassfireResult r = extended_grassfire(g);
+  REQUIRE(r.ema.at(0).point.at_node);
+  CHECK(r.ema[0].point.node == 0);
+  CHECK(exact_value(r, 0) == 5);
+}
+
+TEST_CASE("the engine equals the definition on random trees and graphs with cycles", "[grassfire][oracle]") {
+  int graphs = 0, with_cycles = 0, edge_quenches = 0;
+  for (std::uint64_t seed = 0; seed < 1200; ++seed) {
+    const SyntheticFamily family = seed % 2 ? SyntheticFamily::Geometric : SyntheticFamily::Integer;
+    const std::uint32_t nodes = 1 + static_cast<std::uint32_t>(seed % 37);
+    const std::uint32_t extra = (seed % 3 == 0) ? static_cast<std::uint32_t>(seed % 4) : 0;
+    const MedialGraph g = random_medial_graph(seed, nodes, extra, family);
+    g.validate();
+    const GrassfireResult r = extended_grassfire(g);
+    const DefinitionalEdf d = edf_by_definition(g);
+    INFO("seed " << seed);
+    require_equal_to_definition(g, r, d);
+    ++graphs;
+    with_cycles += g.cycle_rank() > 0;
+    for (const ExtendedMedialAxis& e : r.ema) edge_quenches += e.kind == ExtendedMedialAxis::Kind::Point && !e.point.at_node;
+  }
+  CHECK(graphs == 1200);
+  CHECK(with_cycles > 200);
+  CHECK(edge_quenches > 300);
+}
