@@ -1,0 +1,211 @@
+// medial_complex.h -- the medial axis of a 3D shape as a non-manifold PL 2-complex (ch. 4).
+//
+// Computes, from a RawComplex: the edges (with their stratum: dangling segment, border,
+// manifold, singular = M1 of 4.2.2), the cyclic order of the triangles around every edge,
+// the sheets (components of triangles joined across manifold edges; joining only across
+// manifold edges already splits sheets at pinch vertices), an exact planar frame per
+// planar sheet (else per triangle), the link of every vertex with its sectors (fans of
+// triangles between consecutive pole directions, 4.2.2 and Fig. 4.5), the vertex kinds
+// (interior, border, singular curve, singular point, ...), and the ignition function f
+// on border points (RawComplex rules; f = R by default). DESIGN.md 5.
+//
+// Vocabulary of the link (the graph a small sphere around a point cuts out of M):
+//  - link nodes are the incident edges (directions), link arcs are the incident triangles;
+//  - a pole is an incident edge that is singular (>= 3 triangles) or a dangling segment;
+//  - a sector is a maximal fan of incident triangles joined across non-pole edges; its two
+//    ends are poles or free ends (border edges), or it is closed (a full circle without
+//    poles, the neighbourhood of an interior point);
+//  - a border point is a point whose link is contractible (a non-empty tree, or empty for
+//    an isolated vertex): it ignites at f. The corner c of the board and fin (DESIGN.md 5)
+//    has a circle in its link and is not a border point, as Fig. 4.4 requires.
+// The burning rule (burn3/discrete_burning.h) uses `remaining_link_contractible`.
+//
+// Exactness: every combinatorial decision (degeneracy, duplicates, angular order around an
+// edge, coplanarity of sheets) is an exact predicate on rational coordinates (gmpxx). The
+// double members are nearest approximations for drawing and for the approximate baseline.
+// Contract (the constructor throws std::invalid_argument naming raw.source and the first
+// violation): indices in range; no repeated vertex in a cell; distinct vertex positions;
+// no degenerate (collinear) triangle; no duplicate triangle or segment; no segment that is
+// also a triangle edge; R^2 >= 0; two triangles on one edge never lie in the same
+// half-plane (a local overlap); border rules name border edges. Global self-intersection
+// of far-apart triangles is not checked.
+// Complexity: construction O(n log n) exact comparisons (n = cells), validate() the same;
+// every accessor O(1).
+#pragma once
+
+#include <gmpxx.h>
+
+#include <array>
+#include <cstdint>
+#include <limits>
+#include <string>
+#include <vector>
+
+#include "complex3/exact_predicates3.h"
+#include "complex3/raw_complex.h"
+
+namespace grassfire {
+
+constexpr std::uint32_t kNoIndex = std::numeric_limits<std::uint32_t>::max();
+
+enum class EdgeStratum : std::uint8_t { Dangling, Border, Manifold, Singular };
+const char* to_string(EdgeStratum s);
+
+enum class VertexKind : std::uint8_t {
+  Isolated,         // empty link: a 0-dimensional part
+  Interior,         // link = one circle of triangles (a point of M2)
+  Border,           // link = one arc of triangles (a point of dM2)
+  SegmentEnd,       // link = one segment direction: a leaf of a 1-dimensional part
+  SegmentInterior,  // link = two segment directions and nothing else
+  SingularCurve,    // link = two singular poles joined by k >= 3 sector arcs (a point of M1)
+  SingularPoint     // anything else (M0): junctions of singular curves, pinches, curve ends
+};
+const char* to_string(VertexKind k);
+
+using Vec3d = std::array<double, 3>;
+
+struct ComplexVertex {
+  ExactPoint3 exact;
+  Vec3d approx{};
+  mpq_class radius_squared;
+  double radius = 0.0;  // nearest double to sqrt(radius_squared)
+  VertexKind kind = VertexKind::Isolated;
+};
+
+struct ComplexEdge {
+  std::array<std::uint32_t, 2> v{};  // v[0] < v[1]
+  EdgeStratum stratum = EdgeStratum::Dangling;
+  double length = 0.0;
+  IgnitionRule rule = IgnitionRule::Linear;  // meaningful on border edges
+  ExactPoint3 rule_point;                    // for DistanceToPoint
+  Vec3d rule_point_approx{};
+};
+
+struct ComplexTriangle {
+  std::array<std::uint32_t, 3> v{};
+  std::array<std::uint32_t, 3> e{};  // e[i] is the edge opposite v[i]
+  std::uint32_t sheet = 0;
+};
+
+// An exact frame of a plane: p = origin + u e1 + v e2 with e1 . e2 = 0; squared lengths
+// are u^2 |e1|^2 + v^2 |e2|^2, so local coordinates and squared distances stay rational.
+struct PlanarFrame {
+  ExactPoint3 origin, e1, e2, normal;  // normal = e1 x e2
+  mpq_class e1_norm2, e2_norm2;
+  std::array<mpq_class, 2> local(const ExactPoint3& p) const;  // exact for points of the plane
+  bool contains(const ExactPoint3& p) const;                   // exact coplanarity test
+};
+
+struct Sheet {
+  std::vector<std::uint32_t> triangles;
+  bool planar = false;  // all vertices coplanar (exact); then frame is the sheet's plane
+  std::uint32_t frame = kNoIndex;
+};
+
+struct Sector {
+  std::uint32_t apex = 0;
+  std::uint32_t sheet = 0;
+  std::vector<std::uint32_t> triangles;  // in fan order
+  // The incident edges that bound the fan, in fan order: poles, or border edges (free
+  // ends); kNoIndex for both when the fan is closed (a circle without pole).
+  std::array<std::uint32_t, 2> ends{kNoIndex, kNoIndex};
+  bool closed = false;
+};
+
+// An element of the link of a vertex for the burning rule: a pole or a sector.
+struct LinkElement {
+  bool is_pole = false;
+  std::uint32_t id = 0;  // edge id of a pole, sector id of a sector
+};
+
+class MedialComplex {
+ public:
+  explicit MedialComplex(const RawComplex& raw);
+
+  // Re-checks the contract and every derived structure; throws std::logic_error naming
+  // the first violation. Every test calls it after every construction.
+  void validate() const;
+
+  const std::string& source() const { return source_; }
+  std::size_t vertex_count() const { return vertices_.size(); }
+  std::size_t edge_count() const { return edges_.size(); }
+  std::size_t triangle_count() const { return triangles_.size(); }
+  const ComplexVertex& vertex(std::uint32_t v) const { return vertices_[v]; }
+  const ComplexEdge& edge(std::uint32_t e) const { return edges_[e]; }
+  const ComplexTriangle& triangle(std::uint32_t t) const { return triangles_[t]; }
+  const std::vector<ComplexVertex>& vertices() const { return vertices_; }
+  const std::vector<ComplexEdge>& edges() const { return edges_; }
+  const std::vector<ComplexTriangle>& triangles() const { return triangles_; }
+
+  // Triangles around an edge, in exact angular order about the directed line v[0] -> v[1].
+  const std::vector<std::uint32_t>& edge_triangles(std::uint32_t e) const { return edge_triangles_[e]; }
+  const std::vector<std::uint32_t>& vertex_edges(std::uint32_t v) const { return vertex_edges_[v]; }
+  const std::vector<std::uint32_t>& vertex_triangles(std::uint32_t v) const { return vertex_triangles_[v]; }
+  // The edge {a, b}, or kNoIndex.
+  std::uint32_t find_edge(std::uint32_t a, std::uint32_t b) const;
+
+  const std::vector<Sheet>& sheets() const { return sheets_; }
+  const std::vector<PlanarFrame>& frames() const { return frames_; }
+  // The sheet's frame when the sheet is planar, else the triangle's own frame.
+  const PlanarFrame& triangle_frame(std::uint32_t t) const { return frames_[triangle_frame_[t]]; }
+
+  const std::vector<Sector>& sectors() const { return sectors_; }
+  // The link elements of vertex v: its poles (in vertex_edges order), then its sectors.
+  const std::vector<LinkElement>& link_elements(std::uint32_t v) const { return link_elements_[v]; }
+  // The local element index, at triangle t's corner i, of the sector containing t.
+  std::uint32_t corner_element(std::uint32_t t, int i) const { return corner_element_[3 * t + i]; }
+  // The local element index at edge e's end j (vertex e.v[j]) of the direction along e:
+  // the pole itself, or the sector that contains (or ends at) e.
+  std::uint32_t edge_end_element(std::uint32_t e, int j) const { return edge_end_element_[2 * e + j]; }
+
+  // The burning rule's topological test (DESIGN.md 5): with the link elements flagged in
+  // `arrived` removed, is the rest of the link of v empty or contractible (connected and
+  // without cycle)? A removed pole takes its link node away; a removed sector its arcs and
+  // its free ends. `arrived.size()` must equal link_elements(v).size().
+  bool remaining_link_contractible(std::uint32_t v, const std::vector<bool>& arrived) const;
+  // The same test at an interior point of edge e, whose link is two poles (the directions
+  // along e) joined by one arc per incident triangle: arrived_poles[j] for the direction of
+  // e.v[j], arrived_triangles counting arrived arcs.
+  static bool remaining_edge_link_contractible(std::size_t triangle_count, bool pole0, bool pole1,
+                                               std::size_t arrived_triangles);
+
+  bool is_border_point(std::uint32_t v) const { return border_point_[v]; }
+  bool is_singular_point(std::uint32_t v) const { return vertices_[v].kind == VertexKind::SingularPoint; }
+  // f at a border vertex: the minimum over its border edges' rules (Linear gives R), R when
+  // it has none; +infinity at a vertex that is not a border point (it never ignites).
+  double ignition_at_vertex(std::uint32_t v) const { return vertex_ignition_[v]; }
+  // f at the point (1 - s) v[0] + s v[1] of border edge e, 0 <= s <= 1 (+infinity for Never).
+  double ignition_on_edge(std::uint32_t e, double s) const;
+
+  std::size_t count(EdgeStratum s) const;
+  std::size_t count(VertexKind k) const;
+
+ private:
+  void check_raw(const RawComplex& raw) const;
+  void build_edges(const RawComplex& raw);
+  void order_edge_triangles();
+  void build_sheets();
+  void build_sectors();
+  void classify_vertices();
+  void apply_ignition(const RawComplex& raw);
+  [[noreturn]] void fail(const std::string& what) const;
+
+  std::string source_;
+  std::vector<ComplexVertex> vertices_;
+  std::vector<ComplexEdge> edges_;
+  std::vector<ComplexTriangle> triangles_;
+  std::vector<std::vector<std::uint32_t>> edge_triangles_;
+  std::vector<std::vector<std::uint32_t>> vertex_edges_;
+  std::vector<std::vector<std::uint32_t>> vertex_triangles_;
+  std::vector<Sheet> sheets_;
+  std::vector<PlanarFrame> frames_;
+  std::vector<std::uint32_t> triangle_frame_;
+  std::vector<Sector> sectors_;
+  std::vector<std::vector<LinkElement>> link_elements_;
+  std::vector<std::uint32_t> corner_element_;
+  std::vector<std::uint32_t> edge_end_element_;
+  std::vector<bool> border_point_;
+  std::vector<double> vertex_ignition_;
+};
+
+}  // namespace grassfire
