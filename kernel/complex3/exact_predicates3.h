@@ -51,6 +51,38 @@ inline bool collinear(const ExactPoint3& a, const ExactPoint3& b, const ExactPoi
   return is_zero(cross(b - a, c - a));
 }
 
+// Exact angular order of half-planes about the directed line a -> b (the triangles around
+// an edge). direction(w) is the component of w - a orthogonal to the line (rational);
+// compare(ref, u, w) orders u and w by their angle, counterclockwise seen from b, measured
+// from ref in [0, 2 pi): -1, 0 (same half-plane), +1.
+class EdgeAngularOrder {
+ public:
+  EdgeAngularOrder(const ExactPoint3& a, const ExactPoint3& b) : a_(a), d_(b - a), d2_(dot(d_, d_)) {}
+  ExactPoint3 direction(const ExactPoint3& w) const {
+    const ExactPoint3 r = w - a_;
+    const mpq_class s = dot(r, d_) / d2_;
+    return r - s * d_;
+  }
+  int compare(const ExactPoint3& ref, const ExactPoint3& u, const ExactPoint3& w) const {
+    const int hu = half(ref, u), hw = half(ref, w);
+    if (hu != hw) return hu < hw ? -1 : 1;
+    const int s = sgn(dot(d_, cross(u, w)));  // > 0: w is counterclockwise of u
+    if (s != 0) return s > 0 ? -1 : 1;
+    return 0;  // same half: s == 0 means the same direction
+  }
+
+ private:
+  // 0 for angles in [0, pi), 1 for [pi, 2 pi).
+  int half(const ExactPoint3& ref, const ExactPoint3& u) const {
+    const int s = sgn(dot(d_, cross(ref, u)));
+    if (s > 0) return 0;
+    if (s < 0) return 1;
+    return sgn(dot(ref, u)) > 0 ? 0 : 1;
+  }
+  ExactPoint3 a_, d_;
+  mpq_class d2_;
+};
+
 inline std::array<double, 3> to_double(const ExactPoint3& p) { return {p.x.get_d(), p.y.get_d(), p.z.get_d()}; }
 
 }  // namespace grassfire

@@ -87,6 +87,22 @@ struct ComplexTriangle {
   std::uint32_t sheet = 0;
 };
 
+// The corner of t at vertex v (0, 1, 2), or -1.
+inline int corner_of(const ComplexTriangle& t, std::uint32_t v) {
+  return t.v[0] == v ? 0 : t.v[1] == v ? 1 : t.v[2] == v ? 2 : -1;
+}
+// The two edges of t incident to its vertex v (v must be a vertex of t).
+inline std::array<std::uint32_t, 2> edges_at(const ComplexTriangle& t, std::uint32_t v) {
+  const int i = corner_of(t, v);
+  return {t.e[(i + 1) % 3], t.e[(i + 2) % 3]};
+}
+// The vertex of t not on the edge with ends ab.
+inline std::uint32_t third_vertex(const ComplexTriangle& t, const std::array<std::uint32_t, 2>& ab) {
+  for (std::uint32_t v : t.v)
+    if (v != ab[0] && v != ab[1]) return v;
+  return t.v[0];
+}
+
 // An exact frame of a plane: p = origin + u e1 + v e2 with e1 . e2 = 0; squared lengths
 // are u^2 |e1|^2 + v^2 |e2|^2, so local coordinates and squared distances stay rational.
 struct PlanarFrame {
@@ -95,6 +111,8 @@ struct PlanarFrame {
   std::array<mpq_class, 2> local(const ExactPoint3& p) const;  // exact for points of the plane
   bool contains(const ExactPoint3& p) const;                   // exact coplanarity test
 };
+// The frame of the plane of triangle abc: origin a, e1 = b - a.
+PlanarFrame frame_of_triangle(const ExactPoint3& a, const ExactPoint3& b, const ExactPoint3& c);
 
 struct Sheet {
   std::vector<std::uint32_t> triangles;
@@ -187,6 +205,9 @@ class MedialComplex {
   void build_sheets();
   void build_sectors();
   void classify_vertices();
+  VertexKind classify_link(std::uint32_t v) const;
+  Sector trace_fan(std::uint32_t v, std::uint32_t t) const;
+  bool is_pole(std::uint32_t e) const;
   void apply_ignition(const RawComplex& raw);
   [[noreturn]] void fail(const std::string& what) const;
 

@@ -1,0 +1,410 @@
+// medial_complex.cpp -- construction of the MedialComplex from a RawComplex (see header).
+#include "complex3/medial_complex.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+#include <sstream>
+#include <stdexcept>
+#include <tuple>
+
+#include "complex3/complex_checks.h"
+
+namespace grassfire {
+
+const char* to_string(EdgeStratum s) {
+  switch (s) {
+    case EdgeStratum::Dangling: return "dangling";
+    case EdgeStratum::Border: return "border";
+    case EdgeStratum::Manifold: return "manifold";
+    case EdgeStratum::Singular: return "singular";
+  }
+  return "?";
+}
+
+const char* to_string(VertexKind k) {
+  switch (k) {
+    case VertexKind::Isolated: return "isolated";
+    case VertexKind::Interior: return "interior";
+    case VertexKind::Border: return "border";
+    case VertexKind::SegmentEnd: return "segment-end";
+    case VertexKind::SegmentInterior: return "segment-interior";
+    case VertexKind::SingularCurve: return "singular-curve";
+    case VertexKind::SingularPoint: return "singular-point";
+  }
+  return "?";
+}
+
+std::array<mpq_class, 2> PlanarFrame::local(const ExactPoint3& p) const {
+  const ExactPoint3 d = p - origin;
+  return {mpq_class(dot(d, e1) / e1_norm2), mpq_class(dot(d, e2) / e2_norm2)};
+}
+
+bool PlanarFrame::contains(const ExactPoint3& p) const { return sgn(dot(normal, p - origin)) == 0; }
+
+PlanarFrame frame_of_triangle(const ExactPoint3& a, const ExactPoint3& b, const ExactPoint3& c) {
+  PlanarFrame f;
+  f.origin = a;
+  f.e1 = b - a;
+  f.e2 = cross(cross(b - a, c - a), f.e1);
+  f.normal = cross(f.e1, f.e2);
+  f.e1_norm2 = dot(f.e1, f.e1);
+  f.e2_norm2 = dot(f.e2, f.e2);
+  return f;
+}
+
+MedialComplex::MedialComplex(const RawComplex& raw) : source_(raw.source) {
+  check_raw(raw);
+  vertices_.resize(raw.vertices.size());
+  for (std::size_t i = 0; i < raw.vertices.size(); ++i) {
+    ComplexVertex& v = vertices_[i];
+    v.exact = raw.vertices[i];
+    v.approx = to_double(v.exact);
+    v.radius_squared = raw.radius_squared[i];
+    v.radius = std::sqrt(v.radius_squared.get_d());
+  }
+  build_edges(raw);
+  order_edge_triangles();
+  build_sheets();
+  build_sectors();
+  classify_vertices();
+  apply_ignition(raw);
+}
+
+void MedialComplex::fail(const std::string& what) const {
+  throw std::invalid_argument((source_.empty() ? std::string("complex") : source_) + ": " + what);
+}
+
+void MedialComplex::check_raw(const RawComplex& raw) const {
+  if (auto problem = first_raw_violation(raw)) fail(*problem);
+}
+
+void MedialComplex::build_edges(const RawComplex& raw) {
+  // (low, high, is_segment, cell id, corner): sorting groups the occurrences of each edge.
+  using Occurrence = std::tuple<std::uint32_t, std::uint32_t, int, std::uint32_t, int>;
+  std::vector<Occurrence> occ;
+  occ.reserve(3 * raw.triangles.size() + raw.segments.size());
+  for (std::uint32_t t = 0; t < raw.triangles.size(); ++t) {
+    const auto& tv = raw.triangles[t];
+    for (int i = 0; i < 3; ++i) {
+      const std::uint32_t a = tv[(i + 1) % 3], b = tv[(i + 2) % 3];
+      occ.emplace_back(std::min(a, b), std::max(a, b), 0, t, i);
+    }
+  }
+  for (std::uint32_t s = 0; s < raw.segments.size(); ++s) {
+    const auto& sv = raw.segments[s];
+    occ.emplace_back(std::min(sv[0], sv[1]), std::max(sv[0], sv[1]), 1, s, 0);
+  }
+  std::sort(occ.begin(), occ.end());
+  triangles_.resize(raw.triangles.size());
+  for (std::uint32_t t = 0; t < raw.triangles.size(); ++t) triangles_[t].v = raw.triangles[t];
+  for (std::size_t i = 0; i < occ.size();) {
+    std::size_t j = i;
+    const auto [a, b, seg0, id0, c0] = occ[i];
+    (void)seg0, (void)id0, (void)c0;
+    ComplexEdge e;
+    e.v = {a, b};
+    std::vector<std::uint32_t> tris;
+    int segments = 0;
+    std::uint32_t segment_id = 0;
+    for (; j < occ.size() && std::get<0>(occ[j]) == a && std::get<1>(occ[j]) == b; ++j) {
+      if (std::get<2>(occ[j]) == 1) {
+        ++segments;
+        segment_id = std::get<3>(occ[j]);
+      } else {
+        tris.push_back(std::get<3>(occ[j]));
+        triangles_[std::get<3>(occ[j])].e[std::get<4>(occ[j])] = static_cast<std::uint32_t>(edges_.size());
+      }
+    }
+    std::ostringstream where;
+    where << "edge (" << a << ", " << b << ")";
+    if (segments > 1) fail("segment " + std::to_string(segment_id) + " repeats " + where.str());
+    if (segments == 1 && !tris.empty())
+      fail("segment " + std::to_string(segment_id) + " is also an edge of triangle " + std::to_string(tris[0]));
+    const std::size_t k = tris.size();
+    e.stratum = k == 0   ? EdgeStratum::Dangling
+                : k == 1 ? EdgeStratum::Border
+                : k == 2 ? EdgeStratum::Manifold
+                         : EdgeStratum::Singular;
+    e.length = std::sqrt(squared_distance(raw.vertices[a], raw.vertices[b]).get_d());
+    edges_.push_back(e);
+    edge_triangles_.push_back(std::move(tris));
+    i = j;
+  }
+  vertex_edges_.assign(vertices_.size(), {});
+  vertex_triangles_.assign(vertices_.size(), {});
+  for (std::uint32_t e = 0; e < edges_.size(); ++e)
+    for (std::uint32_t v : edges_[e].v) vertex_edges_[v].push_back(e);
+  for (std::uint32_t t = 0; t < triangles_.size(); ++t)
+    for (std::uint32_t v : triangles_[t].v) vertex_triangles_[v].push_back(t);
+}
+
+std::uint32_t MedialComplex::find_edge(std::uint32_t a, std::uint32_t b) const {
+  if (a >= vertices_.size() || b >= vertices_.size()) return kNoIndex;
+  for (std::uint32_t e : vertex_edges_[a])
+    if (edges_[e].v[0] == std::min(a, b) && edges_[e].v[1] == std::max(a, b)) return e;
+  return kNoIndex;
+}
+
+void MedialComplex::order_edge_triangles() {
+  for (std::uint32_t e = 0; e < edges_.size(); ++e) {
+    auto& tris = edge_triangles_[e];
+    if (tris.size() < 2) continue;
+    const ExactPoint3& a = vertices_[edges_[e].v[0]].exact;
+    const ExactPoint3& b = vertices_[edges_[e].v[1]].exact;
+    const EdgeAngularOrder order(a, b);
+    std::vector<std::pair<ExactPoint3, std::uint32_t>> keyed;
+    for (std::uint32_t t : tris) keyed.emplace_back(order.direction(vertices_[third_vertex(triangles_[t], edges_[e].v)].exact), t);
+    const ExactPoint3 ref = keyed.front().first;
+    std::sort(keyed.begin(), keyed.end(),
+              [&](const auto& p, const auto& q) { return order.compare(ref, p.first, q.first) < 0; });
+    for (std::size_t i = 0; i + 1 < keyed.size(); ++i)
+      if (order.compare(ref, keyed[i].first, keyed[i + 1].first) == 0)
+        fail("triangles " + std::to_string(keyed[i].second) + " and " + std::to_string(keyed[i + 1].second) +
+             " overlap along edge (" + std::to_string(edges_[e].v[0]) + ", " + std::to_string(edges_[e].v[1]) + ")");
+    for (std::size_t i = 0; i < keyed.size(); ++i) tris[i] = keyed[i].second;
+  }
+}
+
+void MedialComplex::build_sheets() {
+  std::vector<std::uint32_t> parent(triangles_.size());
+  std::iota(parent.begin(), parent.end(), 0u);
+  auto find = [&](std::uint32_t x) {
+    while (parent[x] != x) x = parent[x] = parent[parent[x]];
+    return x;
+  };
+  for (std::uint32_t e = 0; e < edges_.size(); ++e)
+    if (edges_[e].stratum == EdgeStratum::Manifold) {
+      const std::uint32_t r0 = find(edge_triangles_[e][0]), r1 = find(edge_triangles_[e][1]);
+      if (r0 != r1) parent[std::max(r0, r1)] = std::min(r0, r1);
+    }
+  std::vector<std::uint32_t> sheet_of_root(triangles_.size(), kNoIndex);
+  for (std::uint32_t t = 0; t < triangles_.size(); ++t) {
+    const std::uint32_t r = find(t);
+    if (sheet_of_root[r] == kNoIndex) {
+      sheet_of_root[r] = static_cast<std::uint32_t>(sheets_.size());
+      sheets_.emplace_back();
+    }
+    triangles_[t].sheet = sheet_of_root[r];
+    sheets_[sheet_of_root[r]].triangles.push_back(t);
+  }
+  triangle_frame_.assign(triangles_.size(), kNoIndex);
+  for (Sheet& s : sheets_) {
+    const auto& t0 = triangles_[s.triangles.front()].v;
+    PlanarFrame f = frame_of_triangle(vertices_[t0[0]].exact, vertices_[t0[1]].exact, vertices_[t0[2]].exact);
+    s.planar = std::all_of(s.triangles.begin(), s.triangles.end(), [&](std::uint32_t t) {
+      const auto& tv = triangles_[t].v;
+      return std::all_of(tv.begin(), tv.end(), [&](std::uint32_t v) { return f.contains(vertices_[v].exact); });
+    });
+    if (s.planar) {
+      s.frame = static_cast<std::uint32_t>(frames_.size());
+      frames_.push_back(std::move(f));
+      for (std::uint32_t t : s.triangles) triangle_frame_[t] = s.frame;
+      continue;
+    }
+    for (std::uint32_t t : s.triangles) {
+      const auto& tv = triangles_[t].v;
+      triangle_frame_[t] = static_cast<std::uint32_t>(frames_.size());
+      frames_.push_back(frame_of_triangle(vertices_[tv[0]].exact, vertices_[tv[1]].exact, vertices_[tv[2]].exact));
+    }
+  }
+}
+
+bool MedialComplex::is_pole(std::uint32_t e) const {
+  return edges_[e].stratum == EdgeStratum::Singular || edges_[e].stratum == EdgeStratum::Dangling;
+}
+
+void MedialComplex::build_sectors() {
+  link_elements_.assign(vertices_.size(), {});
+  corner_element_.assign(3 * triangles_.size(), kNoIndex);
+  edge_end_element_.assign(2 * edges_.size(), kNoIndex);
+  for (std::uint32_t v = 0; v < vertices_.size(); ++v) {
+    auto& elements = link_elements_[v];
+    for (std::uint32_t e : vertex_edges_[v])
+      if (is_pole(e)) {
+        edge_end_element_[2 * e + (edges_[e].v[0] == v ? 0 : 1)] = static_cast<std::uint32_t>(elements.size());
+        elements.push_back({true, e});
+      }
+    for (std::uint32_t t : vertex_triangles_[v]) {
+      if (corner_element_[3 * t + corner_of(triangles_[t], v)] != kNoIndex) continue;
+      Sector s = trace_fan(v, t);
+      const auto local = static_cast<std::uint32_t>(elements.size());
+      for (std::uint32_t ft : s.triangles) corner_element_[3 * ft + corner_of(triangles_[ft], v)] = local;
+      for (std::uint32_t ft : s.triangles)
+        for (std::uint32_t e : edges_at(triangles_[ft], v))
+          if (!is_pole(e)) edge_end_element_[2 * e + (edges_[e].v[0] == v ? 0 : 1)] = local;
+      elements.push_back({false, static_cast<std::uint32_t>(sectors_.size())});
+      sectors_.push_back(std::move(s));
+    }
+  }
+}
+
+// The fan of triangles around v that contains t, joined across non-pole edges at v: walk
+// back from t to an end (or all the way round), then forward collecting the fan in order.
+Sector MedialComplex::trace_fan(std::uint32_t v, std::uint32_t t) const {
+  auto across = [&](std::uint32_t tri, std::uint32_t e) {  // the other triangle on manifold edge e
+    const auto& et = edge_triangles_[e];
+    return et[0] == tri ? et[1] : et[0];
+  };
+  auto other_edge = [&](std::uint32_t tri, std::uint32_t e) {
+    const auto es = edges_at(triangles_[tri], v);
+    return es[0] == e ? es[1] : es[0];
+  };
+  // Walk backwards through edges_at(t)[0] until a non-manifold edge or back at t.
+  std::uint32_t start = t, entry = edges_at(triangles_[t], v)[0];
+  bool closed = false;
+  for (std::size_t guard = 0; edges_[entry].stratum == EdgeStratum::Manifold; ++guard) {
+    if (guard > vertex_triangles_[v].size()) throw std::logic_error("fan walk does not terminate");
+    const std::uint32_t prev = across(start, entry);
+    if (prev == t) {
+      closed = true;
+      break;
+    }
+    entry = other_edge(prev, entry);
+    start = prev;
+  }
+  Sector s;
+  s.apex = v;
+  s.sheet = triangles_[t].sheet;
+  s.closed = closed;
+  std::uint32_t cur = start, e = entry;
+  if (!closed) s.ends[0] = entry;
+  for (std::size_t guard = 0;; ++guard) {
+    if (guard > vertex_triangles_[v].size()) throw std::logic_error("fan walk does not terminate");
+    s.triangles.push_back(cur);
+    e = other_edge(cur, e);
+    if (edges_[e].stratum != EdgeStratum::Manifold) {
+      s.ends[1] = e;
+      break;
+    }
+    const std::uint32_t next = across(cur, e);
+    if (closed && next == start) break;
+    cur = next;
+  }
+  return s;
+}
+
+void MedialComplex::classify_vertices() {
+  border_point_.assign(vertices_.size(), false);
+  for (std::uint32_t v = 0; v < vertices_.size(); ++v) {
+    vertices_[v].kind = classify_link(v);
+    border_point_[v] = remaining_link_contractible(v, std::vector<bool>(link_elements_[v].size(), false));
+  }
+}
+
+VertexKind MedialComplex::classify_link(std::uint32_t v) const {
+  std::vector<std::uint32_t> poles, sectors;
+  for (const LinkElement& el : link_elements_[v]) (el.is_pole ? poles : sectors).push_back(el.id);
+  auto dangling = [&](std::uint32_t e) { return edges_[e].stratum == EdgeStratum::Dangling; };
+  if (poles.empty() && sectors.empty()) return VertexKind::Isolated;
+  if (poles.empty() && sectors.size() == 1) return sectors_[sectors[0]].closed ? VertexKind::Interior : VertexKind::Border;
+  if (sectors.empty() && poles.size() == 1 && dangling(poles[0])) return VertexKind::SegmentEnd;
+  if (sectors.empty() && poles.size() == 2 && dangling(poles[0]) && dangling(poles[1]))
+    return VertexKind::SegmentInterior;
+  if (poles.size() == 2 && sectors.size() >= 3 && !dangling(poles[0]) && !dangling(poles[1])) {
+    const bool theta = std::all_of(sectors.begin(), sectors.end(), [&](std::uint32_t s) {
+      const auto& ends = sectors_[s].ends;
+      return (ends[0] == poles[0] && ends[1] == poles[1]) || (ends[0] == poles[1] && ends[1] == poles[0]);
+    });
+    if (theta) return VertexKind::SingularCurve;
+  }
+  return VertexKind::SingularPoint;
+}
+
+bool MedialComplex::remaining_link_contractible(std::uint32_t v, const std::vector<bool>& arrived) const {
+  const auto& elements = link_elements_[v];
+  // Union-find over the surviving poles (local indices); sectors join their pole ends.
+  std::vector<std::uint32_t> parent(elements.size());
+  std::iota(parent.begin(), parent.end(), 0u);
+  auto find = [&](std::uint32_t x) {
+    while (parent[x] != x) x = parent[x] = parent[parent[x]];
+    return x;
+  };
+  std::size_t components = 0;
+  for (std::size_t i = 0; i < elements.size(); ++i)
+    if (elements[i].is_pole && !arrived[i]) ++components;
+  for (std::size_t i = 0; i < elements.size(); ++i) {
+    if (elements[i].is_pole || arrived[i]) continue;
+    const Sector& s = sectors_[elements[i].id];
+    if (s.closed) return false;  // a whole circle survives
+    std::array<std::uint32_t, 2> alive{kNoIndex, kNoIndex};
+    int n_alive = 0;
+    for (std::uint32_t e : s.ends) {
+      if (!is_pole(e)) continue;
+      const std::uint32_t local = edge_end_element_[2 * e + (edges_[e].v[0] == v ? 0 : 1)];
+      if (!arrived[local]) alive[n_alive++] = local;
+    }
+    if (n_alive == 0) ++components;  // an arc whose ends are free or gone: contractible piece
+    if (n_alive < 2) continue;       // a pendant arc changes nothing
+    const std::uint32_t r0 = find(alive[0]), r1 = find(alive[1]);
+    if (r0 == r1) return false;  // closes a cycle (a loop when both ends are one pole)
+    parent[r0] = r1;
+    --components;
+  }
+  return components <= 1;
+}
+
+bool MedialComplex::remaining_edge_link_contractible(std::size_t triangle_count, bool pole0, bool pole1,
+                                                     std::size_t arrived_triangles) {
+  const std::size_t alive_arcs = triangle_count - arrived_triangles;
+  const int alive_poles = (pole0 ? 0 : 1) + (pole1 ? 0 : 1);
+  if (alive_poles == 2) return alive_arcs == 1;  // two poles joined by exactly one arc
+  if (alive_poles == 1) return true;             // a star of arcs at one pole
+  return alive_arcs <= 1;                        // separate open arcs
+}
+
+void MedialComplex::apply_ignition(const RawComplex& raw) {
+  for (const BorderIgnition& rule : raw.border_rules) {
+    const std::uint32_t e = find_edge(rule.edge[0], rule.edge[1]);
+    if (e == kNoIndex || edges_[e].stratum != EdgeStratum::Border)
+      fail("border rule names (" + std::to_string(rule.edge[0]) + ", " + std::to_string(rule.edge[1]) +
+           "), which is not a border edge");
+    edges_[e].rule = rule.rule;
+    edges_[e].rule_point = rule.point;
+    edges_[e].rule_point_approx = to_double(rule.point);
+  }
+  const double inf = std::numeric_limits<double>::infinity();
+  vertex_ignition_.assign(vertices_.size(), inf);
+  for (std::uint32_t v = 0; v < vertices_.size(); ++v) {
+    if (!border_point_[v]) continue;
+    bool has_border_edge = false;
+    double f = inf;
+    for (std::uint32_t e : vertex_edges_[v]) {
+      if (edges_[e].stratum != EdgeStratum::Border) continue;
+      has_border_edge = true;
+      f = std::min(f, ignition_on_edge(e, edges_[e].v[0] == v ? 0.0 : 1.0));
+    }
+    vertex_ignition_[v] = has_border_edge ? f : vertices_[v].radius;
+  }
+}
+
+double MedialComplex::ignition_on_edge(std::uint32_t e, double s) const {
+  const ComplexEdge& ed = edges_[e];
+  const Vec3d& a = vertices_[ed.v[0]].approx;
+  const Vec3d& b = vertices_[ed.v[1]].approx;
+  switch (ed.rule) {
+    case IgnitionRule::Never: return std::numeric_limits<double>::infinity();
+    case IgnitionRule::Linear: return (1.0 - s) * vertices_[ed.v[0]].radius + s * vertices_[ed.v[1]].radius;
+    case IgnitionRule::DistanceToPoint: {
+      double d2 = 0.0;
+      for (int i = 0; i < 3; ++i) {
+        const double c = (1.0 - s) * a[i] + s * b[i] - ed.rule_point_approx[i];
+        d2 += c * c;
+      }
+      return std::sqrt(d2);
+    }
+  }
+  return std::numeric_limits<double>::infinity();
+}
+
+std::size_t MedialComplex::count(EdgeStratum s) const {
+  return static_cast<std::size_t>(
+      std::count_if(edges_.begin(), edges_.end(), [&](const ComplexEdge& e) { return e.stratum == s; }));
+}
+
+std::size_t MedialComplex::count(VertexKind k) const {
+  return static_cast<std::size_t>(
+      std::count_if(vertices_.begin(), vertices_.end(), [&](const ComplexVertex& v) { return v.kind == k; }));
+}
+
+}  // namespace grassfire

@@ -1,0 +1,85 @@
+// synthetic_complexes.h -- hand-made medial complexes with known burning times (ch. 4).
+//
+// Computes: RawComplexes with exact rational vertices, and (where the answer is known in
+// closed form) the burning time BT at any point of them:
+//  - board and fin (4.1.2, 4.2.1, DESIGN.md 5, reference case 1), zero radius, a = 1: the
+//    board {z = 0, y >= 0} truncated to [-E, E] x [0, E], the fin {(s, s, z): 1 <= s <= E,
+//    0 <= z <= E}, junction N from c = (1, 1, 0) to (E, E, 0). B (y = 0) and F (s = 1)
+//    ignite at f = 0; the truncation borders never ignite (IgnitionRule::Never). Since every
+//    optimal path of the infinite complex stays inside the box, the closed form holds on
+//    the whole truncated complex (see board_fin_burning_time).
+//  - board and hollow cylinder (Fig. 4.7): a square board with a "cylinder" standing on it;
+//    the cylinder is approximated by a prism over a k-gon whose vertices are exact rational
+//    points of the circle (not a regular k-gon: rational parametrisation of the circle).
+//    Board border and cylinder rim ignite at f = 0. No closed form (DESIGN.md gives none).
+//  - a book of k pages on one spine (z axis); page j is the rectangle [0, w_j] x [0, S] in
+//    the half-plane of a rational unit direction near angle 2 pi j / k. Only the outer edges
+//    u = w_j ignite (f = 0); top and bottom never ignite. Closed form: the spine burns at
+//    the (k-1)-th smallest width T, and BT(u) = min(w_j - u, T + u) on page j.
+//  - a Y of three half-planes: the book with three pages of widths 2, 3, 4 (spine at 3;
+//    fronts quench inside the widest page at u = 1/2).
+//  - closed and pinched complexes for the strata and Prop-7 tests: tetrahedron surface,
+//    octahedron surface (sphere-like), a pinched double cone, a tetrahedron with a flap.
+// Contract: parameters as documented per function (checked; std::invalid_argument).
+// Complexity: linear in the number of triangles produced.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "complex3/raw_complex.h"
+
+namespace grassfire {
+
+struct BoardFinOptions {
+  int extent = 12;          // E: the board is [-E, E] x [0, E], N and the fin run to s = E
+  int cells_per_unit = 1;   // grid refinement g: squares of side 1/g, each split in two
+};
+RawComplex board_fin(const BoardFinOptions& options = {});
+// The kink k = (2 + sqrt 2, 2 + sqrt 2, 0) and BT there, 2 + sqrt 2.
+std::array<double, 3> board_fin_kink();
+// BT of the zero-radius board and fin at a point of it (DESIGN.md 5, derived in the .cpp):
+// fin (z > 0): sqrt2 (s - 1); N (x = y >= 1, z = 0): max(s, sqrt2 (s - 1));
+// board front side (y > x) with x > 2 + sqrt2: 2 + sqrt2 + |p - k|; elsewhere on the board: y.
+double board_fin_burning_time(const std::array<double, 3>& p);
+
+struct BoardCylinderOptions {
+  int sides = 24;        // k, the prism's number of sides
+  int rings = 4;         // rings of the board between the prism and the square
+  int rows = 6;          // rows of the prism's side
+  double radius = 2.0;   // circle radius (rounded to a rational), height of the prism = 2 radius
+  double half_width = 6; // the board is [-L, L]^2
+};
+RawComplex board_cylinder(const BoardCylinderOptions& options = {});
+
+struct BookOptions {
+  int pages = 3;
+  std::vector<long> widths;  // per page (integers); empty: all 2
+  int height = 4;            // spine length S
+  int cells_per_unit = 2;    // grid refinement of every page
+};
+RawComplex book(const BookOptions& options);
+// BT at the point at distance u from the spine on page `page` (any height).
+double book_burning_time(const BookOptions& options, int page, double u);
+RawComplex y_junction(int cells_per_unit = 2);
+BookOptions y_junction_options(int cells_per_unit = 2);
+
+RawComplex tetrahedron_surface();
+RawComplex octahedron_surface();
+// Two cones of k sides sharing their apex (0,0,0), opening up and down; rims ignite.
+RawComplex pinched_double_cone(int sides = 6);
+// A closed tetrahedron surface with a square flap (two triangles) hanging off one edge:
+// the flap burns, the tetrahedron is the maximal closed subcomplex.
+RawComplex tetrahedron_with_flap();
+
+// A rational point of the unit circle near angle theta (rational parametrisation).
+std::array<mpq_class, 2> rational_unit_direction(double theta);
+
+// A synthetic complex by name: board-fin, board-cylinder, book:K, y-junction, tetrahedron,
+// octahedron, double-cone, tetrahedron-flap. Throws std::invalid_argument listing the names.
+RawComplex synthetic_complex(const std::string& name);
+std::vector<std::string> synthetic_complex_names();
+
+}  // namespace grassfire
