@@ -1,0 +1,25 @@
+// shape_format.cpp -- see shape_format.h.
+#include "io/shape_format.h"
+
+#include <charconv>
+#include <fstream>
+#include <sstream>
+
+namespace grassfire {
+
+std::string read_shape_file_text(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw ShapeFormatError(path + ": cannot open the file");
+  std::ostringstream text;
+  text << in.rdbuf();
+  if (in.bad()) throw ShapeFormatError(path + ": read error");
+  return text.str();
+}
+
+std::string format_coordinate(double x) {
+  char buf[64];
+  const std::to_chars_result r = std::to_chars(buf, buf + sizeof buf, x);
+  return std::string(buf, r.ptr);
+}
+
+}  // namespace grassfire

@@ -1,0 +1,24 @@
+// shape_format.h -- what the planar shape readers and writers share: their error type,
+// reading a whole file, and printing coordinates so that they read back exactly.
+#pragma once
+
+#include <stdexcept>
+#include <string>
+
+namespace grassfire {
+
+// A file that cannot be read or parsed as a shape. what() starts with the file path (or
+// the source name given to a parse_* function) and says where: line and column, or the
+// element index.
+class ShapeFormatError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+// The whole content of a file; throws ShapeFormatError naming the path when it cannot be read.
+std::string read_shape_file_text(const std::string& path);
+
+// The shortest decimal that converts back to exactly x (std::to_chars), e.g. "0.31466".
+std::string format_coordinate(double x);
+
+}  // namespace grassfire
