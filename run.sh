@@ -8,7 +8,7 @@ set -euo pipefail
 cd "$(dirname "$0")"
 
 PACKAGES=(cmake make g++ libcgal-dev libgmp-dev libmpfr-dev libboost-graph-dev catch2
-          nlohmann-json3-dev librsvg2-bin)
+          nlohmann-json3-dev librsvg2-bin libflint-arb-dev)
 JOBS=${JOBS:-2}
 BUILD_DIR=${BUILD_DIR:-build}
 

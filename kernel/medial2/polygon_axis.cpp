@@ -1,0 +1,276 @@
+// polygon_axis.cpp -- see polygon_axis.h.
+#include "medial2/polygon_axis.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <numeric>
+#include <stdexcept>
+#include <string>
+
+#include "geometry2/predicates2.h"
+#include "medial2/polygon_axis_geometry.h"
+#include "medial2/segment_voronoi.h"
+#include "medial2/voronoi_circle.h"
+
+namespace grassfire {
+
+namespace {
+
+// An enclosure is re-evaluated in Arb when it has fewer than this many relative bits.
+constexpr int kTightBits = 40;
+
+double seconds_since(std::chrono::steady_clock::time_point t0) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+bool is_tight(const Interval& a) {
+  const double m = std::fmax(std::fabs(a.lo), std::fabs(a.hi));
+  return a.hi - a.lo <= std::ldexp(m, -kTightBits);
+}
+
+bool overlap(const Interval& a, const Interval& b) { return a.lo <= b.hi && b.lo <= a.hi; }
+
+// The exact frame: Boost on decimal integers when the policy allows, else CGAL on doubles.
+struct Frame {
+  AxisConstruction construction = AxisConstruction::CgalSdg;
+  int digits = -1;
+  mpq_class to_input = 1;
+  PolygonSites sites;
+};
+
+Frame choose_frame(const Shape2& shape, const PolygonAxisOptions& options) {
+  Frame f;
+  f.sites = make_sites(shape, 1.0);
+  std::vector<long long> ints;
+  int k_max = 0;
+  bool decimal = options.construction != AxisConstruction::CgalSdg;
+  std::vector<int> digits;
+  for (const Point2& p : f.sites.vertex) {
+    for (double x : {p.x, p.y}) {
+      long long m = 0;
+      const int k = decimal ? decimal_digits(x, options.max_decimal_digits, &m) : -1;
+      decimal = decimal && k >= 0;
+      ints.push_back(m);
+      digits.push_back(k);
+      k_max = std::max(k_max, k);
+    }
+  }
+  if (decimal) {
+    long long pow10[10] = {1};
+    for (int i = 1; i < 10; ++i) pow10[i] = pow10[i - 1] * 10;
+    std::vector<double> scaled;
+    for (std::size_t i = 0; i < ints.size() && decimal; ++i) {
+      const long double v = static_cast<long double>(ints[i]) * pow10[k_max - digits[i]];
+      decimal = std::fabs(v) <= 2147483647.0L;
+      scaled.push_back(static_cast<double>(v));
+    }
+    if (decimal) {
+      for (std::size_t i = 0; i < f.sites.vertex.size(); ++i) f.sites.vertex[i] = {scaled[2 * i], scaled[2 * i + 1]};
+      f.construction = AxisConstruction::BoostPolygon;
+      f.digits = k_max;
+      f.to_input = make_rational(1, mpz_class(std::to_string(pow10[k_max])));
+      return f;
+    }
+  }
+  if (options.construction == AxisConstruction::BoostPolygon)
+    throw std::invalid_argument(shape.name + ": Boost.Polygon needs decimal coordinates that fit int32 once scaled");
+  return f;
+}
+
+struct UnionFind {
+  std::vector<std::uint32_t> parent;
+  explicit UnionFind(std::size_t n) : parent(n) { std::iota(parent.begin(), parent.end(), 0u); }
+  std::uint32_t find(std::uint32_t x) {
+    while (parent[x] != x) x = parent[x] = parent[parent[x]];
+    return x;
+  }
+  void unite(std::uint32_t a, std::uint32_t b) {
+    a = find(a);
+    b = find(b);
+    if (a != b) parent[std::max(a, b)] = std::min(a, b);
+  }
+};
+
+class Builder {
+ public:
+  Builder(const Frame& frame, VoronoiTopology topo, PolygonAxisReport& report)
+      : sites_(std::make_shared<PolygonSites>(frame.sites)), to_input_(frame.to_input), topo_(std::move(topo)),
+        report_(report) {}
+
+  MedialGraph run() {
+    solve_circles();
+    contract();
+    return assemble();
+  }
+
+ private:
+  void solve_circles() {
+    const std::size_t n = topo_.vertices.size();
+    circles_.resize(n);
+    values_.resize(n);
+    for (std::size_t i = 0; i < n; ++i) {
+      circles_[i] = classify_circle(*sites_, topo_.vertices[i]);
+      ++report_.circles_by_kind[static_cast<int>(circles_[i].kind)];
+      values_[i] = solve_interval(*sites_, circles_[i]);
+      if (!is_tight(values_[i].x) || !is_tight(values_[i].y) || !is_tight(values_[i].r)) {
+        ++report_.ball_refinements;
+        const CircleValue<Ball> b = solve_ball(*sites_, circles_[i]);
+        values_[i] = {b.x.to_interval(), b.y.to_interval(), b.r.to_interval()};
+      }
+    }
+  }
+
+  // Exact test that two Voronoi vertices are the same point.
+  bool same_point(std::uint32_t i, std::uint32_t j) {
+    const CircleValue<Interval>& a = values_[i];
+    const CircleValue<Interval>& b = values_[j];
+    if (!overlap(a.x, b.x) || !overlap(a.y, b.y) || !overlap(a.r, b.r)) return false;
+    const auto ea = solve_exact(*sites_, circles_[i]);
+    const auto eb = solve_exact(*sites_, circles_[j]);
+    if (ea && eb) return sign(ea->x - eb->x) == 0 && sign(ea->y - eb->y) == 0;
+    for (long bits : {256L, 1024L}) {
+      BallPrecision guard(bits);
+      const CircleValue<Ball> ba = solve_ball(*sites_, circles_[i]), bb = solve_ball(*sites_, circles_[j]);
+      if ((ba.x - bb.x).sign() != 0 && (ba.x - bb.x).sign() != kUndecided) return false;
+      if ((ba.y - bb.y).sign() != 0 && (ba.y - bb.y).sign() != kUndecided) return false;
+    }
+    ++report_.uncertified_contractions;
+    return true;
+  }
+
+  void contract() {
+    UnionFind uf(topo_.vertices.size());
+    contracted_.assign(topo_.edges.size(), false);
+    for (std::size_t e = 0; e < topo_.edges.size(); ++e) {
+      const auto& ed = topo_.edges[e];
+      if (topo_.vertices[ed.u].apex || topo_.vertices[ed.v].apex) continue;  // R = 0 against R > 0
+      if (same_point(ed.u, ed.v)) {
+        contracted_[e] = true;
+        uf.unite(ed.u, ed.v);
+        ++report_.contracted_edges;
+      }
+    }
+    group_.resize(topo_.vertices.size());
+    for (std::uint32_t i = 0; i < topo_.vertices.size(); ++i) group_[i] = uf.find(i);
+  }
+
+  MedialGraph assemble() {
+    std::vector<std::uint32_t> node_of(topo_.vertices.size(), kNone);
+    std::vector<AxisNodeData> data;
+    std::vector<MedialNode> nodes;
+    const Interval scale = enclose(to_input_);
+    const double scale_d = to_input_.get_d();
+    for (std::uint32_t i = 0; i < topo_.vertices.size(); ++i) {
+      const std::uint32_t root = group_[i];
+      if (node_of[root] == kNone) {
+        node_of[root] = static_cast<std::uint32_t>(nodes.size());
+        data.push_back({circles_[root], {}});
+        const CircleValue<Interval>& v = values_[root];
+        nodes.push_back({{v.x.mid() * scale_d, v.y.mid() * scale_d}, v.r * scale});
+        if (topo_.vertices[root].apex) nodes.back().radius = 0.0;
+      }
+      node_of[i] = node_of[root];
+      auto& s = data[node_of[i]].sites;
+      s.insert(s.end(), topo_.vertices[i].sites.begin(), topo_.vertices[i].sites.end());
+    }
+    for (AxisNodeData& d : data) {
+      std::sort(d.sites.begin(), d.sites.end());
+      d.sites.erase(std::unique(d.sites.begin(), d.sites.end()), d.sites.end());
+    }
+    std::vector<AxisEdgeData> edata;
+    std::vector<MedialEdge> edges;
+    for (std::size_t e = 0; e < topo_.edges.size(); ++e) {
+      if (contracted_[e]) continue;
+      const auto& ed = topo_.edges[e];
+      AxisEdgeData a{node_of[ed.u], node_of[ed.v], ed.site_a, ed.site_b, is_parabolic(ed.site_a, ed.site_b)};
+      Interval len = edge_length(*sites_, a, values_[group_[ed.u]], values_[group_[ed.v]]);
+      if (!is_tight(len)) {
+        ++report_.ball_refinements;
+        const CircleValue<Ball> bu = solve_ball(*sites_, circles_[group_[ed.u]]);
+        const CircleValue<Ball> bv = solve_ball(*sites_, circles_[group_[ed.v]]);
+        len = edge_length(*sites_, a, bu, bv).to_interval();
+      }
+      report_.parabolic_arcs += a.parabolic;
+      edges.push_back({a.u, a.v, a.parabolic ? EdgeKind::ParabolicArc : EdgeKind::Segment, len * scale});
+      edata.push_back(a);
+    }
+    auto geometry = std::make_shared<PolygonAxisGeometry>(sites_, to_input_, std::move(data), std::move(edata));
+    MedialGraph g(std::move(nodes), std::move(edges), std::move(geometry));
+    report_.nodes = g.node_count();
+    report_.edges = g.edge_count();
+    for (std::uint32_t v = 0; v < g.node_count(); ++v) report_.leaves += g.is_leaf(v);
+    return g;
+  }
+
+  // A point site and a segment site whose line misses the point bound a parabolic arc.
+  bool is_parabolic(std::uint32_t a, std::uint32_t b) const {
+    if (sites_->is_point(a) == sites_->is_point(b)) return false;
+    const std::uint32_t p = sites_->is_point(a) ? a : b, l = sites_->is_point(a) ? b : a;
+    return orientation(sites_->vertex[sites_->seg_start(l)], sites_->vertex[sites_->seg_end(l)], sites_->vertex[p]) != 0;
+  }
+
+  static constexpr std::uint32_t kNone = 0xffffffffu;
+  std::shared_ptr<const PolygonSites> sites_;
+  mpq_class to_input_;
+  VoronoiTopology topo_;
+  PolygonAxisReport& report_;
+  std::vector<VoronoiCircle> circles_;
+  std::vector<CircleValue<Interval>> values_;
+  std::vector<bool> contracted_;
+  std::vector<std::uint32_t> group_;
+};
+
+}  // namespace
+
+const char* to_string(AxisConstruction c) {
+  switch (c) {
+    case AxisConstruction::Auto: return "auto";
+    case AxisConstruction::BoostPolygon: return "boost-polygon";
+    case AxisConstruction::CgalSdg: return "cgal-sdg";
+  }
+  return "unknown";
+}
+
+int decimal_digits(double x, int max_digits, long long* m) {
+  double pow10 = 1;
+  for (int k = 0; k <= max_digits; ++k, pow10 *= 10) {
+    const double scaled = x * pow10;
+    if (!(std::fabs(scaled) < 9.0e15)) return -1;
+    const long long c = std::llround(scaled);
+    for (long long cand : {c - 1, c, c + 1}) {
+      // m / 10^k correctly rounded (both exact doubles, one IEEE division) is x?
+      if (static_cast<double>(cand) / pow10 == x) {
+        *m = cand;
+        return k;
+      }
+    }
+  }
+  return -1;
+}
+
+MedialGraph exact_polygon_axis(const Shape2& shape, const PolygonAxisOptions& options, PolygonAxisReport* report) {
+  const auto t0 = std::chrono::steady_clock::now();
+  PolygonAxisReport local;
+  PolygonAxisReport& rep = report ? *report : local;
+  rep = PolygonAxisReport{};
+  if (shape.rings.empty()) throw std::invalid_argument(shape.name + ": the shape has no ring");
+  for (const Ring& r : shape.rings)
+    if (r.points.size() < 3) throw std::invalid_argument(shape.name + ": a ring has fewer than 3 vertices");
+  const Frame frame = choose_frame(shape, options);
+  rep.construction = frame.construction;
+  rep.decimal_digits = frame.digits;
+  rep.frame_scale = 1 / frame.to_input.get_d();
+  rep.polygon_vertices = frame.sites.vertex_count();
+  VoronoiTopology topo = frame.construction == AxisConstruction::BoostPolygon ? boost_segment_voronoi(frame.sites)
+                                                                                : cgal_segment_voronoi(frame.sites);
+  rep.voronoi_vertices = topo.vertices.size();
+  rep.voronoi_seconds = seconds_since(t0);
+  const auto t1 = std::chrono::steady_clock::now();
+  MedialGraph g = Builder(frame, std::move(topo), rep).run();
+  rep.values_seconds = seconds_since(t1);
+  rep.total_seconds = seconds_since(t0);
+  return g;
+}
+
+}  // namespace grassfire

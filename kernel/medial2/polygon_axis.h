@@ -1,0 +1,72 @@
+// polygon_axis.h -- the exact medial axis of a polygon with holes (2.1.1; DESIGN.md 4;
+// issue 4).
+//
+// Computes: the medial graph M of a polygon: the interior part of the segment Voronoi
+// diagram of its vertices (point sites) and edges (open segment sites), without the
+// edges that separate a segment from its own endpoint. Convex vertices are leaves with
+// R = 0; reflex vertices are point sites whose regions contribute parabolic arcs
+// (EdgeKind::ParabolicArc, focus = the vertex, directrix = the segment's line) and
+// straight edges. Nodes are Voronoi vertices, contracted exactly where several coincide
+// (cocircular sites: regular polygons, rectangles' centres); degree-2 nodes where a
+// collinear vertex's normal meets the axis are kept.
+// Exactness: topology by exact predicates (Boost.Polygon on integers, or CGAL SDG with
+// filtered exact traits). R at a node is exact: a rational, a sum of square roots of
+// rationals (PPP, PPS, SSS and many PSS circles: voronoi_circle.h) or, for nested
+// radicals, a CertifiedConstant whose identity is the circle's defining sites, evaluated
+// in Arb at any precision. Straight edge lengths are exact square roots when the ends are
+// (a rational square root when the squared length is rational); parabolic arc lengths
+// are certified constants (closed form with asinh, Arb). The graph's double enclosures
+// of R and lengths are rigorous and tight: double interval formulas, re-evaluated in Arb
+// at 128 bits when wider than kTightBits relative bits; exact values are built lazily,
+// only when the burning engine's filter cannot decide.
+// Input policy (which construction runs): a coordinate that is the double nearest to a
+// decimal with at most 9 fractional digits is taken as that decimal (the smallest such
+// digit count k, per coordinate; the shape's K is the largest k). If every coordinate
+// is such a decimal and the integers x 10^K fit in int32, Boost.Polygon runs on those
+// integers and the axis is exact for the decimal polygon (the one the file wrote).
+// Otherwise CGAL's SDG runs on the exact double values, and the axis is exact for the
+// polygon of those doubles. Either way every combinatorial decision is exact.
+// Contract: a validated Shape2 (shapes/validate_shape.h). Throws std::invalid_argument
+// for an empty shape.
+// Complexity: O(n log n) (Boost) plus O(n) circle work; CGAL SDG is near-quadratic on
+// large smooth polygons.
+#pragma once
+
+#include <cstdint>
+#include <string>
+
+#include "medial2/medial_graph.h"
+#include "shapes/shape2.h"
+
+namespace grassfire {
+
+enum class AxisConstruction { Auto, BoostPolygon, CgalSdg };
+const char* to_string(AxisConstruction c);
+
+struct PolygonAxisOptions {
+  AxisConstruction construction = AxisConstruction::Auto;
+  int max_decimal_digits = 9;  // the decimal policy's k <= 9
+};
+
+struct PolygonAxisReport {
+  AxisConstruction construction = AxisConstruction::Auto;  // the one that ran
+  int decimal_digits = -1;  // K when the decimal policy applied, else -1
+  double frame_scale = 1;   // frame coordinates = input coordinates x frame_scale
+  std::uint64_t polygon_vertices = 0;
+  std::uint64_t voronoi_vertices = 0;   // interior Voronoi vertices before contraction
+  std::uint64_t nodes = 0, edges = 0, leaves = 0, parabolic_arcs = 0;
+  std::uint64_t contracted_edges = 0;       // zero-length edges, proved zero exactly
+  std::uint64_t uncertified_contractions = 0;  // zero to 1024 bits, no exact form
+  std::uint64_t ball_refinements = 0;      // enclosures re-evaluated in Arb
+  std::uint64_t circles_by_kind[7] = {};   // indexed by CircleKind
+  double voronoi_seconds = 0, values_seconds = 0, total_seconds = 0;
+};
+
+MedialGraph exact_polygon_axis(const Shape2& shape, const PolygonAxisOptions& options = {},
+                               PolygonAxisReport* report = nullptr);
+
+// The decimal policy: the smallest k <= max_digits such that x is the double nearest to
+// m / 10^k for an integer m (which is stored), or -1.
+int decimal_digits(double x, int max_digits, long long* m);
+
+}  // namespace grassfire

@@ -1,0 +1,236 @@
+// polygon_axis_geometry.cpp -- see polygon_axis_geometry.h.
+#include "medial2/polygon_axis_geometry.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "number/parabolic_arc.h"
+#include "number/sqrt_field.h"
+
+namespace grassfire {
+
+namespace {
+
+Interval abs_of(const Interval& a) {
+  if (a.lo >= 0) return a;
+  if (a.hi <= 0) return -a;
+  return {0.0, std::fmax(-a.lo, a.hi)};
+}
+Ball abs_of(const Ball& a) {
+  Ball r;
+  arb_abs(r.get(), a.get());
+  return r;
+}
+
+template <class T>
+T length_of(const PolygonSites& s, const AxisEdgeData& e, const CircleValue<T>& a, const CircleValue<T>& b) {
+  if (!e.parabolic) {
+    const T dx = a.x - b.x, dy = a.y - b.y;
+    return sqrt(dx * dx + dy * dy);
+  }
+  const std::uint32_t focus = s.is_point(e.site_a) ? e.site_a : e.site_b;
+  const std::uint32_t line = s.is_point(e.site_a) ? e.site_b : e.site_a;
+  const Point2 f = s.vertex[focus], la = s.vertex[s.seg_start(line)], lb = s.vertex[s.seg_end(line)];
+  const T fx(f.x), fy(f.y);
+  const T dx = T(lb.x) - T(la.x), dy = T(lb.y) - T(la.y);
+  const T len = sqrt(dx * dx + dy * dy);
+  // Focal parameter: the distance from the focus to the directrix (left side positive).
+  const T p = (dx * (fy - T(la.y)) - dy * (fx - T(la.x))) / len;
+  const T xa = (dx * (a.x - fx) + dy * (a.y - fy)) / len;
+  const T xb = (dx * (b.x - fx) + dy * (b.y - fy)) / len;
+  return abs_of(parabola_arc_primitive(xb, p) - parabola_arc_primitive(xa, p));
+}
+
+// Evaluates f() in Arb at increasing precision until it is accurate to `bits` bits.
+template <class F>
+void enclose_with_ball(long bits, mpfr_ptr lo, mpfr_ptr hi, F&& f) {
+  for (long work = bits + 64;; work *= 2) {
+    BallPrecision guard(work);
+    const Ball b = f();
+    if (b.accuracy_bits() >= bits || work > 16 * (bits + 64)) {
+      b.to_mpfr(lo, hi);
+      return;
+    }
+  }
+}
+
+class CircleRadius : public CertifiedConstant {
+ public:
+  CircleRadius(std::shared_ptr<const PolygonSites> s, VoronoiCircle c, std::string id)
+      : sites_(std::move(s)), circle_(c), id_(std::move(id)) {}
+  void enclose(mpfr_ptr lo, mpfr_ptr hi) const override {
+    enclose_with_ball(mpfr_get_prec(lo), lo, hi, [&] { return solve_ball(*sites_, circle_).r; });
+  }
+  std::string identity() const override { return id_; }
+
+ private:
+  std::shared_ptr<const PolygonSites> sites_;
+  VoronoiCircle circle_;
+  std::string id_;
+};
+
+class EdgeLength : public CertifiedConstant {
+ public:
+  EdgeLength(std::shared_ptr<const PolygonSites> s, AxisEdgeData e, VoronoiCircle a, VoronoiCircle b, std::string id)
+      : sites_(std::move(s)), edge_(e), a_(a), b_(b), id_(std::move(id)) {}
+  void enclose(mpfr_ptr lo, mpfr_ptr hi) const override {
+    enclose_with_ball(mpfr_get_prec(lo), lo, hi, [&] {
+      return length_of(*sites_, edge_, solve_ball(*sites_, a_), solve_ball(*sites_, b_));
+    });
+  }
+  std::string identity() const override { return id_; }
+
+ private:
+  std::shared_ptr<const PolygonSites> sites_;
+  AxisEdgeData edge_;
+  VoronoiCircle a_, b_;
+  std::string id_;
+};
+
+// sqrt(x) for an exact sum x >= 0 that does not denest.
+class SqrtOfSum : public CertifiedConstant {
+ public:
+  explicit SqrtOfSum(ExactSum x) : x_(std::move(x)) {}
+  void enclose(mpfr_ptr lo, mpfr_ptr hi) const override {
+    x_.enclose(lo, hi);
+    if (mpfr_sgn(lo) < 0) mpfr_set_zero(lo, 1);
+    mpfr_sqrt(lo, lo, MPFR_RNDD);
+    mpfr_sqrt(hi, hi, MPFR_RNDU);
+  }
+  std::string identity() const override { return "sqrt[" + to_string(x_) + "]"; }
+
+ private:
+  ExactSum x_;
+};
+
+}  // namespace
+
+Interval edge_length(const PolygonSites& s, const AxisEdgeData& e, const CircleValue<Interval>& a,
+                     const CircleValue<Interval>& b) {
+  return length_of(s, e, a, b);
+}
+Ball edge_length(const PolygonSites& s, const AxisEdgeData& e, const CircleValue<Ball>& a,
+                 const CircleValue<Ball>& b) {
+  return length_of(s, e, a, b);
+}
+
+PolygonAxisGeometry::PolygonAxisGeometry(std::shared_ptr<const PolygonSites> sites, mpq_class to_input,
+                                         std::vector<AxisNodeData> nodes, std::vector<AxisEdgeData> edges)
+    : sites_(std::move(sites)),
+      to_input_(std::move(to_input)),
+      nodes_(std::move(nodes)),
+      edges_(std::move(edges)),
+      circle_done_(nodes_.size(), 0),
+      circles_(nodes_.size()),
+      lengths_(edges_.size()) {}
+
+std::string PolygonAxisGeometry::node_identity(std::uint32_t i) const {
+  std::string id = "vertex{";
+  for (std::uint32_t s : nodes_[i].sites) id += std::to_string(s) + ",";
+  return id + "}" + identity(nodes_[i].circle);
+}
+
+const std::optional<CircleValue<ExactSum>>& PolygonAxisGeometry::exact_circle(std::uint32_t i) const {
+  if (!circle_done_[i]) {
+    circles_[i] = solve_exact(*sites_, nodes_[i].circle);
+    circle_done_[i] = 1;
+  }
+  return circles_[i];
+}
+
+ExactSum PolygonAxisGeometry::exact_radius(std::uint32_t node) const {
+  ExactSum r;
+  if (const auto& c = exact_circle(node))
+    r = c->r;
+  else
+    r = ExactSum::constant(std::make_shared<CircleRadius>(sites_, nodes_[node].circle, node_identity(node)));
+  r.scale(to_input_);
+  return r;
+}
+
+ExactSum PolygonAxisGeometry::frame_length(std::uint32_t edge) const {
+  const AxisEdgeData& e = edges_[edge];
+  const std::string iu = node_identity(e.u), iv = node_identity(e.v);
+  const std::string ends = iu < iv ? iu + ";" + iv : iv + ";" + iu;
+  if (e.parabolic) {
+    const std::string id = "arc(" + std::to_string(e.site_a) + "," + std::to_string(e.site_b) + ";" + ends + ")";
+    return ExactSum::constant(
+        std::make_shared<EdgeLength>(sites_, e, nodes_[e.u].circle, nodes_[e.v].circle, id));
+  }
+  const auto& a = exact_circle(e.u);
+  const auto& b = exact_circle(e.v);
+  if (!a || !b)
+    return ExactSum::constant(
+        std::make_shared<EdgeLength>(sites_, e, nodes_[e.u].circle, nodes_[e.v].circle, "segment(" + ends + ")"));
+  const ExactSum dx = a->x - b->x, dy = a->y - b->y;
+  ExactSum squared = multiply(dx, dx) + multiply(dy, dy);
+  squared.simplify();
+  if (std::optional<ExactSum> root = sqrt_of_sum(squared)) return *root;
+  return ExactSum::constant(std::make_shared<SqrtOfSum>(squared));
+}
+
+ExactSum PolygonAxisGeometry::exact_length(std::uint32_t edge) const {
+  if (!lengths_[edge]) {
+    ExactSum l = frame_length(edge);
+    l.scale(to_input_);
+    lengths_[edge] = std::move(l);
+  }
+  return *lengths_[edge];
+}
+
+namespace {
+
+// A parabolic edge in input coordinates (doubles; for drawing only).
+struct DrawnParabola {
+  double fx, fy, ex, ey, ux, uy, p;
+  Point2 at(double xi) const {
+    const double eta = (xi * xi + p * p) / (2 * p);
+    return {fx - p * ux + xi * ex + eta * ux, fy - p * uy + xi * ey + eta * uy};
+  }
+  double xi_of(const Point2& x) const { return ex * (x.x - fx) + ey * (x.y - fy); }
+  double primitive(double xi) const {
+    return 0.5 * xi * std::sqrt(1 + (xi / p) * (xi / p)) + 0.5 * p * std::asinh(xi / p);
+  }
+};
+
+DrawnParabola drawn(const PolygonSites& s, const AxisEdgeData& e, double scale) {
+  const std::uint32_t focus = s.is_point(e.site_a) ? e.site_a : e.site_b;
+  const std::uint32_t line = s.is_point(e.site_a) ? e.site_b : e.site_a;
+  const Point2 f = s.vertex[focus], a = s.vertex[s.seg_start(line)], b = s.vertex[s.seg_end(line)];
+  const double dx = b.x - a.x, dy = b.y - a.y, len = std::hypot(dx, dy);
+  DrawnParabola d{f.x * scale, f.y * scale, dx / len, dy / len, -dy / len, dx / len, 0};
+  d.p = (d.ux * (f.x - a.x) + d.uy * (f.y - a.y)) * scale;
+  return d;
+}
+
+}  // namespace
+
+Point2 PolygonAxisGeometry::point_along(const MedialGraph& g, std::uint32_t edge, std::uint32_t from,
+                                        double s) const {
+  const AxisEdgeData& e = edges_[edge];
+  if (!e.parabolic) return MedialGeometry::point_along(g, edge, from, s);
+  const DrawnParabola d = drawn(*sites_, e, to_input_.get_d());
+  const double x0 = d.xi_of(g.node(from).position), x1 = d.xi_of(g.node(g.other_end(edge, from)).position);
+  const double target = d.primitive(x0) + (x1 > x0 ? s : -s);
+  double lo = std::fmin(x0, x1), hi = std::fmax(x0, x1);
+  for (int i = 0; i < 80; ++i) {  // bisection: S is increasing
+    const double mid = 0.5 * (lo + hi);
+    (d.primitive(mid) < target ? lo : hi) = mid;
+  }
+  return d.at(0.5 * (lo + hi));
+}
+
+std::vector<Point2> PolygonAxisGeometry::polyline(const MedialGraph& g, std::uint32_t edge) const {
+  const AxisEdgeData& e = edges_[edge];
+  if (!e.parabolic) return MedialGeometry::polyline(g, edge);
+  const DrawnParabola d = drawn(*sites_, e, to_input_.get_d());
+  const Point2 a = g.node(g.edge(edge).u).position, b = g.node(g.edge(edge).v).position;
+  const double x0 = d.xi_of(a), x1 = d.xi_of(b);
+  std::vector<Point2> out{a};
+  constexpr int kSamples = 16;
+  for (int i = 1; i < kSamples; ++i) out.push_back(d.at(x0 + (x1 - x0) * i / kSamples));
+  out.push_back(b);
+  return out;
+}
+
+}  // namespace grassfire

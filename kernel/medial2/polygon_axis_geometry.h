@@ -1,0 +1,76 @@
+// polygon_axis_geometry.h -- the exact values behind an exact polygon axis (see
+// polygon_axis.h): R at nodes and edge lengths as ExactSums, built lazily.
+//
+// Computes, per node, the exact R of its Voronoi circle (voronoi_circle.h) scaled from
+// the exact frame to input coordinates; per edge, the exact length: for a straight edge
+// sqrt(|X_u - X_v|^2) when both ends are sums of square roots (a rational square root,
+// a denested root, or a constant identified by the exact squared length), a constant
+// identified by the two circles otherwise; for a parabolic arc the closed-form length
+// |S(xi_v) - S(xi_u)| (number/parabolic_arc.h) as a constant identified by its focus,
+// directrix and the two circles. Constants evaluate in Arb at the requested precision.
+// Also: rigorous double / Arb enclosures of lengths from circle values (used by the
+// construction and the validation), and points along parabolic arcs for drawing.
+// Contract: node and edge data come from exact_polygon_axis.
+// Complexity: O(1) per value (Arb work grows with the precision asked for).
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "medial2/medial_graph.h"
+#include "medial2/voronoi_circle.h"
+
+namespace grassfire {
+
+struct AxisNodeData {
+  VoronoiCircle circle;              // a representative circle of the contracted group
+  std::vector<std::uint32_t> sites;  // every defining site of the group, sorted
+};
+
+struct AxisEdgeData {
+  std::uint32_t u = 0, v = 0;        // node ids (as in the graph)
+  std::uint32_t site_a = 0, site_b = 0;
+  bool parabolic = false;            // focus = the point site, directrix = the segment's line
+};
+
+// Length of an edge from its end circles, in the frame (T = Interval or Ball).
+Interval edge_length(const PolygonSites& s, const AxisEdgeData& e, const CircleValue<Interval>& a,
+                     const CircleValue<Interval>& b);
+Ball edge_length(const PolygonSites& s, const AxisEdgeData& e, const CircleValue<Ball>& a,
+                 const CircleValue<Ball>& b);
+
+class PolygonAxisGeometry : public MedialGeometry {
+ public:
+  PolygonAxisGeometry(std::shared_ptr<const PolygonSites> sites, mpq_class to_input,
+                      std::vector<AxisNodeData> nodes, std::vector<AxisEdgeData> edges);
+
+  ExactSum exact_radius(std::uint32_t node) const override;
+  ExactSum exact_length(std::uint32_t edge) const override;
+  Point2 point_along(const MedialGraph& g, std::uint32_t edge, std::uint32_t from, double s) const override;
+  std::vector<Point2> polyline(const MedialGraph& g, std::uint32_t edge) const override;
+  std::string description() const override { return "exact polygon medial axis"; }
+
+  const PolygonSites& sites() const { return *sites_; }
+  const mpq_class& to_input() const { return to_input_; }
+  const AxisNodeData& node_data(std::uint32_t i) const { return nodes_[i]; }
+  const AxisEdgeData& edge_data(std::uint32_t e) const { return edges_[e]; }
+  std::string node_identity(std::uint32_t i) const;
+  // The node's circle as exact sums in the frame, or nullopt for a nested radical.
+  const std::optional<CircleValue<ExactSum>>& exact_circle(std::uint32_t i) const;
+
+ private:
+  ExactSum frame_length(std::uint32_t edge) const;
+
+  std::shared_ptr<const PolygonSites> sites_;
+  mpq_class to_input_;
+  std::vector<AxisNodeData> nodes_;
+  std::vector<AxisEdgeData> edges_;
+  mutable std::vector<std::uint8_t> circle_done_;
+  mutable std::vector<std::optional<CircleValue<ExactSum>>> circles_;
+  mutable std::vector<std::optional<ExactSum>> lengths_;
+};
+
+}  // namespace grassfire

@@ -1,0 +1,56 @@
+// voronoi_circle.h -- the empty circle at a Voronoi vertex of point and segment sites:
+// centre and radius R, from the defining sites (2.1.1; issue 4).
+//
+// Computes, for three sites given counter-clockwise around the vertex, the circle
+// tangent to the three (through a point site, touching a segment's line on the
+// polygon's interior side). Kinds: PPP (circumcircle, rational centre, R = sqrt of a
+// rational), PPS (centre in Q(sqrt D), R a sum of two square roots), PSS (centre on the
+// bisector of two lines: in general a nested radical), PSS with parallel lines (a strip),
+// SSS (incircle of three lines: a multiquadratic number). Where two circles fit the
+// sites (PPS, PSS), the one whose tangency points run counter-clockwise in the sites'
+// order is chosen, by exact signs of rationals (PPS) or of one cross product (PSS):
+// for PSS with lines L1, L2 after the point, the smaller circle is the right one exactly
+// when cross(n1, n2) > 0 (the tangency points then run L1, L2, P counter-clockwise).
+// One formula, three number types: double intervals (fast filter), Arb balls (any
+// precision), and exact sums of square roots (nullopt where the value is a nested
+// radical that does not denest; it is then a certified constant, polygon_axis.h).
+// Contract: the sites come from a validated polygon and define a Voronoi vertex.
+// Complexity: O(1) arithmetic per circle.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <optional>
+#include <string>
+
+#include "medial2/segment_voronoi.h"
+#include "number/ball.h"
+#include "number/exact_sum.h"
+#include "number/interval.h"
+
+namespace grassfire {
+
+enum class CircleKind : std::uint8_t { Apex, PPP, PPS, PPSLinear, PSS, PSSParallel, SSS };
+const char* to_string(CircleKind kind);
+
+struct VoronoiCircle {
+  CircleKind kind = CircleKind::Apex;
+  // Roles: Apex (p); PPP (P1, P2, P3); PPS (P, Q, L); PSS (P, L1, L2); SSS (L1, L2, L3).
+  std::array<std::uint32_t, 3> sites{};
+  std::int8_t root = 1;  // PPS: sign of the root term; PSS: -1 smaller, +1 larger circle
+};
+
+VoronoiCircle classify_circle(const PolygonSites& sites, const VoronoiTopology::Vertex& vertex);
+// A string naming the circle by its sites and root: equal strings, equal circles.
+std::string identity(const VoronoiCircle& c);
+
+template <class T>
+struct CircleValue {
+  T x, y, r;
+};
+
+CircleValue<Interval> solve_interval(const PolygonSites& sites, const VoronoiCircle& c);
+CircleValue<Ball> solve_ball(const PolygonSites& sites, const VoronoiCircle& c);
+std::optional<CircleValue<ExactSum>> solve_exact(const PolygonSites& sites, const VoronoiCircle& c);
+
+}  // namespace grassfire

@@ -1,0 +1,88 @@
+// parabolic_arc.cpp -- see parabolic_arc.h.
+#include "number/parabolic_arc.h"
+
+#include <cmath>
+#include <limits>
+
+namespace grassfire {
+
+namespace {
+
+// ln 2 lies between the double nearest to it (which is below it) and the next double.
+const Interval kLn2{0x1.62e42fefa39efp-1, 0x1.62e42fefa39f0p-1};
+
+// atanh(t) for 0 <= t <= 0.2: sum_{j < 14} t^(2j+1)/(2j+1), plus the remainder
+// 0 <= R <= t^29 / (29 (1 - t^2)), which is below 2^-70 t for t <= 0.2.
+Interval atanh_small(const Interval& t) {
+  const Interval t2 = square(t);
+  Interval sum = 0.0;
+  Interval power = t;
+  for (int j = 0; j < 14; ++j) {
+    sum += power / Interval(2.0 * j + 1.0);
+    power = power * t2;
+  }
+  const Interval remainder = power / (Interval(29.0) * (Interval(1.0) - t2));
+  return {sum.lo, (sum + remainder).hi};
+}
+
+// log(x) for a double x > 0, as x = m 2^k with m in [sqrt(1/2), sqrt(2)):
+// log x = k ln2 + 2 atanh((m - 1) / (m + 1)), |t| <= 0.1716.
+Interval log_point(double x) {
+  int k = 0;
+  double m = std::frexp(x, &k);  // m in [0.5, 1), exact
+  if (m < 0x1.6a09e667f3bcdp-1) {
+    m *= 2.0;  // exact
+    --k;
+  }
+  const Interval t = (Interval(m) - Interval(1.0)) / (Interval(m) + Interval(1.0));
+  Interval a;
+  if (t.lo >= 0) {
+    a = atanh_small(t);
+  } else {
+    const Interval neg = atanh_small(-t);
+    a = -neg;
+  }
+  return Interval(static_cast<double>(k)) * kLn2 + Interval(2.0) * a;
+}
+
+// asinh(x) for a double x >= 0: log1p(x + x^2 / (1 + sqrt(1 + x^2))), which keeps the
+// relative accuracy for small x.
+Interval asinh_nonnegative(double x) {
+  if (x == 0) return 0.0;
+  const Interval xi(x);
+  const Interval x2 = square(xi);
+  const Interval w = xi + x2 / (Interval(1.0) + sqrt(Interval(1.0) + x2));
+  return log1p_enclosure(w);
+}
+
+}  // namespace
+
+Interval log1p_enclosure(const Interval& w) {
+  // Small w: log1p(w) = 2 atanh(w / (2 + w)), monotone in w, t <= 0.2 for w <= 0.5.
+  if (w.hi <= 0.5) {
+    const Interval t = w / (Interval(2.0) + w);
+    return Interval(2.0) * atanh_small({std::fmax(0.0, t.lo), t.hi});
+  }
+  const Interval one_plus = Interval(1.0) + w;
+  return {log_point(one_plus.lo).lo, log_point(one_plus.hi).hi};
+}
+
+Interval asinh_enclosure(const Interval& z) {
+  // asinh is increasing and odd.
+  auto lower = [](double x) { return x >= 0 ? asinh_nonnegative(x).lo : -asinh_nonnegative(-x).hi; };
+  auto upper = [](double x) { return x >= 0 ? asinh_nonnegative(x).hi : -asinh_nonnegative(-x).lo; };
+  return {lower(z.lo), upper(z.hi)};
+}
+
+Interval parabola_arc_primitive(const Interval& xi, const Interval& p) {
+  const Interval z = xi / p;
+  return half(xi * sqrt(Interval(1.0) + square(z))) + half(p * asinh_enclosure(z));
+}
+
+Ball parabola_arc_primitive(const Ball& xi, const Ball& p) {
+  const Ball z = xi / p;
+  const Ball half_ball(0.5);
+  return half_ball * xi * sqrt(Ball(1.0) + z * z) + half_ball * p * asinh(z);
+}
+
+}  // namespace grassfire

@@ -1,0 +1,49 @@
+// sqrt_field.h -- products and quotients of sums of square roots of rationals.
+//
+// Computes: exact products of ExactSums without constants (sqrt(a) sqrt(b) = sqrt(ab)),
+// and quotients by rationalising the denominator with conjugates (x / (a + b sqrt r) =
+// x (a - b sqrt r) / (a^2 - b^2 r)), which keeps Voronoi vertices of segment sites in the
+// form q + sum c_i sqrt(r_i) whenever they lie in a multiquadratic field (issue 4: exact
+// R where the geometry allows). Also: the exact square root of a rational when it is
+// rational, and denesting sqrt(u + v sqrt m) when u^2 - v^2 m is a rational square.
+// Contract: no certified constants in the operands (checked: std::invalid_argument).
+// Complexity: a product of k and l terms is O(k l) rational operations; a quotient does
+// at most kMaxConjugations rounds, each a product.
+#pragma once
+
+#include <optional>
+
+#include "number/exact_sum.h"
+
+namespace grassfire {
+
+ExactSum multiply(const ExactSum& a, const ExactSum& b);
+// a / b, or nullopt when the conjugate rounds do not make the denominator rational
+// (or b is zero).
+std::optional<ExactSum> divide(const ExactSum& a, const ExactSum& b);
+// sqrt(q) as a rational when q is the square of one.
+std::optional<mpq_class> rational_sqrt(const mpq_class& q);
+// sqrt(x) as an ExactSum for x >= 0 rational or x = u + v sqrt(m) denestable; nullopt
+// otherwise.
+std::optional<ExactSum> sqrt_of_sum(const ExactSum& x);
+// Exact sign of a sum without constants (never uncertified).
+int exact_sign(const ExactSum& x, NumberStats* stats = nullptr);
+
+// A number type for formulas shared with Interval and Ball (voronoi_circle.cpp): exact
+// field operations on sums of square roots; throws NestedRadical when a quotient or a
+// square root leaves that form.
+struct NestedRadical {};
+struct RootSum {
+  ExactSum v;
+  RootSum() = default;
+  RootSum(double d) : v(ExactSum::rational(mpq_class(d))) {}  // NOLINT: doubles are exact rationals
+  explicit RootSum(ExactSum s) : v(std::move(s)) { v.simplify(); }
+};
+RootSum operator+(const RootSum& a, const RootSum& b);
+RootSum operator-(const RootSum& a, const RootSum& b);
+RootSum operator-(const RootSum& a);
+RootSum operator*(const RootSum& a, const RootSum& b);
+RootSum operator/(const RootSum& a, const RootSum& b);
+RootSum sqrt(const RootSum& a);
+
+}  // namespace grassfire
