@@ -48,11 +48,11 @@ TEST_CASE("book of k pages: one singular spine, k sheets, k sectors on the spine
     CHECK(mc.vertex(mid).kind == VertexKind::SingularCurve);
     CHECK(count_sectors(mc, mid) == static_cast<std::size_t>(k));
     CHECK_FALSE(mc.is_border_point(mid));
-    // The spine ends: a star of k pages, contractible: border points that never ignite.
+    // The spine ends: a star of k pages, contractible: border points igniting at f = R = 0.
     const std::uint32_t end = vertex_at(mc, 0, 0, 0);
     CHECK(mc.vertex(end).kind == VertexKind::SingularPoint);
     CHECK(mc.is_border_point(end));
-    CHECK(std::isinf(mc.ignition_at_vertex(end)));
+    CHECK(mc.ignition_at_vertex(end) == 0.0);
     for (const Sheet& s : mc.sheets()) CHECK(s.planar);
   }
 }
@@ -102,7 +102,7 @@ TEST_CASE("board and fin: strata, sheets, the corner c and the junction N", "[co
 TEST_CASE("Y of three half-planes and a pinched double cone", "[complex3]") {
   const MedialComplex y = built(y_junction(1));
   CHECK(y.sheets().size() == 3);
-  CHECK(y.count(VertexKind::SingularCurve) == 3);  // spine interior vertices z = 1, 2, 3
+  CHECK(y.count(VertexKind::SingularCurve) == 9);  // spine interior vertices z = 1, ..., 9
   const MedialComplex cone = built(pinched_double_cone(6));
   CHECK(cone.sheets().size() == 2);
   CHECK(cone.count(EdgeStratum::Singular) == 0);

@@ -133,10 +133,10 @@ RawComplex board_cylinder(const BoardCylinderOptions& o) {
 
 RawComplex book(const BookOptions& o) {
   const int k = o.pages;
-  if (k < 1 || o.height < 1 || o.cells_per_unit < 1 || (!o.widths.empty() && static_cast<int>(o.widths.size()) != k))
+  if (k < 1 || o.height < 0 || o.cells_per_unit < 1 || (!o.widths.empty() && static_cast<int>(o.widths.size()) != k))
     throw std::invalid_argument("book: pages >= 1, height >= 1, cells >= 1, one width per page");
   ComplexBuilder b("book(k=" + std::to_string(k) + ")");
-  const int g = o.cells_per_unit, nz = o.height * g;
+  const int g = o.cells_per_unit, nz = book_height(o) * g;
   for (int j = 0; j < k; ++j) {
     const long w = o.widths.empty() ? 2 : o.widths[j];
     if (w < 1) throw std::invalid_argument("book: widths >= 1");
@@ -146,27 +146,32 @@ RawComplex book(const BookOptions& o) {
       const mpq_class u = make_rational(i, g);
       return point(u * d[0], u * d[1], make_rational(m, g));
     });
-    std::vector<std::uint32_t> bottom, top;
-    for (int i = 0; i <= nu; ++i) bottom.push_back(id[i][0]), top.push_back(id[i][nz]);
-    never_along(b, bottom);
-    never_along(b, top);
+    (void)id;
   }
   return b.take();
 }
 
-double book_burning_time(const BookOptions& o, int page, double u) {
+int book_height(const BookOptions& o) {
+  if (o.height > 0) return o.height;
+  const long w = o.widths.empty() ? 2 : *std::max_element(o.widths.begin(), o.widths.end());
+  return static_cast<int>(2 * w + 2);
+}
+
+double book_burning_time(const BookOptions& o, int page, double u, double z) {
   std::vector<long> w = o.widths.empty() ? std::vector<long>(o.pages, 2) : o.widths;
   const double wj = static_cast<double>(w.at(page));
   std::sort(w.begin(), w.end());
   const double spine = o.pages == 1 ? 0.0 : static_cast<double>(w[o.pages - 2]);
-  return std::min(wj - u, spine + u);
+  const double s = book_height(o);
+  if (u == 0) return std::min({spine, z, s - z});  // on the spine itself
+  return std::min({wj - u, spine + u, z, s - z});
 }
 
 BookOptions y_junction_options(int cells_per_unit) {
   BookOptions o;
   o.pages = 3;
   o.widths = {2, 3, 4};
-  o.height = 4;
+  o.height = 10;
   o.cells_per_unit = cells_per_unit;
   return o;
 }

@@ -5,19 +5,25 @@
 //  - board and fin (4.1.2, 4.2.1, DESIGN.md 5, reference case 1), zero radius, a = 1: the
 //    board {z = 0, y >= 0} truncated to [-E, E] x [0, E], the fin {(s, s, z): 1 <= s <= E,
 //    0 <= z <= E}, junction N from c = (1, 1, 0) to (E, E, 0). B (y = 0) and F (s = 1)
-//    ignite at f = 0; the truncation borders never ignite (IgnitionRule::Never). Since every
-//    optimal path of the infinite complex stays inside the box, the closed form holds on
-//    the whole truncated complex (see board_fin_burning_time).
+//    ignite at f = 0; the truncation borders never ignite (IgnitionRule::Never). Every
+//    optimal path of the infinite complex stays inside the box, and the truncation changes
+//    one thing only: the far end (E, E, 0) of N has a contractible link (a star of three
+//    sectors), so it burns at its first arrival, time E, and fire leaves it early along N.
+//    Hence the closed form (board_fin_burning_time) is exact wherever it is <= E.
 //  - board and hollow cylinder (Fig. 4.7): a square board with a "cylinder" standing on it;
 //    the cylinder is approximated by a prism over a k-gon whose vertices are exact rational
 //    points of the circle (not a regular k-gon: rational parametrisation of the circle).
 //    Board border and cylinder rim ignite at f = 0. No closed form (DESIGN.md gives none).
 //  - a book of k pages on one spine (z axis); page j is the rectangle [0, w_j] x [0, S] in
-//    the half-plane of a rational unit direction near angle 2 pi j / k. Only the outer edges
-//    u = w_j ignite (f = 0); top and bottom never ignite. Closed form: the spine burns at
-//    the (k-1)-th smallest width T, and BT(u) = min(w_j - u, T + u) on page j.
-//  - a Y of three half-planes: the book with three pages of widths 2, 3, 4 (spine at 3;
-//    fronts quench inside the widest page at u = 1/2).
+//    the half-plane of a rational unit direction near angle 2 pi j / k. Every border edge
+//    ignites at f = 0 (zero radius). (Were top and bottom truncations that never ignite,
+//    the spine's ends would be border points with a star link burning at their first
+//    arrival, and fire would leak along the spine.) Closed form: a spine point at height z
+//    burns at min(z, S - z, T), T the (k-1)-th smallest width (its (k-1)-th sector arrival
+//    or its first arrival along the spine), and page j at (u, z) at
+//    min(w_j - u, z, S - z, T + u).
+//  - a Y of three half-planes: the book with three pages of widths 2, 3, 4 and height 10
+//    (spine at 3 in the middle; fronts quench inside the widest page at u = 1/2).
 //  - closed and pinched complexes for the strata and Prop-7 tests: tetrahedron surface,
 //    octahedron surface (sphere-like), a pinched double cone, a tetrahedron with a flap.
 // Contract: parameters as documented per function (checked; std::invalid_argument).
@@ -57,12 +63,14 @@ RawComplex board_cylinder(const BoardCylinderOptions& options = {});
 struct BookOptions {
   int pages = 3;
   std::vector<long> widths;  // per page (integers); empty: all 2
-  int height = 4;            // spine length S
+  int height = 0;            // spine length S; 0: 2 max(w) + 2, so the middle sees T
   int cells_per_unit = 2;    // grid refinement of every page
 };
 RawComplex book(const BookOptions& options);
-// BT at the point at distance u from the spine on page `page` (any height).
-double book_burning_time(const BookOptions& options, int page, double u);
+// BT at the point at distance u from the spine and height z on page `page` (u = 0: the
+// spine itself, whose BT is not the limit from every page).
+double book_burning_time(const BookOptions& options, int page, double u, double z);
+int book_height(const BookOptions& options);
 RawComplex y_junction(int cells_per_unit = 2);
 BookOptions y_junction_options(int cells_per_unit = 2);
 

@@ -1,0 +1,103 @@
+// discrete_burning.h -- the discrete burning baseline on a medial complex (DESIGN.md 5).
+//
+// Computes: an approximation of the burning time BT (Definitions 9-10, 4.2.3) at every
+// vertex of a MedialComplex and at Steiner points placed on every edge at spacing <= h,
+// and ET = BT - R per vertex; +infinity where nothing burns. It re-implements the idea
+// of the authors' later erosion-thickness code (Yan et al. 2016): Dijkstra over vertices
+// plus Steiner points, with sector bookkeeping at junctions.
+//
+// The rule (our discretisation of Definition 9; DESIGN.md 5 gives the operational form):
+//  * Graph: vertices, and n_e = ceil(|e| / h) - 1 equally spaced Steiner points inside
+//    each edge e. Moves are straight segments: between consecutive points of one edge, and
+//    across a triangle between a point of one of its edges and a point of another edge
+//    (each move is a non-crossing curve of Definition 9: it lies in one closed triangle
+//    and meets the singular set at most at its ends, or runs along an edge).
+//  * An arrival at point x at time t through a link element: through a triangle, the
+//    sector of x containing it (at an edge point: that triangle's arc); along an edge, the
+//    direction of that edge (a pole if the edge is singular or dangling, else the sector
+//    the edge lies in). Arrivals are processed in time order (Dijkstra).
+//  * x burns at the first arrival after which its link, with all arrived elements removed,
+//    is empty or contractible (MedialComplex::remaining_link_contractible). On a singular
+//    curve with k sheets that is the (k-1)-th sector arrival or the first arrival along
+//    the curve; in a manifold region, the first arrival. A border point (contractible
+//    link) also burns at f(x): BT = min(f, first arrival). Each cycle of the link is a
+//    disk type of Definition 8, so "no cycle left" is "every disk type has a burning path";
+//    "connected" adds the 2D rule (3.3.1) for 1-dimensional parts (a three-segment
+//    junction burns at its second arrival).
+//  * When x burns at time T it emits T + |x - y| to every graph neighbour y, through every
+//    element (Definition 9 admits any non-crossing path ending at a burned point, whichever
+//    sector it leaves into; fire re-entering an arrived sector cannot beat that sector's
+//    own front, whose arrival was already <= T, by the 1-Lipschitz property, Prop. 4).
+//
+// Error behaviour (floating point is acceptable here: the baseline is approximate by
+// construction). Every discrete BT is realised by polygonal non-crossing paths between
+// burned points, so by Definition 9 and Lemma 2, by induction in the processing order,
+// BT_discrete(x) >= BT(x) at every graph point, up to double rounding (relative 1e-15 per
+// move). The excess comes from snapping the crossing points of a burning path to Steiner
+// points: O(h^2 / l) per edge crossed where the path is straight (l = the local segment
+// length), O(h) where it bends (around a vertex or into a singular curve), plus the
+// sampling of f on border edges. On the board and fin the measured maximum error
+// shrinks linearly in h (experiments/study_board_fin_convergence.cpp).
+// Contract: a validated MedialComplex; spacing h > 0 and the point budget respected.
+// Complexity: O(N log N + sum over triangles of (points on its boundary)^2) with N graph
+// points; memory O(N (2 + average edge degree)).
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <limits>
+#include <vector>
+
+#include "complex3/medial_complex.h"
+
+namespace grassfire {
+
+struct DiscreteBurningOptions {
+  double spacing = 0.25;                   // h
+  std::uint64_t max_points = 200'000'000;  // refuse (std::invalid_argument) above this
+};
+
+struct DiscreteBurningStats {
+  std::uint64_t steiner_points = 0;
+  std::uint64_t pushes = 0;
+  std::uint64_t pops = 0;
+  double seconds = 0.0;
+};
+
+class DiscreteBurning {
+ public:
+  static constexpr double kInfinity = std::numeric_limits<double>::infinity();
+
+  double spacing = 0.0;
+  std::vector<double> vertex_bt;  // per vertex
+  std::vector<double> vertex_et;  // BT - R per vertex
+  std::vector<double> steiner_bt;  // per Steiner point, edge by edge
+  std::vector<std::uint64_t> edge_first_steiner;  // size edges + 1
+  DiscreteBurningStats stats;
+
+  std::uint32_t steiner_count(std::uint32_t e) const {
+    return static_cast<std::uint32_t>(edge_first_steiner[e + 1] - edge_first_steiner[e]);
+  }
+  // BT at Steiner point i (1 <= i <= steiner_count(e)) of edge e, at parameter
+  // s = i / (steiner_count(e) + 1) from e.v[0]; i = 0 and i = count + 1 are the vertices.
+  double bt_on_edge(const MedialComplex& mc, std::uint32_t e, std::uint32_t i) const;
+  static Vec3d point_on_edge(const MedialComplex& mc, std::uint32_t e, double s);
+
+  // First arrival times through the link elements (kInfinity if none before burning):
+  // at vertex v, per element of mc.link_elements(v); at a Steiner point of edge e, the
+  // direction towards e.v[0], towards e.v[1], then one per triangle of edge_triangles(e).
+  std::vector<double> vertex_arrivals(std::uint32_t v) const;
+  std::vector<double> steiner_arrivals(const MedialComplex& mc, std::uint32_t e, std::uint32_t i) const;
+
+  // Slot layout of the arrival times (first arrival per link element, kInfinity if none
+  // before the point burned): vertex v owns slots [vertex_slot[v], vertex_slot[v + 1]);
+  // Steiner point i of edge e owns 2 + k slots from edge_slot[e] + (i - 1) (2 + k),
+  // k = edge_triangles(e).size().
+  std::vector<double> arrival_time;
+  std::vector<std::uint64_t> vertex_slot;
+  std::vector<std::uint64_t> edge_slot;
+};
+
+DiscreteBurning burn_discrete(const MedialComplex& mc, const DiscreteBurningOptions& options);
+
+}  // namespace grassfire
