@@ -1,0 +1,258 @@
+// The exact polygon medial axis (medial2/polygon_axis.h): hand-built shapes with exact
+// expected values, the definition-level validation, Boost vs CGAL, engine vs oracle.
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <filesystem>
+#include <random>
+
+#include "burn2/edf_definition.h"
+#include "burn2/extended_grassfire.h"
+#include "medial2/polygon_axis.h"
+#include "medial2/polygon_axis_validate.h"
+#include "number/sqrt_field.h"
+#include "shapes/load_shape.h"
+#include "shapes/validate_shape.h"
+#include "support.h"
+
+using namespace grassfire;
+using namespace grassfire::testing;
+
+namespace {
+
+Shape2 polygon(std::vector<std::vector<Point2>> rings, const std::string& name = "test") {
+  Shape2 s;
+  s.name = name;
+  for (auto& r : rings) s.rings.push_back({std::move(r)});
+  validate_shape(s, name);
+  return s;
+}
+
+// The node nearest to (x, y).
+std::uint32_t node_at(const MedialGraph& g, double x, double y) {
+  std::uint32_t best = 0;
+  double bd = 1e300;
+  for (std::uint32_t v = 0; v < g.node_count(); ++v) {
+    const double d = std::hypot(g.node(v).position.x - x, g.node(v).position.y - y);
+    if (d < bd) bd = d, best = v;
+  }
+  REQUIRE(bd < 1e-9);
+  return best;
+}
+
+bool equals(const ExactSum& a, const ExactSum& b) {
+  ExactSum d = a - b;
+  d.simplify();
+  return d.constant_terms().empty() && is_zero_sqrt_part(d);
+}
+
+ExactSum root(long n) { return ExactSum::sqrt_of(n); }
+ExactSum rat(long n, long d = 1) { return ExactSum::rational(make_rational(n, d)); }
+
+void require_valid_and_burns_like_oracle(const MedialGraph& g) {
+  g.validate();
+  const AxisValidation v = validate_polygon_axis(g);
+  INFO((v.failures.empty() ? std::string() : v.failures.front()));
+  REQUIRE(v.ok());
+  const GrassfireResult r = extended_grassfire(g);
+  require_equal_to_definition(g, r, edf_by_definition(g));
+}
+
+std::size_t leaves(const MedialGraph& g) {
+  std::size_t n = 0;
+  for (std::uint32_t v = 0; v < g.node_count(); ++v) n += g.is_leaf(v);
+  return n;
+}
+
+}  // namespace
+
+TEST_CASE("decimal policy: shortest decimal of a double, up to 9 digits", "[exact2d]") {
+  long long m = 0;
+  CHECK(decimal_digits(0.34174, 9, &m) == 5);
+  CHECK(m == 34174);
+  CHECK(decimal_digits(3.0, 9, &m) == 0);
+  CHECK(decimal_digits(0.1 + 0.2, 9, &m) == -1);  // 0.30000000000000004 is no short decimal
+  CHECK(decimal_digits(-1.5, 9, &m) == 1);
+  CHECK(m == -15);
+  CHECK(decimal_digits(1.0 / 3.0, 9, &m) == -1);
+}
+
+TEST_CASE("rectangle 4 x 2: four R = 0 leaves, two junctions R = 1, EMA at the centre", "[exact2d]") {
+  const Shape2 s = polygon({{{0, 0}, {4, 0}, {4, 2}, {0, 2}}});
+  PolygonAxisReport rep;
+  const MedialGraph g = exact_polygon_axis(s, {}, &rep);
+  CHECK(rep.construction == AxisConstruction::BoostPolygon);
+  REQUIRE(g.node_count() == 6);
+  REQUIRE(g.edge_count() == 5);
+  CHECK(leaves(g) == 4);
+  const std::uint32_t a = node_at(g, 1, 1), b = node_at(g, 3, 1);
+  CHECK(equals(g.geometry().exact_radius(a), rat(1)));
+  CHECK(equals(g.geometry().exact_radius(node_at(g, 0, 0)), rat(0)));
+  for (std::uint32_t e = 0; e < g.edge_count(); ++e) {
+    const bool middle = (g.edge(e).u == a && g.edge(e).v == b) || (g.edge(e).u == b && g.edge(e).v == a);
+    CHECK(equals(g.geometry().exact_length(e), middle ? rat(2) : root(2)));
+    CHECK(g.edge(e).kind == EdgeKind::Segment);
+  }
+  const GrassfireResult r = extended_grassfire(g);
+  const ExtendedMedialAxis& ema = r.ema.at(0);
+  REQUIRE_FALSE(ema.point.at_node);
+  CHECK(equals(ema_offset_sum(r, ema).exact(g), rat(1)));
+  CHECK(equals(ema_edf_sum(r, ema).exact(g), rat(1) + root(2)));  // (sqrt2 + sqrt2 + 2) / 2
+  require_valid_and_burns_like_oracle(g);
+}
+
+TEST_CASE("square: the two Voronoi vertices at the centre are contracted exactly", "[exact2d]") {
+  const Shape2 s = polygon({{{0, 0}, {2, 0}, {2, 2}, {0, 2}}});
+  PolygonAxisReport rep;
+  const MedialGraph g = exact_polygon_axis(s, {}, &rep);
+  CHECK(rep.contracted_edges == 1);
+  CHECK(rep.uncertified_contractions == 0);
+  REQUIRE(g.node_count() == 5);
+  REQUIRE(g.edge_count() == 4);
+  const std::uint32_t c = node_at(g, 1, 1);
+  CHECK(g.degree(c) == 4);
+  CHECK(equals(g.geometry().exact_radius(c), rat(1)));
+  const GrassfireResult r = extended_grassfire(g);
+  REQUIRE(r.ema.at(0).point.at_node);
+  CHECK(r.ema[0].point.node == c);
+  require_valid_and_burns_like_oracle(g);
+}
+
+TEST_CASE("collinear vertex: a degree-2 node where its normal meets the axis", "[exact2d]") {
+  const Shape2 s = polygon({{{0, 0}, {2, 0}, {4, 0}, {4, 2}, {0, 2}}});
+  const MedialGraph g = exact_polygon_axis(s);
+  REQUIRE(g.node_count() == 7);
+  REQUIRE(g.edge_count() == 6);
+  CHECK(leaves(g) == 4);
+  CHECK(g.degree(node_at(g, 2, 1)) == 2);
+  CHECK(equals(g.geometry().exact_radius(node_at(g, 2, 1)), rat(1)));
+  require_valid_and_burns_like_oracle(g);
+}
+
+TEST_CASE("L-shape: the reflex vertex gives two parabolic arcs meeting at R = 4 - 2 sqrt 2", "[exact2d]") {
+  const Shape2 s = polygon({{{0, 0}, {4, 0}, {4, 2}, {2, 2}, {2, 4}, {0, 4}}});
+  PolygonAxisReport rep;
+  const MedialGraph g = exact_polygon_axis(s, {}, &rep);
+  REQUIRE(g.node_count() == 10);
+  REQUIRE(g.edge_count() == 9);
+  CHECK(leaves(g) == 5);
+  CHECK(rep.parabolic_arcs == 2);
+  const double j = 4 - 2 * std::sqrt(2.0);
+  const std::uint32_t junction = node_at(g, j, j);
+  CHECK(g.degree(junction) == 3);
+  CHECK(equals(g.geometry().exact_radius(junction), rat(4) - root(8)));
+  CHECK(equals(g.geometry().exact_radius(node_at(g, 2, 1)), rat(1)));
+  // The arc from (2, 1) to the junction: focus (2, 2), directrix y = 0, p = 2, xi from 0
+  // to 2 - 2 sqrt 2: length S(2 sqrt 2 - 2) with S(x) = x/2 sqrt(1 + x^2/4) + asinh(x/2).
+  const double x = 2 * std::sqrt(2.0) - 2;
+  const double expected = 0.5 * x * std::sqrt(1 + x * x / 4) + std::asinh(x / 2);
+  int arcs = 0;
+  for (std::uint32_t e = 0; e < g.edge_count(); ++e) {
+    if (g.edge(e).kind != EdgeKind::ParabolicArc) continue;
+    ++arcs;
+    const Interval len = g.edge(e).length;
+    CHECK(len.hi - len.lo <= std::ldexp(len.hi, -40));  // kTightBits
+    CHECK(std::fabs(len.mid() - expected) < 1e-13);
+    const Interval hi_prec = g.geometry().exact_length(e).approx();
+    CHECK(hi_prec.lo <= len.hi);
+    CHECK(len.lo <= hi_prec.hi);
+  }
+  CHECK(arcs == 2);
+  require_valid_and_burns_like_oracle(g);
+}
+
+TEST_CASE("square with a square hole: a loop of 16 nodes, EMA = the cycle", "[exact2d]") {
+  const Shape2 s = polygon({{{0, 0}, {6, 0}, {6, 6}, {0, 6}}, {{2, 2}, {2, 4}, {4, 4}, {4, 2}}});
+  PolygonAxisReport rep;
+  const MedialGraph g = exact_polygon_axis(s, {}, &rep);
+  REQUIRE(g.node_count() == 16);
+  REQUIRE(g.edge_count() == 16);
+  CHECK(leaves(g) == 4);
+  CHECK(rep.parabolic_arcs == 8);
+  CHECK(g.cycle_rank() == 1);
+  const GrassfireResult r = extended_grassfire(g);
+  CHECK(r.ema.at(0).kind == ExtendedMedialAxis::Kind::Cycles);
+  require_valid_and_burns_like_oracle(g);
+}
+
+TEST_CASE("near-regular hexagon and octagon (5 decimals): valid, Boost equals CGAL", "[exact2d]") {
+  for (int n : {6, 8, 12}) {
+    std::vector<Point2> ring;
+    for (int k = 0; k < n; ++k) {
+      const double t = 2 * M_PI * k / n;
+      ring.push_back({std::round(std::cos(t) * 1e5) / 1e5, std::round(std::sin(t) * 1e5) / 1e5});
+    }
+    const Shape2 s = polygon({ring});
+    PolygonAxisOptions boost_opt, cgal_opt;
+    boost_opt.construction = AxisConstruction::BoostPolygon;
+    cgal_opt.construction = AxisConstruction::CgalSdg;
+    const MedialGraph gb = exact_polygon_axis(s, boost_opt), gc = exact_polygon_axis(s, cgal_opt);
+    INFO("n = " << n);
+    CHECK(leaves(gb) == static_cast<std::size_t>(n));
+    CHECK(gb.node_count() == gc.node_count());
+    CHECK(gb.edge_count() == gc.edge_count());
+    require_valid_and_burns_like_oracle(gb);
+    require_valid_and_burns_like_oracle(gc);
+  }
+}
+
+TEST_CASE("seeded random star polygons with 4 decimals: Boost and CGAL agree, valid, engine = oracle", "[exact2d]") {
+  std::mt19937 rng(20240611);
+  std::uniform_real_distribution<double> radius(0.3, 1.0);
+  for (int trial = 0; trial < 12; ++trial) {
+    const int n = 5 + trial * 3;
+    std::vector<Point2> ring;
+    for (int k = 0; k < n; ++k) {
+      const double t = 2 * M_PI * k / n, r = radius(rng);
+      ring.push_back({std::round(r * std::cos(t) * 1e4) / 1e4, std::round(r * std::sin(t) * 1e4) / 1e4});
+    }
+    const Shape2 s = polygon({ring});
+    PolygonAxisOptions cgal_opt;
+    cgal_opt.construction = AxisConstruction::CgalSdg;
+    PolygonAxisReport rb, rc;
+    const MedialGraph gb = exact_polygon_axis(s, {}, &rb), gc = exact_polygon_axis(s, cgal_opt, &rc);
+    INFO("trial " << trial);
+    REQUIRE(gb.node_count() == gc.node_count());
+    REQUIRE(gb.edge_count() == gc.edge_count());
+    // Same R multiset: the CGAL frame is the input doubles, Boost's the decimals, which are
+    // the same polygon up to the (different) nearest-double rounding of 4-decimal inputs.
+    std::vector<double> b, c;
+    for (std::uint32_t v = 0; v < gb.node_count(); ++v) b.push_back(gb.node(v).radius.mid());
+    for (std::uint32_t v = 0; v < gc.node_count(); ++v) c.push_back(gc.node(v).radius.mid());
+    std::sort(b.begin(), b.end());
+    std::sort(c.begin(), c.end());
+    for (std::size_t i = 0; i < b.size(); ++i) CHECK(std::fabs(b[i] - c[i]) <= 1e-12);
+    require_valid_and_burns_like_oracle(gb);
+    require_valid_and_burns_like_oracle(gc);
+  }
+}
+
+TEST_CASE("an integer polygon gives the identical exact R under Boost and CGAL", "[exact2d]") {
+  const Shape2 s = polygon({{{0, 0}, {7, 0}, {7, 3}, {4, 3}, {5, 6}, {1, 5}, {2, 2}, {0, 2}}});
+  PolygonAxisOptions cgal_opt;
+  cgal_opt.construction = AxisConstruction::CgalSdg;
+  const MedialGraph gb = exact_polygon_axis(s), gc = exact_polygon_axis(s, cgal_opt);
+  REQUIRE(gb.node_count() == gc.node_count());
+  for (std::uint32_t v = 0; v < gb.node_count(); ++v) {
+    const std::uint32_t w = node_at(gc, gb.node(v).position.x, gb.node(v).position.y);
+    CHECK(compare(gb.geometry().exact_radius(v), gc.geometry().exact_radius(w)) == 0);
+  }
+  require_valid_and_burns_like_oracle(gb);
+}
+
+TEST_CASE("every shape of data/shapes2d: exact axis valid by definition, engine = oracle", "[exact2d]") {
+  int shapes = 0;
+  for (const auto& entry : std::filesystem::directory_iterator(GF_PROJECT_DATA "/shapes2d")) {
+    if (entry.path().extension() != ".json") continue;
+    const Shape2 s = load_shape(entry.path().string());
+    PolygonAxisReport rep;
+    const MedialGraph g = exact_polygon_axis(s, {}, &rep);
+    INFO(entry.path().filename().string());
+    CHECK(rep.construction == AxisConstruction::BoostPolygon);
+    CHECK(g.component_count() == 1);
+    CHECK(g.cycle_rank() == s.rings.size() - 1);
+    require_valid_and_burns_like_oracle(g);
+    ++shapes;
+  }
+  CHECK(shapes >= 100);
+}
