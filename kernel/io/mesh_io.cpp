@@ -1,0 +1,210 @@
+// mesh_io.cpp -- OFF and OBJ meshes, ball lists, and the mesh writers (see mesh_io.h).
+#include "io/mesh_io.h"
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <fstream>
+
+#include "io/complex_text.h"
+
+namespace grassfire {
+namespace {
+
+std::array<double, 3> xyz(const TextLine& l, std::size_t first, const std::string& source) {
+  std::array<double, 3> p{};
+  for (std::size_t i = 0; i < 3; ++i) {
+    if (first + i >= l.tokens.size()) format_error(source, l.number, "a vertex needs three coordinates");
+    const auto d = parse_finite_double(l.tokens[first + i]);
+    if (!d) format_error(source, l.number, "'" + l.tokens[first + i] + "' is not a finite number");
+    p[i] = *d;
+  }
+  return p;
+}
+
+void check_triangle(const std::array<std::uint32_t, 3>& t, std::size_t line, const std::string& source) {
+  if (t[0] == t[1] || t[1] == t[2] || t[0] == t[2]) format_error(source, line, "face repeats a vertex");
+}
+
+void check_not_empty(const TriangleMesh3& m) {
+  if (m.vertices.empty() || m.triangles.empty()) format_error(m.source, 0, "empty mesh (no vertices or no triangles)");
+}
+
+std::ofstream open_for_writing(const std::string& path) {
+  std::ofstream out(path);
+  if (!out) throw ComplexFormatError(path + ": cannot write file");
+  return out;
+}
+
+void finish(std::ofstream& out, const std::string& path) {
+  out.close();
+  if (!out) throw ComplexFormatError(path + ": write error");
+}
+
+}  // namespace
+
+std::string file_extension(const std::string& path) {
+  const std::size_t slash = path.find_last_of('/');
+  const std::size_t dot = path.find_last_of('.');
+  if (dot == std::string::npos || (slash != std::string::npos && dot < slash)) return "";
+  std::string ext = path.substr(dot + 1);
+  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
+  return ext;
+}
+
+TriangleMesh3 parse_off(const std::string& text, const std::string& source) {
+  const std::vector<TextLine> lines = tokenize_lines(text);
+  TriangleMesh3 m;
+  m.source = source;
+  if (lines.empty() || lines[0].tokens[0] != "OFF") format_error(source, lines.empty() ? 0 : lines[0].number, "not an OFF file (first word must be OFF)");
+  std::vector<std::string> count_tokens(lines[0].tokens.begin() + 1, lines[0].tokens.end());
+  std::size_t next = 1, count_line = lines[0].number;
+  if (count_tokens.empty()) {
+    if (lines.size() < 2) format_error(source, lines[0].number, "missing counts 'nv nf ne'");
+    count_tokens = lines[1].tokens;
+    count_line = lines[1].number;
+    next = 2;
+  }
+  if (count_tokens.size() != 3) format_error(source, count_line, "counts must be 'nv nf ne'");
+  std::uint64_t c[3];
+  for (int i = 0; i < 3; ++i) {
+    const auto v = parse_index(count_tokens[i]);
+    if (!v) format_error(source, count_line, "count '" + count_tokens[i] + "' is not a non-negative integer");
+    c[i] = *v;
+  }
+  const std::uint64_t nv = c[0], nf = c[1];
+  if (lines.size() - next < nv + nf)
+    format_error(source, lines.back().number, "file ends early: the counts announce " + std::to_string(nv) + " vertices and " +
+                                                  std::to_string(nf) + " faces");
+  if (lines.size() - next > nv + nf) format_error(source, lines[next + nv + nf].number, "content after the last face");
+  for (std::uint64_t i = 0; i < nv; ++i) m.vertices.push_back(xyz(lines[next + i], 0, source));
+  for (std::uint64_t i = 0; i < nf; ++i) {
+    const TextLine& l = lines[next + nv + i];
+    const auto n = parse_index(l.tokens[0]);
+    if (!n) format_error(source, l.number, "face must start with its vertex count");
+    if (*n != 3) format_error(source, l.number, "face with " + l.tokens[0] + " vertices; triangles are required");
+    if (l.tokens.size() < 4) format_error(source, l.number, "face lists fewer than 3 vertices");
+    std::array<std::uint32_t, 3> t{};
+    for (int k = 0; k < 3; ++k) {
+      const auto idx = parse_index(l.tokens[1 + k]);
+      if (!idx || *idx >= nv) format_error(source, l.number, "vertex index '" + l.tokens[1 + k] + "' out of range (" + std::to_string(nv) + " vertices)");
+      t[k] = static_cast<std::uint32_t>(*idx);
+    }
+    check_triangle(t, l.number, source);
+    m.triangles.push_back(t);
+  }
+  check_not_empty(m);
+  return m;
+}
+
+TriangleMesh3 parse_obj(const std::string& text, const std::string& source) {
+  TriangleMesh3 m;
+  m.source = source;
+  struct Face {
+    std::array<long long, 3> ref;
+    std::size_t line;
+  };
+  std::vector<Face> faces;
+  for (const TextLine& l : tokenize_lines(text)) {
+    if (l.tokens[0] == "v") {
+      if (l.tokens.size() < 4 || l.tokens.size() > 5) format_error(source, l.number, "vertex must be 'v x y z [w]'");
+      m.vertices.push_back(xyz(l, 1, source));
+    } else if (l.tokens[0] == "f") {
+      if (l.tokens.size() != 4)
+        format_error(source, l.number, "face with " + std::to_string(l.tokens.size() - 1) + " vertices; triangles are required");
+      Face f{{0, 0, 0}, l.number};
+      for (int k = 0; k < 3; ++k) {
+        const std::string idx = l.tokens[1 + k].substr(0, l.tokens[1 + k].find('/'));
+        const bool negative = !idx.empty() && idx[0] == '-';
+        const auto v = parse_index(negative ? idx.substr(1) : idx);
+        if (!v || *v == 0) format_error(source, l.number, "'" + l.tokens[1 + k] + "' is not a vertex reference");
+        f.ref[k] = negative ? -static_cast<long long>(*v) : static_cast<long long>(*v);
+        // A negative reference counts back from the vertices read so far.
+        if (negative) f.ref[k] = static_cast<long long>(m.vertices.size()) + f.ref[k] + 1;
+      }
+      faces.push_back(f);
+    }
+  }
+  for (const Face& f : faces) {
+    std::array<std::uint32_t, 3> t{};
+    for (int k = 0; k < 3; ++k) {
+      if (f.ref[k] < 1 || f.ref[k] > static_cast<long long>(m.vertices.size()))
+        format_error(source, f.line, "vertex reference out of range (" + std::to_string(m.vertices.size()) + " vertices)");
+      t[k] = static_cast<std::uint32_t>(f.ref[k] - 1);
+    }
+    check_triangle(t, f.line, source);
+    m.triangles.push_back(t);
+  }
+  check_not_empty(m);
+  return m;
+}
+
+TriangleMesh3 read_triangle_mesh(const std::string& path) {
+  const std::string ext = file_extension(path);
+  if (ext == "off") return parse_off(read_text_file(path), path);
+  if (ext == "obj") return parse_obj(read_text_file(path), path);
+  if (ext == "ply") return parse_ply(read_text_file(path), path);
+  throw ComplexFormatError(path + ": unknown mesh extension '" + ext + "' (expected .off, .ply or .obj)");
+}
+
+void write_off(const TriangleMesh3& m, const std::string& path) {
+  std::ofstream out = open_for_writing(path);
+  out << "OFF\n" << m.vertices.size() << ' ' << m.triangles.size() << " 0\n";
+  for (const auto& p : m.vertices) out << shortest_double(p[0]) << ' ' << shortest_double(p[1]) << ' ' << shortest_double(p[2]) << '\n';
+  for (const auto& t : m.triangles) out << "3 " << t[0] << ' ' << t[1] << ' ' << t[2] << '\n';
+  finish(out, path);
+}
+
+void write_obj(const TriangleMesh3& m, const std::string& path) {
+  std::ofstream out = open_for_writing(path);
+  for (const auto& p : m.vertices)
+    out << "v " << shortest_double(p[0]) << ' ' << shortest_double(p[1]) << ' ' << shortest_double(p[2]) << '\n';
+  for (const auto& t : m.triangles) out << "f " << t[0] + 1 << ' ' << t[1] + 1 << ' ' << t[2] + 1 << '\n';
+  finish(out, path);
+}
+
+void write_ply(const TriangleMesh3& m, const std::string& path) {
+  std::ofstream out = open_for_writing(path);
+  out << "ply\nformat ascii 1.0\nelement vertex " << m.vertices.size()
+      << "\nproperty double x\nproperty double y\nproperty double z\nelement face " << m.triangles.size()
+      << "\nproperty list uchar int vertex_indices\nend_header\n";
+  for (const auto& p : m.vertices) out << shortest_double(p[0]) << ' ' << shortest_double(p[1]) << ' ' << shortest_double(p[2]) << '\n';
+  for (const auto& t : m.triangles) out << "3 " << t[0] << ' ' << t[1] << ' ' << t[2] << '\n';
+  finish(out, path);
+}
+
+BallSet parse_ball_list(const std::string& text, const std::string& source) {
+  BallSet b;
+  b.source = source;
+  for (const TextLine& l : tokenize_lines(text)) {
+    if (l.tokens.size() != 4) format_error(source, l.number, "a ball line must be 'x y z w' (w = squared radius)");
+    mpq_class v[4];
+    for (int i = 0; i < 4; ++i) {
+      const auto q = parse_exact_decimal(l.tokens[i]);
+      if (!q) format_error(source, l.number, "'" + l.tokens[i] + "' is not a finite decimal number");
+      v[i] = *q;
+    }
+    if (sgn(v[3]) <= 0) format_error(source, l.number, "squared radius " + l.tokens[3] + " is not positive");
+    b.centers.push_back({v[0], v[1], v[2]});
+    b.squared_radii.push_back(v[3]);
+    b.approx_centers.push_back({v[0].get_d(), v[1].get_d(), v[2].get_d()});
+    b.approx_radii.push_back(std::sqrt(v[3].get_d()));
+  }
+  if (b.centers.empty()) format_error(source, 0, "no balls");
+  return b;
+}
+
+BallSet read_ball_list(const std::string& path) { return parse_ball_list(read_text_file(path), path); }
+
+RawComplex mesh_as_complex(const TriangleMesh3& mesh) {
+  RawComplex r;
+  r.source = mesh.source;
+  for (const auto& p : mesh.vertices) {
+    r.vertices.push_back({mpq_class(p[0]), mpq_class(p[1]), mpq_class(p[2])});
+    r.radius_squared.push_back(0);
+  }
+  r.triangles = mesh.triangles;
+  return r;
+}
+
+}  // namespace grassfire

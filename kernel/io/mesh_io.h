@@ -1,0 +1,52 @@
+// mesh_io.h -- triangle meshes (OFF, PLY, OBJ) and ball lists, read and written.
+//
+// Accepted (reading; errors are ComplexFormatError "<file>:<line>: <problem>", or
+// "<file>: <element> <index>: <problem>" inside binary PLY):
+//  - OFF: a first line `OFF` (optionally followed on the same line by the counts), then
+//    `nv nf ne`, nv vertex lines `x y z` (further numbers, e.g. colours, are ignored),
+//    nf face lines `3 i j k` (further numbers ignored); `#` comments and blank lines
+//    anywhere. Faces must be triangles.
+//  - PLY 1.0: `format ascii` or `format binary_little_endian` (big endian is rejected); a
+//    `vertex` element with float/double/integer properties x, y, z, and a `face` element
+//    with a list property `vertex_indices` or `vertex_index`; other properties and
+//    elements are skipped (any PLY scalar type: char, uchar, short, ushort, int, uint,
+//    float, double and their int8..float64 names).
+//  - OBJ: `v x y z [w]` and `f a b c` with a, b, c of the forms i, i/t, i/t/n, i//n,
+//    1-based, negative = relative to the end; other statements are ignored.
+//  - ball lists: one ball a line, `x y z w` with w > 0 the squared radius (CGAL weighted
+//    points, /work/shared/data/balls); values are exact decimals.
+// Every mesh reader rejects: NaN or infinite or non-numeric values, wrong counts, indices
+// out of range, a face repeating a vertex, non-triangular faces, and empty meshes.
+// Writing: OFF, OBJ and ASCII PLY with the shortest round-tripping decimals, so a mesh
+// written and read back is identical.
+#pragma once
+
+#include <string>
+
+#include "complex3/ball_set.h"
+#include "complex3/raw_complex.h"
+#include "complex3/triangle_mesh.h"
+
+namespace grassfire {
+
+TriangleMesh3 parse_off(const std::string& text, const std::string& source);
+TriangleMesh3 parse_obj(const std::string& text, const std::string& source);
+TriangleMesh3 parse_ply(const std::string& bytes, const std::string& source);
+// By extension (.off, .ply, .obj, case-insensitive); unknown extensions are an error.
+TriangleMesh3 read_triangle_mesh(const std::string& path);
+
+void write_off(const TriangleMesh3& mesh, const std::string& path);
+void write_obj(const TriangleMesh3& mesh, const std::string& path);
+void write_ply(const TriangleMesh3& mesh, const std::string& path);
+
+BallSet parse_ball_list(const std::string& text, const std::string& source);
+BallSet read_ball_list(const std::string& path);
+
+// The mesh itself as a complex: vertex coordinates are the doubles read (exactly, as
+// rationals), R = 0 and Linear ignition; for burning on a given surface or 2-complex.
+RawComplex mesh_as_complex(const TriangleMesh3& mesh);
+
+// Lower-case extension of a path without the dot ("" if none).
+std::string file_extension(const std::string& path);
+
+}  // namespace grassfire
