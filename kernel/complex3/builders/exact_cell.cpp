@@ -1,0 +1,243 @@
+// exact_cell.cpp -- see exact_cell.h.
+#include "complex3/builders/exact_cell.h"
+
+#include <algorithm>
+#include <map>
+#include <stdexcept>
+
+namespace grassfire {
+
+namespace {
+
+template <class T>
+using Vec3 = std::array<T, 3>;
+
+template <class T>
+Vec3<T> cross3(const Vec3<T>& u, const Vec3<T>& v) {
+  return {u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]};
+}
+
+template <class T>
+T dot3(const Vec3<T>& u, const Vec3<T>& v) {
+  return u[0] * v[0] + u[1] * v[1] + u[2] * v[2];
+}
+
+// Cramer's rule for the point on three planes n_i . x + d_i = 0, homogeneously:
+// W = n1 . (n2 x n3), (X, Y, Z) = -(d1 n2 x n3 + d2 n3 x n1 + d3 n1 x n2).
+template <class T>
+std::array<T, 4> cramer(const std::array<const std::array<T, 4>*, 3>& p) {
+  Vec3<T> n[3];
+  for (int i = 0; i < 3; ++i) n[i] = {(*p[i])[0], (*p[i])[1], (*p[i])[2]};
+  const Vec3<T> c23 = cross3(n[1], n[2]), c31 = cross3(n[2], n[0]), c12 = cross3(n[0], n[1]);
+  std::array<T, 4> out;
+  for (int k = 0; k < 3; ++k) out[k] = T(0) - ((*p[0])[3] * c23[k] + (*p[1])[3] * c31[k] + (*p[2])[3] * c12[k]);
+  out[3] = dot3(n[0], c23);
+  return out;
+}
+
+int certified(const Interval& x) {
+  if (x.lo > 0) return 1;
+  if (x.hi < 0) return -1;
+  return 2;  // undecided
+}
+
+std::vector<std::uint32_t> sorted_union(std::vector<std::uint32_t> a, std::uint32_t id) {
+  auto it = std::lower_bound(a.begin(), a.end(), id);
+  if (it == a.end() || *it != id) a.insert(it, id);
+  return a;
+}
+
+}  // namespace
+
+void ClipStats::merge(const ClipStats& o) {
+  sign_tests += o.sign_tests;
+  by_support += o.by_support;
+  by_structure += o.by_structure;
+  by_filter += o.by_filter;
+  by_exact += o.by_exact;
+  exact_points += o.exact_points;
+  number.merge(o.number);
+}
+
+CellPlane make_cell_plane(std::array<RadicalNumber, 4> coef, std::uint64_t label) {
+  CellPlane p;
+  for (int k = 0; k < 4; ++k) p.approx[k] = coef[k].approx();
+  p.coef = std::move(coef);
+  p.label = label;
+  return p;
+}
+
+CellPlane rational_plane(const mpq_class& a, const mpq_class& b, const mpq_class& c, const mpq_class& d,
+                         std::uint64_t label) {
+  return make_cell_plane({RadicalNumber(a), RadicalNumber(b), RadicalNumber(c), RadicalNumber(d)}, label);
+}
+
+std::uint32_t PlaneSet::add(CellPlane p) {
+  planes_.push_back(std::move(p));
+  return static_cast<std::uint32_t>(planes_.size() - 1);
+}
+
+const HomogeneousPoint& PlaneSet::exact(const CellVertex& v) {
+  if (!v.exact) {
+    if (v.defining[0] == kNoPlane) throw std::logic_error("exact_cell: vertex without exact point or planes");
+    auto h = std::make_shared<HomogeneousPoint>();
+    h->c = cramer<RadicalNumber>({&planes_[v.defining[0]].coef, &planes_[v.defining[1]].coef,
+                                  &planes_[v.defining[2]].coef});
+    h->w_sign = sign(h->c[3], &stats.number);
+    if (h->w_sign == 0) throw std::logic_error("exact_cell: defining planes are dependent");
+    ++stats.exact_points;
+    // The cache is logically const: the value is a function of the defining planes.
+    const_cast<CellVertex&>(v).exact = h;
+  }
+  return *v.exact;
+}
+
+int PlaneSet::side(std::uint32_t id, const CellVertex& v) {
+  ++stats.sign_tests;
+  if (std::binary_search(v.support.begin(), v.support.end(), id)) {
+    ++stats.by_support;
+    return 0;
+  }
+  const CellPlane& p = planes_[id];
+  if (structural_zero_ && structural_zero_(p, v)) {
+    ++stats.by_structure;
+    return 0;
+  }
+  const Interval value = p.approx[0] * v.approx[0] + p.approx[1] * v.approx[1] + p.approx[2] * v.approx[2] + p.approx[3];
+  const int s = certified(value);
+  if (s != 2) {
+    ++stats.by_filter;
+    return s;
+  }
+  ++stats.by_exact;
+  const HomogeneousPoint& h = exact(v);
+  const RadicalNumber e = p.coef[0] * h.c[0] + p.coef[1] * h.c[1] + p.coef[2] * h.c[2] + p.coef[3] * h.c[3];
+  return sign(e, &stats.number) * h.w_sign;
+}
+
+CellVertex PlaneSet::vertex_on(std::array<std::uint32_t, 3> defining, std::vector<std::uint32_t> support) {
+  CellVertex v;
+  v.defining = defining;
+  v.support = std::move(support);
+  const std::array<Interval, 4> h =
+      cramer<Interval>({&planes_[defining[0]].approx, &planes_[defining[1]].approx, &planes_[defining[2]].approx});
+  if (certified(h[3]) != 2) {
+    for (int k = 0; k < 3; ++k) v.approx[k] = h[k] / h[3];
+    return v;
+  }
+  // The double enclosure of W straddles zero: enclose the exact coordinates instead.
+  const HomogeneousPoint& e = exact(v);
+  for (int k = 0; k < 3; ++k) {
+    double err = 0;
+    const double mid = approximate_quotient(e.c[k], e.c[3], 53, &err).get_d();
+    v.approx[k] = Interval(round_down(mid - err), round_up(mid + err));
+  }
+  return v;
+}
+
+CellVertex rational_vertex(const ExactPoint3& p, std::vector<std::uint32_t> support) {
+  CellVertex v;
+  v.support = std::move(support);
+  std::sort(v.support.begin(), v.support.end());
+  v.approx = {enclose(p.x), enclose(p.y), enclose(p.z)};
+  auto h = std::make_shared<HomogeneousPoint>();
+  h->c = {RadicalNumber(p.x), RadicalNumber(p.y), RadicalNumber(p.z), RadicalNumber(1)};
+  v.exact = h;
+  return v;
+}
+
+ConvexCell::ConvexCell(PlaneSet& planes, std::vector<CellVertex> vertices, std::vector<CellFace> faces)
+    : planes_(&planes), vertices_(std::move(vertices)), faces_(std::move(faces)) {}
+
+std::uint32_t ConvexCell::crossing_vertex(std::uint32_t a, std::uint32_t b, std::uint32_t face_plane) {
+  const std::uint32_t lo = std::min(a, b), hi = std::max(a, b);
+  for (Crossing& c : crossings_)
+    if (c.a == lo && c.b == hi) {
+      c.face_planes[1] = face_plane;
+      return c.vertex;
+    }
+  const auto id = static_cast<std::uint32_t>(vertices_.size() + crossings_.size());
+  crossings_.push_back({lo, hi, id, {face_plane, kNoPlane}});
+  return id;
+}
+
+// Builds the vertices created on cut edges: each lies on the two faces of its edge (whose
+// planes are independent, being distinct faces of a convex polytope) and on the new plane.
+void ConvexCell::finish_crossings(std::uint32_t id) {
+  for (const Crossing& c : crossings_) {
+    if (c.face_planes[1] == kNoPlane) throw std::logic_error("exact_cell: cut edge seen by one face only");
+    const std::vector<std::uint32_t>& sa = vertices_[c.a].support;
+    const std::vector<std::uint32_t>& sb = vertices_[c.b].support;
+    std::vector<std::uint32_t> common;
+    std::set_intersection(sa.begin(), sa.end(), sb.begin(), sb.end(), std::back_inserter(common));
+    vertices_.push_back(planes_->vertex_on({c.face_planes[0], c.face_planes[1], id}, sorted_union(common, id)));
+  }
+}
+
+ConvexCell::Clip ConvexCell::clip(std::uint32_t id) {
+  side_.assign(vertices_.size(), 1);
+  std::vector<bool> used(vertices_.size(), false);
+  for (const CellFace& f : faces_)
+    for (std::uint32_t v : f.vertices) used[v] = true;
+  bool any_pos = false, any_neg = false;
+  for (std::uint32_t v = 0; v < vertices_.size(); ++v) {
+    if (!used[v]) continue;
+    side_[v] = planes_->side(id, vertices_[v]);
+    any_pos |= side_[v] > 0;
+    any_neg |= side_[v] < 0;
+  }
+  if (!any_neg) {
+    if (!any_pos) throw std::logic_error("exact_cell: a full-dimensional cell lies in a plane");
+    faces_.clear();
+    return Clip::Emptied;
+  }
+  for (std::uint32_t v = 0; v < vertices_.size(); ++v)
+    if (used[v] && side_[v] == 0) vertices_[v].support = sorted_union(vertices_[v].support, id);
+  if (!any_pos) {
+    for (CellFace& f : faces_) {
+      const bool in_plane = std::all_of(f.vertices.begin(), f.vertices.end(), [&](std::uint32_t v) { return side_[v] == 0; });
+      if (in_plane) f.planes.push_back(id);
+    }
+    return Clip::Untouched;
+  }
+  crossings_.clear();
+  const auto first_new = static_cast<std::uint32_t>(vertices_.size());
+  auto on_plane = [&](std::uint32_t v) { return v >= first_new || side_[v] == 0; };
+  std::vector<CellFace> kept;
+  std::map<std::uint32_t, std::uint32_t> cap_next;  // cap edge u -> w
+  for (CellFace& f : faces_) {
+    CellFace out;
+    const std::size_t n = f.vertices.size();
+    for (std::size_t k = 0; k < n; ++k) {
+      const std::uint32_t a = f.vertices[k], b = f.vertices[(k + 1) % n];
+      if (side_[a] <= 0) out.vertices.push_back(a);
+      if (side_[a] * side_[b] < 0) out.vertices.push_back(crossing_vertex(a, b, f.planes[0]));
+    }
+    if (out.vertices.size() < 3) continue;
+    const std::size_t m = out.vertices.size();
+    for (std::size_t k = 0; k < m; ++k) {
+      const std::uint32_t u = out.vertices[k], w = out.vertices[(k + 1) % m];
+      if (on_plane(u) && on_plane(w)) cap_next[w] = u;  // the cap runs the shared edge backwards
+    }
+    out.planes = std::move(f.planes);
+    kept.push_back(std::move(out));
+  }
+  finish_crossings(id);
+  CellFace cap;
+  cap.planes = {id};
+  if (cap_next.size() < 3) throw std::logic_error("exact_cell: degenerate cap");
+  std::uint32_t u = cap_next.begin()->first;
+  for (std::size_t guard = 0; guard <= cap_next.size(); ++guard) {
+    cap.vertices.push_back(u);
+    auto it = cap_next.find(u);
+    if (it == cap_next.end()) throw std::logic_error("exact_cell: open cap chain");
+    u = it->second;
+    if (u == cap.vertices.front()) break;
+  }
+  if (cap.vertices.size() != cap_next.size()) throw std::logic_error("exact_cell: cap is not one cycle");
+  kept.push_back(std::move(cap));
+  faces_ = std::move(kept);
+  return Clip::Cut;
+}
+
+}  // namespace grassfire
