@@ -57,7 +57,7 @@ bool on_segment(const Point2& q, const Point2& a, const Point2& b, OrientationSt
 
 // Contribution of the edge a -> b to the winding number of q, by the crossing rule on the
 // ray from q towards +x with half-open vertical ranges (a vertex on the ray's line counts
-// as lying above it): +1 for an upward edge crossing the ray, -1 downward, 0 otherwise.
+// as lying below it): +1 for an upward edge crossing the ray, -1 downward, 0 otherwise.
 // Contract: q is not on the closed segment ab.
 int winding_step(const Point2& q, const Point2& a, const Point2& b, OrientationStats* stats = nullptr);
 

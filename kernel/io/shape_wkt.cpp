@@ -19,6 +19,8 @@ class WktReader {
   Shape2 read() {
     Shape2 shape;
     shape.name = source_;
+    skip_space();
+    const Position start = position();
     const std::string type = upper(expect_word("a geometry type (POLYGON)"));
     if (type == "POLYGON") {
       expect_2d("POLYGON");
@@ -33,7 +35,7 @@ class WktReader {
              "give each polygon its own file");
       expect(')');
     } else {
-      fail("expected POLYGON or MULTIPOLYGON, found '" + type + "'");
+      fail_at(start, "expected POLYGON or MULTIPOLYGON, found '" + type + "'");
     }
     skip_space();
     if (peek() == ';') advance();
@@ -72,26 +74,25 @@ class WktReader {
   void expect_2d(const std::string& type) {
     skip_space();
     if (peek() == '(') return;
+    const Position start = position();
     const std::string word = upper(expect_word("'('"));
-    if (word == "EMPTY") fail(type + " EMPTY: the shape has no rings (empty input)");
-    if (word == "Z" || word == "M" || word == "ZM") fail(type + " " + word + ": only 2D coordinates are supported");
-    fail("expected '(' after " + type + ", found '" + word + "'");
+    if (word == "EMPTY") fail_at(start, type + " EMPTY: the shape has no rings (empty input)");
+    if (word == "Z" || word == "M" || word == "ZM")
+      fail_at(start, type + " " + word + ": only 2D coordinates are supported");
+    fail_at(start, "expected '(' after " + type + ", found '" + word + "'");
   }
 
   double number(const std::string& what) {
     skip_space();
-    const std::size_t line = line_, column = column_;
+    const Position start = position();
     const std::string word = expect_word("a number (" + what + ")");
     const char* first = word.data() + (word[0] == '+' ? 1 : 0);
     const char* last = word.data() + word.size();
     double value = 0.0;
     const std::from_chars_result r = std::from_chars(first, last, value);
-    auto fail_at = [&](const std::string& problem) {
-      throw ShapeFormatError(source_ + ":" + std::to_string(line) + ":" + std::to_string(column) + ": " + problem);
-    };
-    if (r.ec == std::errc::result_out_of_range) fail_at(what + " '" + word + "' is out of the range of doubles");
-    if (r.ec != std::errc() || r.ptr != last) fail_at("expected a number (" + what + "), found '" + word + "'");
-    if (!std::isfinite(value)) fail_at(what + " is not a finite number ('" + word + "')");
+    if (r.ec == std::errc::result_out_of_range) fail_at(start, what + " '" + word + "' is out of the range of doubles");
+    if (r.ec != std::errc() || r.ptr != last) fail_at(start, "expected a number (" + what + "), found '" + word + "'");
+    if (!std::isfinite(value)) fail_at(start, what + " is not a finite number ('" + word + "')");
     return value;
   }
 
@@ -137,9 +138,14 @@ class WktReader {
     for (char& c : s) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
     return s;
   }
-  [[noreturn]] void fail(const std::string& problem) const {
-    throw ShapeFormatError(source_ + ":" + std::to_string(line_) + ":" + std::to_string(column_) + ": " + problem);
+  struct Position {
+    std::size_t line, column;
+  };
+  Position position() const { return {line_, column_}; }
+  [[noreturn]] void fail_at(const Position& at, const std::string& problem) const {
+    throw ShapeFormatError(source_ + ":" + std::to_string(at.line) + ":" + std::to_string(at.column) + ": " + problem);
   }
+  [[noreturn]] void fail(const std::string& problem) const { fail_at(position(), problem); }
 
   const std::string& text_;
   const std::string& source_;
