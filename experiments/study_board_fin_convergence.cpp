@@ -1,0 +1,152 @@
+// study_board_fin_convergence -- the discrete baseline against the closed form on the board
+// and fin (4.1.2, 4.2.1; DESIGN.md 5, reference case 1) as the Steiner spacing h halves.
+//
+// For each h: max, mean and min of BT_discrete - BT over the graph points in the region
+// |x| <= 7, y <= 7, z <= 7 (well inside the truncation at E = 10, where the closed form is
+// exact: BT <= 10 there), and the kink: where along N the back side's arrival overtakes the
+// fin's (the exact kink is t = 2 + sqrt 2 from c, i.e. (2 + sqrt2, 2 + sqrt2, 0)).
+// Writes CSV to stdout and to OUT/board_fin_convergence.csv, and a log-log plot to
+// OUT/board_fin_convergence.svg. Usage: study_board_fin_convergence [OUT] [--quick]
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <iostream>
+#include <sstream>
+#include <string>
+
+#include "burn3/burn3_reference.h"
+#include "burn3/junction_arrivals.h"
+#include "complex3/synthetic_complexes.h"
+#include "io/render3d.h"
+
+using namespace grassfire;
+
+namespace {
+
+struct Row {
+  double h = 0, seconds = 0, max_error = 0, mean_error = 0, min_error = 0, kink_t = NAN;
+  std::uint64_t steiner = 0, points = 0, kinks = 0;
+};
+
+enum Side { kBack = 0, kFront = 1, kFin = 2 };
+
+int side_of(const MedialComplex& mc, std::uint32_t t) {
+  Vec3d c{0, 0, 0};
+  for (std::uint32_t v : mc.triangle(t).v)
+    for (int i = 0; i < 3; ++i) c[i] += mc.vertex(v).approx[i] / 3;
+  if (c[2] > 0) return kFin;
+  return c[1] < c[0] ? kBack : kFront;
+}
+
+double log_pos(double v, double lo, double hi, double a, double b) {
+  return a + (std::log(v) - std::log(lo)) / (std::log(hi) - std::log(lo)) * (b - a);
+}
+
+void plot(const std::vector<Row>& rows, const std::string& path) {
+  SvgCanvas c(640, 440);
+  const double x0 = 70, x1 = 600, y0 = 380, y1 = 40;
+  double lo = 1e9, hi = 0;
+  for (const Row& r : rows)
+    for (double v : {r.max_error, r.mean_error, std::abs(r.kink_t - (2 + std::sqrt(2.0)))})
+      if (v > 0 && std::isfinite(v)) lo = std::min(lo, v), hi = std::max(hi, v);
+  lo = std::pow(10, std::floor(std::log10(lo))), hi = std::pow(10, std::ceil(std::log10(hi)));
+  const double hlo = rows.back().h / 1.5, hhi = rows.front().h * 1.5;
+  c.polyline({{x0, y1}, {x0, y0}, {x1, y0}}, {0, 0, 0}, 1.2);
+  for (double d = lo; d <= hi * 1.01; d *= 10) {
+    const double y = log_pos(d, lo, hi, y0, y1);
+    c.polyline({{x0, y}, {x1, y}}, {0.85, 0.85, 0.85}, 0.6);
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "1e%d", static_cast<int>(std::lround(std::log10(d))));
+    c.text({x0 - 8, y + 4}, buf, 11, "end");
+  }
+  for (const Row& r : rows) {
+    const double x = log_pos(r.h, hlo, hhi, x0, x1);
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "1/%g", 1 / r.h);
+    c.text({x, y0 + 18}, buf, 11, "middle");
+  }
+  const struct {
+    const char* name;
+    Rgb color;
+    double Row::*field;
+  } series[] = {{"max error", {0.8, 0.1, 0.1}, &Row::max_error}, {"mean error", {0.1, 0.3, 0.8}, &Row::mean_error}};
+  int legend = 0;
+  for (const auto& s : series) {
+    std::vector<Point2d> pts;
+    for (const Row& r : rows) pts.push_back({log_pos(r.h, hlo, hhi, x0, x1), log_pos(r.*(s.field), lo, hi, y0, y1)});
+    c.polyline(pts, s.color, 2);
+    for (const Point2d& p : pts) c.circle(p, 3, s.color, s.color, 0);
+    c.text({x0 + 20, y1 + 16 + 16.0 * legend}, s.name, 12, "start", s.color);
+    ++legend;
+  }
+  std::vector<Point2d> kink;
+  for (const Row& r : rows) {
+    const double e = std::abs(r.kink_t - (2 + std::sqrt(2.0)));
+    if (e > 0 && std::isfinite(e)) kink.push_back({log_pos(r.h, hlo, hhi, x0, x1), log_pos(e, lo, hi, y0, y1)});
+  }
+  c.polyline(kink, {0.1, 0.6, 0.2}, 2, "6,4");
+  c.text({x0 + 20, y1 + 16 + 16.0 * legend}, "|kink t - (2 + sqrt 2)|", 12, "start", {0.1, 0.6, 0.2});
+  // Reference slope 1.
+  c.polyline({{log_pos(rows.front().h, hlo, hhi, x0, x1), log_pos(rows.front().max_error, lo, hi, y0, y1) - 20},
+              {log_pos(rows.back().h, hlo, hhi, x0, x1),
+               log_pos(rows.front().max_error * rows.back().h / rows.front().h, lo, hi, y0, y1) - 20}},
+             {0.5, 0.5, 0.5}, 1, "2,3");
+  c.text({x1, y0 - 8}, "slope 1 (dotted)", 11, "end", {0.4, 0.4, 0.4});
+  c.text({(x0 + x1) / 2, y0 + 36}, "Steiner spacing h", 13, "middle");
+  c.text({(x0 + x1) / 2, 22}, "Board and fin: discrete BT vs closed form (E = 10, region |x|, y, z <= 7)", 13, "middle");
+  c.save(path);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  std::string out = ".";
+  bool quick = false;
+  for (int i = 1; i < argc; ++i) {
+    const std::string a = argv[i];
+    if (a == "--quick") quick = true;
+    else out = a;
+  }
+  const MedialComplex mc(board_fin({10, 1}));
+  mc.validate();
+  const std::uint32_t c = [&] {
+    for (std::uint32_t v = 0; v < mc.vertex_count(); ++v)
+      if (mc.vertex(v).exact == ExactPoint3{1, 1, 0}) return v;
+    throw std::logic_error("no corner c");
+  }();
+  const std::vector<std::uint32_t> n_chain = singular_curve_from(mc, c);
+  auto inside = [](const Vec3d& p) { return std::abs(p[0]) <= 7 && p[1] <= 7 && p[2] <= 7; };
+  std::vector<Row> rows;
+  const int levels = quick ? 4 : 7;
+  for (int k = 0; k < levels; ++k) {
+    const double h = 0.5 / std::pow(2.0, k);
+    const DiscreteBurning d = burn_discrete(mc, {h});
+    const ErrorSummary e = summarize_error(mc, d, board_fin_burning_time, inside);
+    const auto along = arrivals_along_curve(mc, d, c, n_chain, [&](std::uint32_t t) { return side_of(mc, t); });
+    const std::vector<double> kinks = kinks_along_curve(along, kBack, kFin);
+    Row r;
+    r.h = h, r.seconds = d.stats.seconds, r.steiner = d.stats.steiner_points, r.points = e.points;
+    r.max_error = e.max_error, r.mean_error = e.mean_error, r.min_error = e.min_error;
+    r.kinks = kinks.size();
+    if (!kinks.empty()) r.kink_t = kinks.front();
+    rows.push_back(r);
+  }
+  std::ostringstream csv;
+  csv << "h,steiner_points,seconds,points_compared,max_error,mean_error,min_error,max_error_ratio,kink_count,kink_t,"
+         "kink_x,kink_error\n";
+  const double t_exact = 2 + std::sqrt(2.0);
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    const Row& r = rows[i];
+    char buf[512];
+    std::snprintf(buf, sizeof buf, "%.6g,%llu,%.4f,%llu,%.6e,%.6e,%.3e,%.3f,%llu,%.6f,%.6f,%.3e\n", r.h,
+                  static_cast<unsigned long long>(r.steiner), r.seconds, static_cast<unsigned long long>(r.points),
+                  r.max_error, r.mean_error, r.min_error, i == 0 ? NAN : rows[i - 1].max_error / r.max_error,
+                  static_cast<unsigned long long>(r.kinks), r.kink_t, 1 + r.kink_t / std::sqrt(2.0),
+                  std::abs(r.kink_t - t_exact));
+    csv << buf;
+  }
+  std::cout << csv.str();
+  std::ofstream(out + "/board_fin_convergence.csv") << csv.str();
+  plot(rows, out + "/board_fin_convergence.svg");
+  return 0;
+}
