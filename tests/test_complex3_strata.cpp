@@ -48,7 +48,7 @@ TEST_CASE("book of k pages: one singular spine, k sheets, k sectors on the spine
     CHECK(mc.vertex(mid).kind == VertexKind::SingularCurve);
     CHECK(count_sectors(mc, mid) == static_cast<std::size_t>(k));
     CHECK_FALSE(mc.is_border_point(mid));
-    // The spine ends: a star of k pages, contractible: border points igniting at f = R = 0.
+    // The spine ends: a star of k pages, no cycle: border points igniting at f = R = 0.
     const std::uint32_t end = vertex_at(mc, 0, 0, 0);
     CHECK(mc.vertex(end).kind == VertexKind::SingularPoint);
     CHECK(mc.is_border_point(end));
@@ -82,7 +82,7 @@ TEST_CASE("board and fin: strata, sheets, the corner c and the junction N", "[co
   CHECK(mc.count(EdgeStratum::Singular) == 5);  // N from s = 1 to 6
   CHECK(mc.count(EdgeStratum::Dangling) == 0);
   const std::uint32_t c = vertex_at(mc, 1, 1, 0);
-  // c: the board's fan is a loop at N and the fin's quarter a pendant arc: not contractible.
+  // c: the board's fan is a loop at N and the fin's quarter a pendant arc: a cycle.
   CHECK(mc.vertex(c).kind == VertexKind::SingularPoint);
   CHECK_FALSE(mc.is_border_point(c));
   CHECK(count_sectors(mc, c) == 2);
@@ -127,16 +127,17 @@ TEST_CASE("closed surfaces: no border, every vertex interior", "[complex3]") {
   CHECK(flap.sheets().size() == 2);
 }
 
-TEST_CASE("link rule: remaining link contractible", "[complex3]") {
+TEST_CASE("link rule: no cycle and at most one segment direction left", "[complex3]") {
   // Edge interiors: border burns at once, manifold after one arc, singular after k - 1.
-  CHECK(MedialComplex::remaining_edge_link_contractible(1, false, false, 0));
-  CHECK_FALSE(MedialComplex::remaining_edge_link_contractible(2, false, false, 0));
-  CHECK(MedialComplex::remaining_edge_link_contractible(2, false, false, 1));
-  CHECK_FALSE(MedialComplex::remaining_edge_link_contractible(4, false, false, 2));
-  CHECK(MedialComplex::remaining_edge_link_contractible(4, false, false, 3));
-  CHECK(MedialComplex::remaining_edge_link_contractible(4, true, false, 0));
-  CHECK_FALSE(MedialComplex::remaining_edge_link_contractible(0, false, false, 0));
-  CHECK(MedialComplex::remaining_edge_link_contractible(0, false, true, 0));
+  CHECK(MedialComplex::edge_link_burns(1, false, false, 0));
+  CHECK_FALSE(MedialComplex::edge_link_burns(2, false, false, 0));
+  CHECK(MedialComplex::edge_link_burns(2, false, false, 1));
+  CHECK_FALSE(MedialComplex::edge_link_burns(4, false, false, 2));
+  CHECK(MedialComplex::edge_link_burns(4, false, false, 3));
+  CHECK(MedialComplex::edge_link_burns(4, false, false, 4));  // monotone (Lemma 2)
+  CHECK(MedialComplex::edge_link_burns(4, true, false, 0));
+  CHECK_FALSE(MedialComplex::edge_link_burns(0, false, false, 0));
+  CHECK(MedialComplex::edge_link_burns(0, false, true, 0));
   // A three-segment junction burns like a 2D node: after two arrivals.
   ComplexBuilder b("tripod");
   const auto o = b.vertex({0, 0, 0});
@@ -144,8 +145,9 @@ TEST_CASE("link rule: remaining link contractible", "[complex3]") {
   const MedialComplex mc = built(b.raw());
   CHECK(mc.vertex(o).kind == VertexKind::SingularPoint);
   CHECK(mc.count(VertexKind::SegmentEnd) == 3);
-  CHECK_FALSE(mc.remaining_link_contractible(o, {true, false, false}));
-  CHECK(mc.remaining_link_contractible(o, {true, false, true}));
+  CHECK_FALSE(mc.link_burns(o, {true, false, false}));
+  CHECK(mc.link_burns(o, {true, false, true}));
+  CHECK(mc.link_burns(o, {true, true, true}));
 }
 
 TEST_CASE("malformed raw complexes are rejected with the first violation", "[complex3]") {

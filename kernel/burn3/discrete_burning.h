@@ -17,13 +17,13 @@
 //    direction of that edge (a pole if the edge is singular or dangling, else the sector
 //    the edge lies in). Arrivals are processed in time order (Dijkstra).
 //  * x burns at the first arrival after which its link, with all arrived elements removed,
-//    is empty or contractible (MedialComplex::remaining_link_contractible). On a singular
-//    curve with k sheets that is the (k-1)-th sector arrival or the first arrival along
-//    the curve; in a manifold region, the first arrival. A border point (contractible
-//    link) also burns at f(x): BT = min(f, first arrival). Each cycle of the link is a
-//    disk type of Definition 8, so "no cycle left" is "every disk type has a burning path";
-//    "connected" adds the 2D rule (3.3.1) for 1-dimensional parts (a three-segment
-//    junction burns at its second arrival).
+//    has no cycle and at most one segment direction left (MedialComplex::link_burns). On a
+//    singular curve with k sheets that is the (k-1)-th sector arrival or the first arrival
+//    along the curve; in a manifold region, the first arrival. A border point (where the
+//    condition holds before any arrival) also burns at f(x): BT = min(f, first arrival).
+//    Each cycle of the link is a disk type of Definition 8, so "no cycle left" is "every
+//    disk type has a burning path"; the segment clause is the 2D rule (3.3.1) for
+//    1-dimensional parts (a three-segment junction burns at its second arrival).
 //  * When x burns at time T it emits T + |x - y| to every graph neighbour y, through every
 //    element (Definition 9 admits any non-crossing path ending at a burned point, whichever
 //    sector it leaves into; fire re-entering an arrived sector cannot beat that sector's

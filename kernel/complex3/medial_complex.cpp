@@ -288,7 +288,7 @@ void MedialComplex::classify_vertices() {
   border_point_.assign(vertices_.size(), false);
   for (std::uint32_t v = 0; v < vertices_.size(); ++v) {
     vertices_[v].kind = classify_link(v);
-    border_point_[v] = remaining_link_contractible(v, std::vector<bool>(link_elements_[v].size(), false));
+    border_point_[v] = link_burns(v, std::vector<bool>(link_elements_[v].size(), false));
   }
 }
 
@@ -311,46 +311,44 @@ VertexKind MedialComplex::classify_link(std::uint32_t v) const {
   return VertexKind::SingularPoint;
 }
 
-bool MedialComplex::remaining_link_contractible(std::uint32_t v, const std::vector<bool>& arrived) const {
+bool MedialComplex::link_burns(std::uint32_t v, const std::vector<bool>& arrived) const {
   const auto& elements = link_elements_[v];
-  // Union-find over the surviving poles (local indices); sectors join their pole ends.
+  // Union-find over the surviving poles (local indices); a surviving sector whose two ends
+  // are surviving poles joins them, and closes a cycle when they are already joined.
   std::vector<std::uint32_t> parent(elements.size());
   std::iota(parent.begin(), parent.end(), 0u);
   auto find = [&](std::uint32_t x) {
     while (parent[x] != x) x = parent[x] = parent[parent[x]];
     return x;
   };
-  std::size_t components = 0;
-  for (std::size_t i = 0; i < elements.size(); ++i)
-    if (elements[i].is_pole && !arrived[i]) ++components;
+  std::size_t segment_directions = 0;
   for (std::size_t i = 0; i < elements.size(); ++i) {
-    if (elements[i].is_pole || arrived[i]) continue;
+    if (arrived[i]) continue;
+    if (elements[i].is_pole) {
+      segment_directions += edges_[elements[i].id].stratum == EdgeStratum::Dangling ? 1 : 0;
+      continue;
+    }
     const Sector& s = sectors_[elements[i].id];
     if (s.closed) return false;  // a whole circle survives
     std::array<std::uint32_t, 2> alive{kNoIndex, kNoIndex};
     int n_alive = 0;
     for (std::uint32_t e : s.ends) {
-      if (!is_pole(e)) continue;
+      if (!is_pole(e)) continue;  // a free end (border edge)
       const std::uint32_t local = edge_end_element_[2 * e + (edges_[e].v[0] == v ? 0 : 1)];
       if (!arrived[local]) alive[n_alive++] = local;
     }
-    if (n_alive == 0) ++components;  // an arc whose ends are free or gone: contractible piece
-    if (n_alive < 2) continue;       // a pendant arc changes nothing
+    if (n_alive < 2) continue;  // a pendant or free arc closes no cycle
     const std::uint32_t r0 = find(alive[0]), r1 = find(alive[1]);
-    if (r0 == r1) return false;  // closes a cycle (a loop when both ends are one pole)
+    if (r0 == r1) return false;  // a cycle (a loop when both ends are one pole)
     parent[r0] = r1;
-    --components;
   }
-  return components <= 1;
+  return segment_directions <= 1;
 }
 
-bool MedialComplex::remaining_edge_link_contractible(std::size_t triangle_count, bool pole0, bool pole1,
-                                                     std::size_t arrived_triangles) {
+bool MedialComplex::edge_link_burns(std::size_t triangle_count, bool pole0, bool pole1, std::size_t arrived_triangles) {
   const std::size_t alive_arcs = triangle_count - arrived_triangles;
-  const int alive_poles = (pole0 ? 0 : 1) + (pole1 ? 0 : 1);
-  if (alive_poles == 2) return alive_arcs == 1;  // two poles joined by exactly one arc
-  if (alive_poles == 1) return true;             // a star of arcs at one pole
-  return alive_arcs <= 1;                        // separate open arcs
+  if (triangle_count == 0) return pole0 || pole1;   // a segment: like a 2D edge point
+  return pole0 || pole1 || alive_arcs <= 1;         // a cycle needs both poles and two arcs
 }
 
 void MedialComplex::apply_ignition(const RawComplex& raw) {

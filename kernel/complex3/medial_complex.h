@@ -15,10 +15,14 @@
 //  - a sector is a maximal fan of incident triangles joined across non-pole edges; its two
 //    ends are poles or free ends (border edges), or it is closed (a full circle without
 //    poles, the neighbourhood of an interior point);
-//  - a border point is a point whose link is contractible (a non-empty tree, or empty for
-//    an isolated vertex): it ignites at f. The corner c of the board and fin (DESIGN.md 5)
-//    has a circle in its link and is not a border point, as Fig. 4.4 requires.
-// The burning rule (burn3/discrete_burning.h) uses `remaining_link_contractible`.
+//  - the burning condition at a point (DESIGN.md 5, Definition 9): with the arrived link
+//    elements removed, the link contains no cycle (every disk type of Definition 8 is a
+//    cycle of the link and must have received fire), and at most one segment direction is
+//    left (the 2D rule of 3.3.1 for 1-dimensional parts). The condition is monotone: more
+//    arrivals never falsify it (Lemma 2).
+//  - a border point is a point at which the condition already holds with nothing arrived:
+//    it ignites at f. The corner c of the board and fin (DESIGN.md 5) has a circle in its
+//    link and is not a border point, as Fig. 4.4 requires.
 //
 // Exactness: every combinatorial decision (degeneracy, duplicates, angular order around an
 // edge, coplanarity of sheets) is an exact predicate on rational coordinates (gmpxx). The
@@ -176,16 +180,14 @@ class MedialComplex {
   // the pole itself, or the sector that contains (or ends at) e.
   std::uint32_t edge_end_element(std::uint32_t e, int j) const { return edge_end_element_[2 * e + j]; }
 
-  // The burning rule's topological test (DESIGN.md 5): with the link elements flagged in
-  // `arrived` removed, is the rest of the link of v empty or contractible (connected and
-  // without cycle)? A removed pole takes its link node away; a removed sector its arcs and
-  // its free ends. `arrived.size()` must equal link_elements(v).size().
-  bool remaining_link_contractible(std::uint32_t v, const std::vector<bool>& arrived) const;
-  // The same test at an interior point of edge e, whose link is two poles (the directions
-  // along e) joined by one arc per incident triangle: arrived_poles[j] for the direction of
-  // e.v[j], arrived_triangles counting arrived arcs.
-  static bool remaining_edge_link_contractible(std::size_t triangle_count, bool pole0, bool pole1,
-                                               std::size_t arrived_triangles);
+  // The burning condition at vertex v (see above) when the link elements flagged in
+  // `arrived` have received fire: a removed pole takes its link node (and the arcs at it)
+  // away, a removed sector its arcs. `arrived.size()` must equal link_elements(v).size().
+  bool link_burns(std::uint32_t v, const std::vector<bool>& arrived) const;
+  // The same at an interior point of an edge with `triangle_count` triangles, whose link is
+  // two poles (the directions along the edge) joined by one arc per triangle; pole0/pole1:
+  // fire arrived along the edge from the side of v[0] / v[1].
+  static bool edge_link_burns(std::size_t triangle_count, bool pole0, bool pole1, std::size_t arrived_triangles);
 
   bool is_border_point(std::uint32_t v) const { return border_point_[v]; }
   bool is_singular_point(std::uint32_t v) const { return vertices_[v].kind == VertexKind::SingularPoint; }

@@ -233,9 +233,54 @@ RawComplex tetrahedron_with_flap() {
   return r;
 }
 
+RawComplex box_medial_axis(long a, long b, long c, int n) {
+  if (!(a >= b && b > c && c > 0) || n < 1) throw std::invalid_argument("box_medial_axis: a >= b > c > 0, n >= 1");
+  ComplexBuilder bld("box-medial-axis(" + std::to_string(a) + "," + std::to_string(b) + "," + std::to_string(c) + ")");
+  struct Corner {
+    ExactPoint3 p;
+    mpq_class r;
+  };
+  auto P = [&](int sx, int sy) { return Corner{point(sx * (a - c), sy * (b - c), 0), c}; };
+  auto Q = [&](int sx, int sy, int sz) { return Corner{point(sx * a, sy * b, sz * c), 0}; };
+  auto at = [&](const Corner& p, const Corner& q, const Corner& r, const Corner& s, int i, int j) {
+    // Bilinear point of the planar quad p q r s at (i/n, j/n), with R interpolated the same
+    // way (R is affine on the quad, so this is R there).
+    const mpq_class u = make_rational(i, n), v = make_rational(j, n);
+    const mpq_class wp = (1 - u) * (1 - v), wq = u * (1 - v), wr = u * v, ws = (1 - u) * v;
+    const ExactPoint3 x = wp * p.p + wq * q.p + wr * r.p + ws * s.p;
+    const mpq_class rad = wp * p.r + wq * q.r + wr * r.r + ws * s.r;
+    return bld.vertex(x, rad * rad);
+  };
+  auto quad = [&](const Corner& p, const Corner& q, const Corner& r, const Corner& s) {
+    for (int i = 0; i < n; ++i)
+      for (int j = 0; j < n; ++j)
+        bld.quad(at(p, q, r, s, i, j), at(p, q, r, s, i + 1, j), at(p, q, r, s, i + 1, j + 1), at(p, q, r, s, i, j + 1));
+  };
+  auto tri = [&](const Corner& p, const Corner& q, const Corner& r) {
+    // A triangle is the quad p q r r degenerated at r: use barycentric rows instead.
+    auto bary = [&](int i, int j) {
+      const mpq_class u = make_rational(i, n), v = make_rational(j, n), w = 1 - u - v;
+      return bld.vertex(w * p.p + u * q.p + v * r.p, (w * p.r + u * q.r + v * r.r) * (w * p.r + u * q.r + v * r.r));
+    };
+    for (int i = 0; i < n; ++i)
+      for (int j = 0; i + j < n; ++j) {
+        bld.triangle(bary(i, j), bary(i + 1, j), bary(i, j + 1));
+        if (i + j + 2 <= n) bld.triangle(bary(i + 1, j), bary(i + 1, j + 1), bary(i, j + 1));
+      }
+  };
+  quad(P(-1, -1), P(1, -1), P(1, 1), P(-1, 1));
+  for (int sz : {1, -1}) {
+    for (int sy : {1, -1}) quad(Q(-1, sy, sz), Q(1, sy, sz), P(1, sy), P(-1, sy));
+    for (int sx : {1, -1}) quad(Q(sx, -1, sz), Q(sx, 1, sz), P(sx, 1), P(sx, -1));
+  }
+  for (int sx : {1, -1})
+    for (int sy : {1, -1}) tri(Q(sx, sy, 1), Q(sx, sy, -1), P(sx, sy));
+  return bld.take();
+}
+
 std::vector<std::string> synthetic_complex_names() {
   return {"board-fin", "board-cylinder", "book:K", "y-junction", "tetrahedron", "octahedron", "double-cone",
-          "tetrahedron-flap"};
+          "tetrahedron-flap", "box:A:B:C"};
 }
 
 RawComplex synthetic_complex(const std::string& name) {
@@ -255,6 +300,20 @@ RawComplex synthetic_complex(const std::string& name) {
     }
     if (o.pages < 1 || o.pages > 64) throw std::invalid_argument("synthetic complex '" + name + "': 1 <= K <= 64");
     return book(o);
+  }
+  if (name.rfind("box:", 0) == 0) {
+    long d[3];
+    std::size_t pos = 4;
+    for (int i = 0; i < 3; ++i) {
+      const std::size_t end = name.find(':', pos);
+      try {
+        d[i] = std::stol(name.substr(pos, end == std::string::npos ? std::string::npos : end - pos));
+      } catch (const std::exception&) {
+        throw std::invalid_argument("synthetic complex '" + name + "': expected box:A:B:C with integers A >= B > C > 0");
+      }
+      pos = end == std::string::npos ? name.size() : end + 1;
+    }
+    return box_medial_axis(d[0], d[1], d[2]);
   }
   std::string list;
   for (const auto& n : synthetic_complex_names()) list += (list.empty() ? "" : ", ") + n;

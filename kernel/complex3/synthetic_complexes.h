@@ -7,7 +7,7 @@
 //    0 <= z <= E}, junction N from c = (1, 1, 0) to (E, E, 0). B (y = 0) and F (s = 1)
 //    ignite at f = 0; the truncation borders never ignite (IgnitionRule::Never). Every
 //    optimal path of the infinite complex stays inside the box, and the truncation changes
-//    one thing only: the far end (E, E, 0) of N has a contractible link (a star of three
+//    one thing only: the far end (E, E, 0) of N has a link without cycle (a star of three
 //    sectors), so it burns at its first arrival, time E, and fire leaves it early along N.
 //    Hence the closed form (board_fin_burning_time) is exact wherever it is <= E.
 //  - board and hollow cylinder (Fig. 4.7): a square board with a "cylinder" standing on it;
@@ -82,11 +82,20 @@ RawComplex pinched_double_cone(int sides = 6);
 // the flap burns, the tetrahedron is the maximal closed subcomplex.
 RawComplex tetrahedron_with_flap();
 
+// The exact medial axis of the box [-a, a] x [-b, b] x [-c, c], a >= b > c > 0, with R:
+// the rectangle z = 0, |x| <= a - c, |y| <= b - c (R = c); eight trapezoids from its edges
+// to the box edges parallel to x and y (R = c - |z|); four triangles from its corners to
+// the vertical box edges (R = a - |x| = b - |y|). The rectangle's edges and the segments
+// from its corners to the box corners are singular (three sheets); the box edges are the
+// border, R = 0 there. Each piece is split into an n x n grid (R stays exact: it is affine
+// on every piece). A real medial axis with exact R for the checks.
+RawComplex box_medial_axis(long a, long b, long c, int subdivisions = 1);
+
 // A rational point of the unit circle near angle theta (rational parametrisation).
 std::array<mpq_class, 2> rational_unit_direction(double theta);
 
 // A synthetic complex by name: board-fin, board-cylinder, book:K, y-junction, tetrahedron,
-// octahedron, double-cone, tetrahedron-flap. Throws std::invalid_argument listing the names.
+// octahedron, double-cone, tetrahedron-flap, box:A:B:C (box_medial_axis). Throws std::invalid_argument listing the names.
 RawComplex synthetic_complex(const std::string& name);
 std::vector<std::string> synthetic_complex_names();
 

@@ -19,7 +19,8 @@ namespace {
 
 bool is_synthetic(const std::string& input) {
   for (const std::string& n : synthetic_complex_names())
-    if (input == n || (n == "book:K" && input.rfind("book:", 0) == 0)) return true;
+    if (input == n || (n == "book:K" && input.rfind("book:", 0) == 0) || (n == "box:A:B:C" && input.rfind("box:", 0) == 0))
+      return true;
   return false;
 }
 
