@@ -31,14 +31,11 @@ class Burner {
     out_.spacing = g_.spacing();
     out_.edge_first_steiner = g_.first_steiner();
     out_.stats.steiner_points = g_.steiner_total();
-    out_.vertex_slot.assign(nv_ + 1, 0);
-    for (std::uint32_t v = 0; v < nv_; ++v) out_.vertex_slot[v + 1] = out_.vertex_slot[v] + mc_.link_elements(v).size();
-    out_.edge_slot.assign(mc_.edge_count() + 1, out_.vertex_slot[nv_]);
-    for (std::uint32_t e = 0; e < mc_.edge_count(); ++e)
-      out_.edge_slot[e + 1] = out_.edge_slot[e] + g_.steiner_count(e) * (2 + mc_.edge_triangles(e).size());
+    out_.vertex_slot = g_.vertex_slots();
+    out_.edge_slot = g_.edge_slots();
     bt_.assign(g_.node_count(), DiscreteBurning::kInfinity);
-    out_.arrival_time.assign(out_.edge_slot.back(), DiscreteBurning::kInfinity);
-    done_.assign(out_.edge_slot.back(), 0);
+    out_.arrival_time.assign(g_.slot_total(), DiscreteBurning::kInfinity);
+    done_.assign(g_.slot_total(), 0);
   }
 
   void run() {
@@ -79,11 +76,7 @@ class Burner {
   }
 
  private:
-  std::uint64_t slot(std::uint32_t node, std::uint32_t local) const {
-    if (node < nv_) return out_.vertex_slot[node] + local;
-    const std::uint32_t e = g_.edge_of(node);
-    return out_.edge_slot[e] + (g_.index_on_edge(node) - 1) * (2 + mc_.edge_triangles(e).size()) + local;
-  }
+  std::uint64_t slot(std::uint32_t node, std::uint32_t local) const { return g_.slot(node, local); }
 
   bool condition(std::uint32_t node) const {
     if (node < nv_) {

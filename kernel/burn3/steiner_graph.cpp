@@ -20,6 +20,11 @@ SteinerGraph::SteinerGraph(const MedialComplex& mc, double h, std::uint64_t max_
   steiner_edge_.resize(first_steiner_.back());
   for (std::uint32_t e = 0; e < mc.edge_count(); ++e)
     for (std::uint64_t i = first_steiner_[e]; i < first_steiner_[e + 1]; ++i) steiner_edge_[i] = e;
+  vertex_slot_.assign(nv_ + 1, 0);
+  for (std::uint32_t v = 0; v < nv_; ++v) vertex_slot_[v + 1] = vertex_slot_[v] + mc.link_elements(v).size();
+  edge_slot_.assign(mc.edge_count() + 1, vertex_slot_[nv_]);
+  for (std::uint32_t e = 0; e < mc.edge_count(); ++e)
+    edge_slot_[e + 1] = edge_slot_[e] + steiner_count(e) * (2 + mc.edge_triangles(e).size());
   tri_edge_pos_.assign(3 * mc.triangle_count(), 0);
   for (std::uint32_t e = 0; e < mc.edge_count(); ++e) {
     const auto& tris = mc.edge_triangles(e);

@@ -51,6 +51,17 @@ class SteinerGraph {
   std::size_t slot_count(std::uint32_t node) const {
     return is_vertex(node) ? mc_.link_elements(node).size() : 2 + mc_.edge_triangles(edge_of(node)).size();
   }
+  // Global index of slot `local` of `node` in one array over all slots: vertex v owns
+  // [vertex_slot[v], vertex_slot[v + 1]); Steiner point i of edge e owns 2 + k slots from
+  // edge_slot[e] + (i - 1)(2 + k), k = edge_triangles(e).size().
+  std::uint64_t slot(std::uint32_t node, std::uint32_t local) const {
+    if (is_vertex(node)) return vertex_slot_[node] + local;
+    const std::uint32_t e = edge_of(node);
+    return edge_slot_[e] + (index_on_edge(node) - 1) * (2 + mc_.edge_triangles(e).size()) + local;
+  }
+  std::uint64_t slot_total() const { return edge_slot_.back(); }
+  const std::vector<std::uint64_t>& vertex_slots() const { return vertex_slot_; }
+  const std::vector<std::uint64_t>& edge_slots() const { return edge_slot_; }
 
   // Calls f(neighbour, slot at the neighbour, length) for every move from `node`.
   template <class F>
@@ -69,6 +80,7 @@ class SteinerGraph {
   std::vector<std::uint64_t> first_steiner_;  // per edge, size E + 1
   std::vector<std::uint32_t> steiner_edge_;
   std::vector<std::uint32_t> tri_edge_pos_;   // position of triangle t in edge_triangles(t.e[c]), at 3 t + c
+  std::vector<std::uint64_t> vertex_slot_, edge_slot_;
 };
 
 template <class F>
