@@ -5,6 +5,54 @@
 
 namespace grassfire {
 
+namespace {
+constexpr long kRefinedBits = 128;
+}  // namespace
+
+// A 128-bit MPFR enclosure [lo, hi].
+struct BurnTimes::Refined {
+  mpfr_t lo, hi;
+  Refined() {
+    mpfr_init2(lo, kRefinedBits);
+    mpfr_init2(hi, kRefinedBits);
+  }
+  ~Refined() {
+    mpfr_clear(lo);
+    mpfr_clear(hi);
+  }
+  Refined(const Refined&) = delete;
+  Refined& operator=(const Refined&) = delete;
+};
+
+const BurnTimes::Refined& BurnTimes::refined(TimeId t) const {
+  // Walk up to the nearest memoised ancestor, then fill in downwards.
+  std::vector<TimeId> chain;
+  for (TimeId cur = t; cur != kNoTime && !refined_.count(cur); cur = records_[cur].pred) chain.push_back(cur);
+  for (auto it = chain.rbegin(); it != chain.rend(); ++it) {
+    const Record& r = records_[*it];
+    auto out = std::make_shared<Refined>();
+    if (r.pred == kNoTime) {
+      graph_->geometry().enclose_radius(r.ref, out->lo, out->hi);
+    } else {
+      Refined step;
+      graph_->geometry().enclose_length(r.ref, step.lo, step.hi);
+      const Refined& base = *refined_.at(r.pred);
+      mpfr_add(out->lo, base.lo, step.lo, MPFR_RNDD);
+      mpfr_add(out->hi, base.hi, step.hi, MPFR_RNDU);
+    }
+    refined_.emplace(*it, std::move(out));
+  }
+  return *refined_.at(t);
+}
+
+int BurnTimes::refined_sign(TimeId a, TimeId b) const {
+  const Refined& x = refined(a);
+  const Refined& y = refined(b);
+  if (mpfr_less_p(x.hi, y.lo)) return -1;
+  if (mpfr_less_p(y.hi, x.lo)) return 1;
+  return kUndecided;
+}
+
 TimeId BurnTimes::ignition(std::uint32_t leaf) {
   records_.push_back({graph_->node(leaf).radius, kNoTime, leaf, 0});
   return static_cast<TimeId>(records_.size() - 1);
@@ -83,6 +131,11 @@ int BurnTimes::compare(TimeId a, TimeId b) const {
   if (y.hi < x.lo) {
     ++stats_.filter_decided;
     return 1;
+  }
+  const int r = refined_sign(a, b);
+  if (r != kUndecided) {
+    ++stats_.mpfr_decided;
+    return r;
   }
   return sign(exact_difference(a, b), &stats_);
 }

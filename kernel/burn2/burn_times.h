@@ -1,17 +1,22 @@
 // burn_times.h -- burn times on a medial graph, kept as a DAG of exact expressions.
 //
 // Computes: certified comparisons of burn times. A burn time is either an ignition,
-// R(z) at a leaf z, or an advance, T + length(e) along an edge (3.3.1). Each record keeps
-// a certified double enclosure, so most comparisons are decided by the interval filter;
-// otherwise both times are expanded into ExactSums (R at the ignition leaf plus the edge
-// lengths along the chain), their common ancestor cancelled, and the sign of the
-// difference decided exactly (number/exact_sum.h).
+// R(z) at a leaf z, or an advance, T + length(e) along an edge (3.3.1). Three stages:
+// (1) every record keeps a certified double enclosure, which decides most comparisons;
+// (2) otherwise both times get 128-bit MPFR enclosures, computed along their chains from
+// the exact atoms and memoised per record, so a chain is refined at most once however
+// often it is compared (near-ties between long chains are common on almost symmetric
+// shapes); (3) otherwise both times are expanded into ExactSums (R at the ignition leaf
+// plus the edge lengths along the chain), their common part cancelled, and the sign of
+// the difference decided exactly (number/exact_sum.h).
 // Contract: the graph outlives this object; every edge id and node id is valid.
 // Complexity: O(1) to create a time; a comparison is O(1) when the filter decides, and
 // O(L) exact work for chains of length L otherwise.
 #pragma once
 
 #include <cstdint>
+#include <memory>
+#include <unordered_map>
 #include <vector>
 
 #include "burn2/graph_sum.h"
@@ -56,10 +61,15 @@ class BurnTimes {
   };
   // Exact a - b with the shared part of the two chains cancelled.
   ExactSum exact_difference(TimeId a, TimeId b) const;
+  // Stage 2: sign of a - b from memoised 128-bit enclosures, or kUndecided.
+  int refined_sign(TimeId a, TimeId b) const;
+  struct Refined;
+  const Refined& refined(TimeId t) const;
 
   const MedialGraph* graph_;
   std::vector<Record> records_;
   mutable NumberStats stats_;
+  mutable std::unordered_map<TimeId, std::shared_ptr<Refined>> refined_;
 };
 
 }  // namespace grassfire

@@ -51,6 +51,14 @@ class MedialGeometry {
   virtual ~MedialGeometry() = default;
   virtual ExactSum exact_radius(std::uint32_t node) const = 0;
   virtual ExactSum exact_length(std::uint32_t edge) const = 0;
+  // Enclosures [lo, hi] at the precision of lo and hi; by default from the exact values.
+  // Providers override them when they can enclose faster than they can build ExactSums.
+  virtual void enclose_radius(std::uint32_t node, mpfr_ptr lo, mpfr_ptr hi) const {
+    exact_radius(node).enclose(lo, hi);
+  }
+  virtual void enclose_length(std::uint32_t edge, mpfr_ptr lo, mpfr_ptr hi) const {
+    exact_length(edge).enclose(lo, hi);
+  }
   // The point at arc length s (0 <= s <= length) from end `from` along the edge, for
   // drawing and reporting; straight segments by default.
   virtual Point2 point_along(const MedialGraph& g, std::uint32_t edge, std::uint32_t from, double s) const;

@@ -1,0 +1,66 @@
+// shape_locator.h -- exact location of rational points and segments relative to a shape.
+//
+// Computes: whether a LazyPoint (an input double point or a circumcentre) lies strictly
+// inside, on the boundary of, or outside a polygon with holes; whether a segment between
+// two such points meets the boundary. Used to keep the Voronoi vertices inside the shape
+// and the Voronoi edges that do not leave it (2.1.2, 3.3.2).
+// Method: a uniform grid of about one cell per boundary edge; every cell has a reference
+// point, moved off the boundary and off every vertex's horizontal line, whose inside/
+// outside status is computed exactly by a sweep along its row (crossing parity). A query
+// point's status is its cell reference point's status, flipped by the number of boundary
+// edges registered in the cell that cross the segment from the query to the reference
+// point. Crossings are counted with exact orientations and the half-open rule (a vertex
+// on the segment's line counts as lying on its left), which is a consistent symbolic
+// perturbation of the segment, so the parity is right whenever the query point is not on
+// the boundary; boundary points are detected exactly first.
+// Contract: a validated Shape2 (shapes/shape2.h). Complexity: O(E + cells) to build; a
+// query costs the number of edges in its cell (O(1) for evenly spread boundaries).
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "geometry2/lazy_point.h"
+#include "shapes/shape2.h"
+
+namespace grassfire {
+
+enum class Location { Inside, Boundary, Outside };
+
+class ShapeLocator {
+ public:
+  explicit ShapeLocator(const Shape2& shape);
+
+  Location locate(const LazyPoint& p) const;
+  // True when the closed segment pq meets the shape boundary.
+  bool segment_meets_boundary(const LazyPoint& p, const LazyPoint& q) const;
+
+  const PredicateCounters& counters() const { return counters_; }
+  std::size_t edge_count() const { return edges_.size(); }
+
+ private:
+  struct Edge {
+    Point2 a, b;
+  };
+  struct Cell {
+    int ix, iy;
+  };
+  Cell cell_of(double x, double y) const;
+  std::uint32_t cell_index(int ix, int iy) const { return static_cast<std::uint32_t>(iy) * nx_ + ix; }
+  void register_edges();
+  void compute_reference_points();
+  bool on_edge(const LazyPoint& p, const Edge& e) const;
+  bool crosses(const LazyPoint& p, const LazyPoint& q, const Edge& e) const;
+  bool segment_meets_edge(const LazyPoint& p, const LazyPoint& q, const Edge& e) const;
+
+  std::vector<Edge> edges_;
+  double x0_ = 0, y0_ = 0, dx_ = 1, dy_ = 1;
+  int nx_ = 1, ny_ = 1;
+  std::vector<std::uint32_t> cell_start_;  // CSR: edges of cell k are cell_edges_[cell_start_[k] .. k+1)
+  std::vector<std::uint32_t> cell_edges_;
+  std::vector<Point2> reference_;          // per cell
+  std::vector<std::uint8_t> reference_inside_;
+  mutable PredicateCounters counters_;
+};
+
+}  // namespace grassfire

@@ -1,0 +1,206 @@
+// sampled_axis.cpp -- see sampled_axis.h. The only 2D translation unit with CGAL headers.
+#include "medial2/sampled_axis.h"
+
+#include <CGAL/Delaunay_triangulation_2.h>
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Triangulation_face_base_with_info_2.h>
+#include <CGAL/Triangulation_vertex_base_with_info_2.h>
+
+#include <chrono>
+#include <numeric>
+#include <stdexcept>
+#include <string>
+
+#include "geometry2/shape_locator.h"
+#include "medial2/sampled_geometry.h"
+
+namespace grassfire {
+
+namespace {
+
+using K = CGAL::Exact_predicates_inexact_constructions_kernel;
+using Vb = CGAL::Triangulation_vertex_base_with_info_2<std::uint32_t, K>;
+using Fb = CGAL::Triangulation_face_base_with_info_2<std::uint32_t, K>;
+using Tds = CGAL::Triangulation_data_structure_2<Vb, Fb>;
+using Delaunay = CGAL::Delaunay_triangulation_2<K, Tds>;
+constexpr std::uint32_t kNone = 0xffffffffu;
+
+struct UnionFind {
+  std::vector<std::uint32_t> parent;
+  explicit UnionFind(std::size_t n) : parent(n) { std::iota(parent.begin(), parent.end(), 0u); }
+  std::uint32_t find(std::uint32_t x) {
+    while (parent[x] != x) x = parent[x] = parent[parent[x]];
+    return x;
+  }
+  void unite(std::uint32_t a, std::uint32_t b) {
+    a = find(a);
+    b = find(b);
+    if (a != b) parent[std::max(a, b)] = std::min(a, b);
+  }
+};
+
+bool overlaps(const IntervalPoint2& a, const IntervalPoint2& b) {
+  return !(a.x.hi < b.x.lo || b.x.hi < a.x.lo || a.y.hi < b.y.lo || b.y.hi < a.y.lo);
+}
+
+Interval interval_distance(const IntervalPoint2& a, const IntervalPoint2& b) {
+  return sqrt(square(a.x - b.x) + square(a.y - b.y));
+}
+
+class SampledAxisBuilder {
+ public:
+  SampledAxisBuilder(const Shape2& shape, const std::vector<std::vector<Point2>>& samples) : shape_(shape) {
+    for (std::uint32_t r = 0; r < samples.size(); ++r) {
+      ring_start_.push_back(static_cast<std::uint32_t>(points_.size()));
+      for (const Point2& p : samples[r]) {
+        points_.push_back(p);
+        ring_of_.push_back(r);
+      }
+    }
+    ring_start_.push_back(static_cast<std::uint32_t>(points_.size()));
+  }
+
+  MedialGraph build(SampledAxisReport& report) {
+    const auto t0 = std::chrono::steady_clock::now();
+    triangulate();
+    const auto t1 = std::chrono::steady_clock::now();
+    number_faces();
+    merge_cocircular(report);
+    MedialGraph g = assemble(report);
+
+    const auto t2 = std::chrono::steady_clock::now();
+    report.samples = points_.size();
+    report.delaunay_triangles = faces_.size();
+    report.delaunay_seconds = std::chrono::duration<double>(t1 - t0).count();
+    report.axis_seconds = std::chrono::duration<double>(t2 - t1).count();
+    return g;
+  }
+
+ private:
+  void triangulate() {
+    std::vector<std::pair<K::Point_2, std::uint32_t>> input;
+    input.reserve(points_.size());
+    for (std::uint32_t i = 0; i < points_.size(); ++i) input.emplace_back(K::Point_2(points_[i].x, points_[i].y), i);
+    dt_.insert(input.begin(), input.end());
+    if (dt_.number_of_vertices() != points_.size())
+      throw std::invalid_argument(shape_.name + ": boundary samples are not pairwise distinct (" +
+                                  std::to_string(points_.size() - dt_.number_of_vertices()) + " duplicates)");
+    if (dt_.dimension() < 2) throw std::invalid_argument(shape_.name + ": boundary samples are collinear");
+  }
+
+  void number_faces() {
+    for (auto f = dt_.finite_faces_begin(); f != dt_.finite_faces_end(); ++f) {
+      f->info() = static_cast<std::uint32_t>(faces_.size());
+      const std::array<std::uint32_t, 3> t{f->vertex(0)->info(), f->vertex(1)->info(), f->vertex(2)->info()};
+      faces_.push_back(t);
+      const Circle circle = interval_circle(points_[t[0]], points_[t[1]], points_[t[2]]);
+      centers_.push_back(circle.center);
+      radii_.push_back(circle.radius);
+    }
+    for (auto f = dt_.all_faces_begin(); f != dt_.all_faces_end(); ++f)
+      if (dt_.is_infinite(f)) f->info() = kNone;
+  }
+
+  // Adjacent triangles with cocircular vertices share their circumcentre: one node.
+  void merge_cocircular(SampledAxisReport& report) {
+    groups_ = UnionFind(faces_.size());
+    const auto in_circle = dt_.geom_traits().side_of_oriented_circle_2_object();
+    for (auto e = dt_.finite_edges_begin(); e != dt_.finite_edges_end(); ++e) {
+      const auto f = e->first;
+      const auto g = f->neighbor(e->second);
+      if (f->info() == kNone || g->info() == kNone) continue;
+      if (!overlaps(centers_[f->info()], centers_[g->info()])) continue;
+      const auto opposite = g->vertex(g->index(f))->point();
+      if (in_circle(f->vertex(0)->point(), f->vertex(1)->point(), f->vertex(2)->point(), opposite) ==
+          CGAL::ON_ORIENTED_BOUNDARY) {
+        groups_.unite(f->info(), g->info());
+        ++report.merged_triangles;
+      }
+    }
+  }
+
+  bool consecutive_samples(std::uint32_t a, std::uint32_t b) const {
+    if (ring_of_[a] != ring_of_[b]) return false;
+    const std::uint32_t r = ring_of_[a], n = ring_start_[r + 1] - ring_start_[r];
+    const std::uint32_t i = a - ring_start_[r], j = b - ring_start_[r];
+    return (i + 1) % n == j || (j + 1) % n == i;
+  }
+
+  LazyPoint center_of(std::uint32_t face) const {
+    const auto& t = faces_[face];
+    return LazyPoint::circumcenter(points_[t[0]], points_[t[1]], points_[t[2]], centers_[face]);
+  }
+
+  MedialGraph assemble(SampledAxisReport& report) {
+    ShapeLocator locator(shape_);
+    std::vector<std::uint32_t> node_of(faces_.size(), kNone);
+    std::vector<MedialNode> nodes;
+    std::vector<std::array<std::uint32_t, 3>> node_triangle;
+    for (std::uint32_t f = 0; f < faces_.size(); ++f) {
+      if (groups_.find(f) != f) continue;
+      if (locator.locate(center_of(f)) != Location::Inside) continue;
+      node_of[f] = static_cast<std::uint32_t>(nodes.size());
+      const IntervalPoint2& c = centers_[f];
+      nodes.push_back({Point2{c.x.mid(), c.y.mid()}, radii_[f]});
+      node_triangle.push_back(faces_[f]);
+    }
+    std::vector<MedialEdge> edges;
+    std::vector<std::pair<std::uint32_t, std::uint32_t>> ends;
+    for (auto e = dt_.finite_edges_begin(); e != dt_.finite_edges_end(); ++e) {
+      const auto f = e->first;
+      const auto g = f->neighbor(e->second);
+      if (f->info() == kNone || g->info() == kNone) continue;
+      const std::uint32_t rf = groups_.find(f->info()), rg = groups_.find(g->info());
+      if (rf == rg || node_of[rf] == kNone || node_of[rg] == kNone) continue;
+      const std::uint32_t s = f->vertex(f->cw(e->second))->info(), t = f->vertex(f->ccw(e->second))->info();
+      if (consecutive_samples(s, t)) {
+        ++report.boundary_dual_edges;
+        continue;
+      }
+      if (locator.segment_meets_boundary(center_of(rf), center_of(rg))) {
+        ++report.crossing_edges;
+        continue;
+      }
+      ends.emplace_back(node_of[rf], node_of[rg]);
+      edges.push_back({node_of[rf], node_of[rg], EdgeKind::Segment, interval_distance(centers_[rf], centers_[rg])});
+    }
+    report.inside_nodes = nodes.size();
+    report.edges = edges.size();
+    report.predicates = locator.counters();
+    auto geometry = std::make_shared<SampledVoronoiGeometry>(points_, std::move(node_triangle), std::move(ends));
+    return MedialGraph(std::move(nodes), std::move(edges), std::move(geometry));
+  }
+
+  const Shape2& shape_;
+  std::vector<Point2> points_;
+  std::vector<std::uint32_t> ring_of_, ring_start_;
+  Delaunay dt_;
+  std::vector<std::array<std::uint32_t, 3>> faces_;
+  std::vector<IntervalPoint2> centers_;
+  std::vector<Interval> radii_;
+  UnionFind groups_{0};
+};
+
+}  // namespace
+
+MedialGraph sampled_medial_axis(const Shape2& shape, const std::vector<std::vector<Point2>>& samples,
+                                SampledAxisReport* report) {
+  SampledAxisReport local;
+  std::size_t total = 0;
+  for (const auto& ring : samples) total += ring.size();
+  if (samples.size() != shape.rings.size())
+    throw std::invalid_argument(shape.name + ": one list of samples per ring is required");
+  if (total < 3) throw std::invalid_argument(shape.name + ": at least 3 boundary samples are required");
+  SampledAxisBuilder builder(shape, samples);
+  return builder.build(report ? *report : local);
+}
+
+std::uint64_t plain_delaunay_triangle_count(const std::vector<Point2>& points) {
+  std::vector<K::Point_2> input;
+  input.reserve(points.size());
+  for (const Point2& p : points) input.emplace_back(p.x, p.y);
+  CGAL::Delaunay_triangulation_2<K> dt(input.begin(), input.end());
+  return dt.number_of_faces();
+}
+
+}  // namespace grassfire
