@@ -14,9 +14,9 @@ using namespace grassfire;
 
 namespace {
 
-std::size_t total(const std::vector<RingSamples>& s) {
+std::size_t total(const BoundarySamples& s) {
   std::size_t n = 0;
-  for (const RingSamples& r : s) n += r.points.size();
+  for (const std::vector<Point2>& r : s) n += r.size();
   return n;
 }
 
@@ -24,21 +24,19 @@ std::size_t total(const std::vector<RingSamples>& s) {
 
 TEST_CASE("rectangle samples at unit spacing are exactly the integer boundary points", "[shapes]") {
   const Shape2 rect = builtin_shape("rectangle");  // 10 x 4, perimeter 28
-  const std::vector<RingSamples> s = resample_by_count(rect, 28);
+  const BoundarySamples s = resample_by_count(rect, 28);
   REQUIRE(s.size() == 1);
-  REQUIRE(s[0].points.size() == 28);
-  CHECK(s[0].spacing == 1.0);
+  REQUIRE(s[0].size() == 28);
   std::vector<Point2> expected;
   for (int x = 0; x < 10; ++x) expected.push_back({double(x), 0});
   for (int y = 0; y < 4; ++y) expected.push_back({10, double(y)});
   for (int x = 10; x > 0; --x) expected.push_back({double(x), 4});
   for (int y = 4; y > 0; --y) expected.push_back({0, double(y)});
-  CHECK(s[0].points == expected);
+  CHECK(s[0] == expected);
   // By spacing: ceil(28 / 1.5) = 19 samples, 28/19 apart.
-  const std::vector<RingSamples> h = resample_by_spacing(rect, 1.5);
-  CHECK(h[0].points.size() == 19);
-  CHECK(h[0].spacing == 28.0 / 19);
-  CHECK(h[0].points[0] == Point2{0, 0});
+  const BoundarySamples h = resample_by_spacing(rect, 1.5);
+  CHECK(h[0].size() == 19);
+  CHECK(h[0][0] == Point2{0, 0});
 }
 
 TEST_CASE("sample counts: exact total, proportional to length, at least 8 per ring", "[shapes]") {
@@ -46,43 +44,44 @@ TEST_CASE("sample counts: exact total, proportional to length, at least 8 per ri
   const double outer = ring_length(hole.rings[0]), inner = ring_length(hole.rings[1]);
   for (std::size_t n : {16, 17, 50, 333, 1000, 4097}) {
     INFO("N = " << n);
-    const std::vector<RingSamples> s = resample_by_count(hole, n);
+    const BoundarySamples s = resample_by_count(hole, n);
     REQUIRE(total(s) == n);
     const double share = n * inner / (outer + inner);
-    const double m = static_cast<double>(s[1].points.size());
+    const double m = static_cast<double>(s[1].size());
     CHECK(m >= 8);
     if (share >= 8) CHECK(std::fabs(m - share) < 1.0);
   }
   // N = 16: the hole's share (about 4.5) is raised to 8, the outer ring gives them up.
-  const std::vector<RingSamples> small = resample_by_count(hole, 16);
-  CHECK(small[0].points.size() == 8);
-  CHECK(small[1].points.size() == 8);
+  const BoundarySamples small = resample_by_count(hole, 16);
+  CHECK(small[0].size() == 8);
+  CHECK(small[1].size() == 8);
   CHECK_THROWS_WITH(resample_by_count(hole, 15), Catch::Contains("between 16 (8 per ring)"));
   CHECK_THROWS_AS(resample_by_spacing(hole, 0.0), std::invalid_argument);
   CHECK_THROWS_AS(resample_by_spacing(hole, std::nan("")), std::invalid_argument);
   CHECK_THROWS_AS(resample_by_spacing(hole, 1e-12), std::invalid_argument);  // over 10^9 samples
   // By spacing, every ring gets ceil(L / h), at least 8.
-  const std::vector<RingSamples> h = resample_by_spacing(hole, 0.5);
-  CHECK(h[0].points.size() == static_cast<std::size_t>(std::ceil(outer / 0.5)));
-  CHECK(h[1].points.size() == static_cast<std::size_t>(std::ceil(inner / 0.5)));
-  CHECK(resample_by_spacing(hole, 100)[1].points.size() == 8);
+  const BoundarySamples h = resample_by_spacing(hole, 0.5);
+  CHECK(h[0].size() == static_cast<std::size_t>(std::ceil(outer / 0.5)));
+  CHECK(h[1].size() == static_cast<std::size_t>(std::ceil(inner / 0.5)));
+  CHECK(resample_by_spacing(hole, 100)[1].size() == 8);
 }
 
 TEST_CASE("samples are distinct, in ring order, and on the boundary", "[shapes]") {
   for (const BuiltinShapeInfo& info : builtin_shape_list()) {
     INFO(info.name);
     const Shape2 shape = builtin_shape(info.name);
-    const std::vector<RingSamples> s = resample_by_count(shape, 3000);
+    const BoundarySamples s = resample_by_count(shape, 3000);
     std::set<std::pair<double, double>> seen;
     for (std::size_t r = 0; r < s.size(); ++r) {
-      CHECK(s[r].points[0] == shape.rings[r].points[0]);
-      for (const Point2& p : s[r].points) seen.insert({p.x, p.y});
-      // Consecutive samples are one spacing apart when no vertex lies between them, and
-      // never farther (a chord is shorter than the arc).
-      for (std::size_t k = 0; k < s[r].points.size(); ++k) {
-        const Point2& a = s[r].points[k];
-        const Point2& b = s[r].points[(k + 1) % s[r].points.size()];
-        REQUIRE(std::hypot(b.x - a.x, b.y - a.y) <= s[r].spacing * (1 + 1e-9));
+      CHECK(s[r][0] == shape.rings[r].points[0]);
+      for (const Point2& p : s[r]) seen.insert({p.x, p.y});
+      // Consecutive samples are one spacing apart along the ring, so never farther apart
+      // than that (a chord is no longer than its arc).
+      const double spacing = ring_length(shape.rings[r]) / static_cast<double>(s[r].size());
+      for (std::size_t k = 0; k < s[r].size(); ++k) {
+        const Point2& a = s[r][k];
+        const Point2& b = s[r][(k + 1) % s[r].size()];
+        REQUIRE(std::hypot(b.x - a.x, b.y - a.y) <= spacing * (1 + 1e-9));
       }
     }
     CHECK(seen.size() == total(s));

@@ -183,5 +183,6 @@ TEST_CASE("load_shape: built-in names, builtin: prefix, and clear errors", "[sha
   CHECK_THROWS_WITH(load_shape("nope"), Catch::Contains("'nope' is neither a shape file"));
   CHECK_THROWS_AS(load_shape(kData + "missing.wkt"), ShapeFormatError);
   CHECK_THROWS_WITH(load_shape(kData + "missing.wkt"), Catch::EndsWith("missing.wkt: no such file"));
+  CHECK_THROWS_WITH(load_shape(kData), Catch::EndsWith(": is a directory"));
   CHECK_THROWS_WITH(load_shape(kData + "LICENSE-shapes2d.md"), Catch::Contains("unknown shape file type"));
 }

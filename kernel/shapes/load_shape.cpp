@@ -22,6 +22,8 @@ bool file_exists(const std::string& path) {
 }
 
 Shape2 read_shape_file(const std::string& path) {
+  struct stat st;
+  if (::stat(path.c_str(), &st) == 0 && S_ISDIR(st.st_mode)) throw ShapeFormatError(path + ": is a directory");
   if (ends_with(path, ".json")) return read_shape_json(path);
   if (ends_with(path, ".wkt") || ends_with(path, ".txt")) return read_shape_wkt(path);
   throw std::invalid_argument(path + ": unknown shape file type; use .json (the shapes2d format) or .wkt / .txt "

@@ -25,14 +25,13 @@ std::vector<double> arc_length_prefix(const Ring& ring) {
   return prefix;
 }
 
-RingSamples sample_ring(const Ring& ring, std::size_t m) {
+std::vector<Point2> sample_ring(const Ring& ring, std::size_t m) {
   const std::vector<Point2>& p = ring.points;
   const std::size_t n = p.size();
   const std::vector<double> prefix = arc_length_prefix(ring);
   const double length = prefix[n];
-  RingSamples out;
-  out.spacing = length / static_cast<double>(m);
-  out.points.reserve(m);
+  std::vector<Point2> out;
+  out.reserve(m);
   std::size_t i = 0;
   for (std::size_t k = 0; k < m; ++k) {
     const double t = length * static_cast<double>(k) / static_cast<double>(m);
@@ -42,16 +41,15 @@ RingSamples sample_ring(const Ring& ring, std::size_t m) {
     // Only the last edge can be selected with C_i = C_{i+1} (an edge absorbed by rounding).
     const double edge = prefix[i + 1] - prefix[i];
     const double f = edge > 0.0 ? std::min(1.0, (t - prefix[i]) / edge) : 0.0;
-    out.points.push_back({a.x + f * (b.x - a.x), a.y + f * (b.y - a.y)});
+    out.push_back({a.x + f * (b.x - a.x), a.y + f * (b.y - a.y)});
   }
   return out;
 }
 
-void require_distinct(const Shape2& shape, const std::vector<RingSamples>& samples) {
+void require_distinct(const Shape2& shape, const BoundarySamples& samples) {
   std::vector<std::tuple<double, double, std::size_t, std::size_t>> all;
   for (std::size_t r = 0; r < samples.size(); ++r)
-    for (std::size_t k = 0; k < samples[r].points.size(); ++k)
-      all.emplace_back(samples[r].points[k].x, samples[r].points[k].y, r, k);
+    for (std::size_t k = 0; k < samples[r].size(); ++k) all.emplace_back(samples[r][k].x, samples[r][k].y, r, k);
   std::sort(all.begin(), all.end());
   for (std::size_t i = 1; i < all.size(); ++i) {
     const auto& [x0, y0, r0, k0] = all[i - 1];
@@ -61,13 +59,14 @@ void require_distinct(const Shape2& shape, const std::vector<RingSamples>& sampl
     std::snprintf(where, sizeof where, "(%.17g, %.17g)", x0, y0);
     throw std::runtime_error(shape.name + ": " + ring_label(r0) + ": sample " + std::to_string(k0) + " and " +
                              (r0 == r1 ? "" : ring_label(r1) + " ") + "sample " + std::to_string(k1) +
-                             " coincide at " + where + " (spacing " + std::to_string(samples[r0].spacing) +
+                             " coincide at " + where + " (spacing " +
+                             std::to_string(ring_length(shape.rings[r0]) / static_cast<double>(samples[r0].size())) +
                              " is below the resolution of doubles here); use fewer samples");
   }
 }
 
-std::vector<RingSamples> sample_rings(const Shape2& shape, const std::vector<std::size_t>& counts) {
-  std::vector<RingSamples> samples;
+BoundarySamples sample_rings(const Shape2& shape, const std::vector<std::size_t>& counts) {
+  BoundarySamples samples;
   for (std::size_t r = 0; r < shape.rings.size(); ++r) samples.push_back(sample_ring(shape.rings[r], counts[r]));
   require_distinct(shape, samples);
   return samples;
@@ -107,7 +106,7 @@ std::vector<std::size_t> counts_by_length(const std::vector<double>& lengths, st
 
 double ring_length(const Ring& ring) { return arc_length_prefix(ring).back(); }
 
-std::vector<RingSamples> resample_by_count(const Shape2& shape, std::size_t total) {
+BoundarySamples resample_by_count(const Shape2& shape, std::size_t total) {
   require_shape(shape);
   const std::size_t rings = shape.rings.size();
   if (total < kMinSamplesPerRing * rings || total > kMaxSamples)
@@ -119,7 +118,7 @@ std::vector<RingSamples> resample_by_count(const Shape2& shape, std::size_t tota
   return sample_rings(shape, counts_by_length(lengths, total));
 }
 
-std::vector<RingSamples> resample_by_spacing(const Shape2& shape, double spacing) {
+BoundarySamples resample_by_spacing(const Shape2& shape, double spacing) {
   require_shape(shape);
   if (!(spacing > 0.0) || !std::isfinite(spacing))
     throw std::invalid_argument(shape.name + ": the sample spacing must be a positive finite number");

@@ -34,13 +34,12 @@ namespace grassfire {
 constexpr std::size_t kMinSamplesPerRing = 8;
 constexpr std::size_t kMaxSamples = 1000000000;
 
-struct RingSamples {
-  std::vector<Point2> points;  // in ring order, points[0] is the ring's vertex 0
-  double spacing = 0.0;        // arc length between consecutive samples, L_r / m_r
-};
+// Per ring, its samples in ring order; samples[r][0] is vertex 0 of ring r. Consecutive
+// samples of ring r are ring_length(ring r) / samples[r].size() apart along the ring.
+using BoundarySamples = std::vector<std::vector<Point2>>;
 
-std::vector<RingSamples> resample_by_count(const Shape2& shape, std::size_t total);
-std::vector<RingSamples> resample_by_spacing(const Shape2& shape, double spacing);
+BoundarySamples resample_by_count(const Shape2& shape, std::size_t total);
+BoundarySamples resample_by_spacing(const Shape2& shape, double spacing);
 
 // Perimeter of a ring as the double sum of std::hypot edge lengths, the L_r above.
 double ring_length(const Ring& ring);
