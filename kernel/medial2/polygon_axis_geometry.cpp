@@ -148,12 +148,44 @@ ExactSum PolygonAxisGeometry::exact_radius(std::uint32_t node) const {
   return r;
 }
 
+// The arc length |S(xi_v) - S(xi_u)| depends only on the focal parameter p and the two
+// abscissas; S is odd, so (p, {xi_u, xi_v}) up to a common sign names the value. Equal
+// arcs (mirror-symmetric shapes) then share one identity and cancel exactly; without
+// exact end circles the identity falls back to the sites.
+std::string PolygonAxisGeometry::arc_identity(const AxisEdgeData& e, const std::string& ends) const {
+  const auto& a = exact_circle(e.u);
+  const auto& b = exact_circle(e.v);
+  if (a && b) {
+    try {
+      const PolygonSites& s = *sites_;
+      const std::uint32_t f = s.is_point(e.site_a) ? e.site_a : e.site_b;
+      const std::uint32_t l = s.is_point(e.site_a) ? e.site_b : e.site_a;
+      const Point2 fp = s.vertex[f], la = s.vertex[s.seg_start(l)], lb = s.vertex[s.seg_end(l)];
+      const RootSum dx = RootSum(lb.x) - RootSum(la.x), dy = RootSum(lb.y) - RootSum(la.y);
+      const RootSum len = sqrt(dx * dx + dy * dy);
+      const RootSum p = (dx * (RootSum(fp.y) - RootSum(la.y)) - dy * (RootSum(fp.x) - RootSum(la.x))) / len;
+      RootSum xu = (dx * (RootSum(a->x) - RootSum(fp.x)) + dy * (RootSum(a->y) - RootSum(fp.y))) / len;
+      RootSum xv = (dx * (RootSum(b->x) - RootSum(fp.x)) + dy * (RootSum(b->y) - RootSum(fp.y))) / len;
+      const int sum_sign = exact_sign((xu + xv).v);
+      if (sum_sign < 0 || (sum_sign == 0 && exact_sign(xu.v) < 0)) {
+        xu = -xu;
+        xv = -xv;
+      }
+      std::string su = to_string(xu.v), sv = to_string(xv.v);
+      if (sv < su) std::swap(su, sv);
+      return "arc[" + to_string(p.v) + ";" + su + ";" + sv + "]";
+    } catch (const NestedRadical&) {
+    }
+  }
+  return "arc(" + std::to_string(e.site_a) + "," + std::to_string(e.site_b) + ";" + ends + ")";
+}
+
 ExactSum PolygonAxisGeometry::frame_length(std::uint32_t edge) const {
   const AxisEdgeData& e = edges_[edge];
   const std::string iu = node_identity(e.u), iv = node_identity(e.v);
   const std::string ends = iu < iv ? iu + ";" + iv : iv + ";" + iu;
   if (e.parabolic) {
-    const std::string id = "arc(" + std::to_string(e.site_a) + "," + std::to_string(e.site_b) + ";" + ends + ")";
+    const std::string id = arc_identity(e, ends);
     return ExactSum::constant(
         std::make_shared<EdgeLength>(sites_, e, nodes_[e.u].circle, nodes_[e.v].circle, id));
   }

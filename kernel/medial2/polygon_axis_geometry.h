@@ -63,6 +63,7 @@ class PolygonAxisGeometry : public MedialGeometry {
 
  private:
   ExactSum frame_length(std::uint32_t edge) const;
+  std::string arc_identity(const AxisEdgeData& e, const std::string& ends) const;
 
   std::shared_ptr<const PolygonSites> sites_;
   mpq_class to_input_;

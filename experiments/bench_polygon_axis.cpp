@@ -1,0 +1,126 @@
+// bench_polygon_axis -- the exact polygon axis (+ EDF) against bare Boost.Polygon
+// construct_voronoi and bare CGAL Segment_Delaunay_graph_2 on the same polygon.
+//
+// Input: a smooth closed polygon, the wavy circle r(t) = 10^6 (1 + 0.1 sin 7t) with
+// integer vertices (exact on a decimal grid, so the Boost path runs), at 10^3, 10^4,
+// 10^5 segments. Each size runs: Boost alone; CGAL SDG alone (bulk insert_segments,
+// filtered traits without intersections) unless --max-cgal is below the size; the exact
+// axis (polygon_axis.h); the exact axis plus the extended grassfire (extended_grassfire.h).
+// Output (stdout): CSV segments,boost_s,cgal_sdg_s,axis_s,axis_plus_edf_s,ratio_to_boost,
+// peak_mem_mb; ratio_to_boost = axis_plus_edf_s / boost_s; an empty cgal_sdg_s means
+// skipped; peak_mem_mb is the process's peak resident size after the row.
+// Usage: bench_polygon_axis [--sizes 1000,10000,100000] [--max-cgal N]
+#include <CGAL/Segment_Delaunay_graph_2.h>
+#include <CGAL/Segment_Delaunay_graph_filtered_traits_2.h>
+#include <CGAL/Simple_cartesian.h>
+#include <sys/resource.h>
+
+#include <boost/polygon/point_data.hpp>
+#include <boost/polygon/segment_data.hpp>
+#include <boost/polygon/voronoi.hpp>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "burn2/extended_grassfire.h"
+#include "medial2/polygon_axis.h"
+
+using namespace grassfire;
+
+namespace {
+
+double now() { return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count(); }
+
+Shape2 wavy_circle(int n) {
+  Shape2 s;
+  s.name = "wavy circle " + std::to_string(n);
+  Ring r;
+  for (int k = 0; k < n; ++k) {
+    const double t = 2 * M_PI * k / n, rad = 1e6 * (1 + 0.1 * std::sin(7 * t));
+    r.points.push_back({std::round(rad * std::cos(t)), std::round(rad * std::sin(t))});
+  }
+  s.rings.push_back(r);
+  return s;
+}
+
+double bare_boost(const Shape2& s) {
+  namespace bp = boost::polygon;
+  const auto& p = s.rings[0].points;
+  std::vector<bp::segment_data<int>> seg;
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    const Point2 a = p[i], b = p[(i + 1) % p.size()];
+    seg.emplace_back(bp::point_data<int>(int(a.x), int(a.y)), bp::point_data<int>(int(b.x), int(b.y)));
+  }
+  const double t0 = now();
+  bp::voronoi_diagram<double> vd;
+  bp::construct_voronoi(seg.begin(), seg.end(), &vd);
+  return now() - t0;
+}
+
+double bare_cgal(const Shape2& s) {
+  using K = CGAL::Simple_cartesian<double>;
+  using Sdg = CGAL::Segment_Delaunay_graph_2<CGAL::Segment_Delaunay_graph_filtered_traits_without_intersections_2<K>>;
+  const auto& p = s.rings[0].points;
+  std::vector<K::Segment_2> seg;
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    const Point2 a = p[i], b = p[(i + 1) % p.size()];
+    seg.emplace_back(K::Point_2(a.x, a.y), K::Point_2(b.x, b.y));
+  }
+  const double t0 = now();
+  Sdg sdg;
+  sdg.insert_segments(seg.begin(), seg.end());
+  return now() - t0;
+}
+
+double peak_mb() {
+  rusage u{};
+  getrusage(RUSAGE_SELF, &u);
+  return u.ru_maxrss / 1024.0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  std::vector<int> sizes{1000, 10000, 100000};
+  long max_cgal = 100000;
+  for (int i = 1; i + 1 < argc; i += 2) {
+    const std::string a = argv[i];
+    if (a == "--max-cgal") {
+      max_cgal = std::atol(argv[i + 1]);
+    } else if (a == "--sizes") {
+      sizes.clear();
+      std::stringstream ss(argv[i + 1]);
+      for (std::string t; std::getline(ss, t, ',');) sizes.push_back(std::atoi(t.c_str()));
+    } else {
+      std::fprintf(stderr, "usage: bench_polygon_axis [--sizes a,b,c] [--max-cgal N]\n");
+      return 2;
+    }
+  }
+  std::printf("segments,boost_s,cgal_sdg_s,axis_s,axis_plus_edf_s,ratio_to_boost,peak_mem_mb\n");
+  for (int n : sizes) {
+    const Shape2 s = wavy_circle(n);
+    const double boost_s = bare_boost(s);
+    std::string cgal = "";
+    if (n <= max_cgal) cgal = std::to_string(bare_cgal(s));
+    double t0 = now();
+    const MedialGraph g = exact_polygon_axis(s);
+    const double axis_s = now() - t0;
+    t0 = now();
+    const MedialGraph g2 = exact_polygon_axis(s);
+    const GrassfireResult r = extended_grassfire(g2);
+    const double both = now() - t0;
+    std::printf("%d,%.4f,%s,%.4f,%.4f,%.3f,%.1f\n", n, boost_s, cgal.c_str(), axis_s, both, both / boost_s, peak_mb());
+    std::fflush(stdout);
+    const NumberStats& st = r.stats();
+    std::fprintf(stderr, "n=%d: engine comparisons: filter %llu, mpfr %llu, exact zero %llu, uncertified zero %llu, max bits %llu\n",
+                 n, (unsigned long long)st.filter_decided, (unsigned long long)st.mpfr_decided,
+                 (unsigned long long)st.exact_zero, (unsigned long long)st.uncertified_zero,
+                 (unsigned long long)st.max_bits_used);
+    (void)g;
+  }
+  return 0;
+}
