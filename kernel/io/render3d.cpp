@@ -219,13 +219,17 @@ void Renderer3d::render(SvgCanvas& canvas, double x0, double y0, double w, doubl
     }
   }
   if (prims_.empty()) return;
-  const double bias = 1e-3 * (zmax - zmin) + 1e-9;
+  // Triangles sort by their centroid; lines and points by their nearest point, moved a
+  // further 1% of the depth range towards the viewer, so that curves drawn on a surface
+  // come after the small triangles they lie on.
+  const double bias = 1e-2 * (zmax - zmin) + 1e-9;
   for (std::size_t i = 0; i < prims_.size(); ++i) {
-    double z = 0;
-    for (const Point3d& c : cam[i]) z += c[2];
+    double z = 0, znear = std::numeric_limits<double>::infinity();
+    for (const Point3d& c : cam[i]) z += c[2], znear = std::min(znear, c[2]);
     z /= static_cast<double>(cam[i].size());
     const int kind = prims_[i].kind;
-    items.push_back({kind == 3 ? -std::numeric_limits<double>::infinity() : z - bias * kind, i});
+    const double key = kind == 0 ? z : kind == 3 ? -std::numeric_limits<double>::infinity() : znear - bias * kind;
+    items.push_back({key, i});
   }
   std::stable_sort(items.begin(), items.end(), [](const Item& a, const Item& b) { return a.depth > b.depth; });
   const double margin = 0.04;

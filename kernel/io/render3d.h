@@ -1,9 +1,9 @@
 // render3d.h -- a small software renderer to SVG for the figures of chapter 4.
 //
 // Computes: SVG pictures of triangles, lines, points and labels in R^3 seen through a
-// perspective camera: painter's algorithm (primitives sorted far to near by the depth of
-// their centroid; lines and points are biased towards the viewer so that curves lying
-// on a surface stay visible), flat Lambert shading of triangles lit from the camera
+// perspective camera: painter's algorithm (triangles sorted far to near by the depth of
+// their centroid, lines and points by their nearest point biased towards the viewer by 1%
+// of the depth range, so that curves lying on a surface stay visible), flat Lambert shading of triangles lit from the camera
 // side (two-sided), and a hue colour map for scalar fields (red = low to purple = high,
 // as the dissertation's figures). SvgCanvas is the 2D layer underneath, also used for
 // plots. Painter's sorting is not exact visibility: intersecting or long thin triangles
