@@ -51,14 +51,14 @@ double sector_burn_time(const MedialComplex& mc, const DiscreteBurning& d, std::
 }
 
 void draw_scalar(Renderer3d& r, const MedialComplex& mc, const std::vector<std::uint32_t>& triangles,
-                 const CornerValue& value, double lo, double hi, double step) {
+                 const CornerValue& value, double lo, double hi, double step, int subdivisions) {
   std::vector<double> levels;
   for (double l = lo + step; step > 0 && l < hi; l += step) levels.push_back(l);
   for (std::uint32_t t : triangles) {
     const auto& tv = mc.triangle(t).v;
     const std::array<Point3d, 3> p = {p3(mc.vertex(tv[0]).approx), p3(mc.vertex(tv[1]).approx), p3(mc.vertex(tv[2]).approx)};
     const std::array<double, 3> v = {value(t, 0), value(t, 1), value(t, 2)};
-    r.scalar_triangle(p, v, lo, hi, 1);
+    r.scalar_triangle(p, v, lo, hi, subdivisions);
     r.iso_lines(p, v, levels, {0, 0, 0}, 0.6);
   }
 }

@@ -37,10 +37,11 @@ using CornerValue = std::function<double(std::uint32_t triangle, int corner)>;
 // BT jumps between sectors (Prop. 6), and the first arrival through the sector, when it
 // came before the point burned, is that sector's limit.
 double sector_burn_time(const MedialComplex& mc, const DiscreteBurning& d, std::uint32_t t, int c);
-// Draws the triangles coloured by `value` (hue from lo to hi) with iso-curves every `step`
-// (none when step <= 0).
+// Draws the triangles coloured by `value` (hue from lo to hi; each triangle subdivided
+// `subdivisions` times per edge for the colour) with iso-curves every `step` (none when
+// step <= 0).
 void draw_scalar(Renderer3d& r, const MedialComplex& mc, const std::vector<std::uint32_t>& triangles,
-                 const CornerValue& value, double lo, double hi, double step);
+                 const CornerValue& value, double lo, double hi, double step, int subdivisions = 1);
 // The edges of a stratum (border, singular) among the given triangles, as lines.
 void draw_edges(Renderer3d& r, const MedialComplex& mc, const std::vector<std::uint32_t>& triangles, EdgeStratum s,
                 const Rgb& color, double width, bool skip_never = false);

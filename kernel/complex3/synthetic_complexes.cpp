@@ -87,7 +87,7 @@ RawComplex board_cylinder(const BoardCylinderOptions& o) {
   ComplexBuilder b("board-cylinder(k=" + std::to_string(o.sides) + ")");
   const mpq_class r = make_rational(std::lround(o.radius * 8), 8);
   const mpq_class L = make_rational(std::lround(o.half_width * 8), 8);
-  const mpq_class height = 2 * r;
+  const mpq_class height = o.height > 0 ? make_rational(std::lround(o.height * 8), 8) : mpq_class(2 * r);
   const int k = o.sides;
   std::vector<std::array<mpq_class, 2>> dir;
   for (int j = 0; j < k; ++j) dir.push_back(rational_unit_direction(2 * M_PI * j / k));
@@ -119,7 +119,11 @@ RawComplex board_cylinder(const BoardCylinderOptions& o) {
     }
     chain.push_back(b.vertex(on_square(d1)));
     const std::uint32_t inner0 = ring[o.rings][j], inner1 = ring[o.rings][(j + 1) % k];
-    for (std::size_t i = 0; i + 1 < chain.size(); ++i) b.triangle(inner0, chain[i], chain[i + 1]);
+    for (std::size_t i = 0; i + 1 < chain.size(); ++i) {
+      b.triangle(inner0, chain[i], chain[i + 1]);
+      const ExactPoint3 &p = b.raw().vertices[chain[i]], &q = b.raw().vertices[chain[i + 1]];
+      if (o.near_side_only && !(p.y == -L && q.y == -L)) b.rule(chain[i], chain[i + 1], IgnitionRule::Never);
+    }
     b.triangle(inner0, chain.back(), inner1);
   }
   // The prism's side.

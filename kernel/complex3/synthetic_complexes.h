@@ -13,7 +13,8 @@
 //  - board and hollow cylinder (Fig. 4.7): a square board with a "cylinder" standing on it;
 //    the cylinder is approximated by a prism over a k-gon whose vertices are exact rational
 //    points of the circle (not a regular k-gon: rational parametrisation of the circle).
-//    Board border and cylinder rim ignite at f = 0. No closed form (DESIGN.md gives none).
+//    Board border and cylinder rim ignite at f = 0 (options: only the side y = -L, and the
+//    prism's height). No closed form (DESIGN.md gives none).
 //  - a book of k pages on one spine (z axis); page j is the rectangle [0, w_j] x [0, S] in
 //    the half-plane of a rational unit direction near angle 2 pi j / k. Every border edge
 //    ignites at f = 0 (zero radius). (Were top and bottom truncations that never ignite,
@@ -55,8 +56,10 @@ struct BoardCylinderOptions {
   int sides = 24;        // k, the prism's number of sides
   int rings = 4;         // rings of the board between the prism and the square
   int rows = 6;          // rows of the prism's side
-  double radius = 2.0;   // circle radius (rounded to a rational), height of the prism = 2 radius
+  double radius = 2.0;   // circle radius (rounded to 1/8)
   double half_width = 6; // the board is [-L, L]^2
+  double height = 0;     // of the prism (rounded to 1/8); 0: 2 radius
+  bool near_side_only = false;  // only the board side y = -L ignites (others never)
 };
 RawComplex board_cylinder(const BoardCylinderOptions& options = {});
 
