@@ -41,17 +41,23 @@ T length_of(const PolygonSites& s, const AxisEdgeData& e, const CircleValue<T>& 
   return abs_of(parabola_arc_primitive(xb, p) - parabola_arc_primitive(xa, p));
 }
 
-// Evaluates f() in Arb at increasing precision until it is accurate to `bits` bits.
+// Evaluates f() in Arb at increasing precision until it is accurate to `bits` bits; the
+// last ball is kept, since the burning engine asks for the same constants repeatedly.
+struct BallCache {
+  Ball value;
+  long accuracy = -1;
+};
 template <class F>
-void enclose_with_ball(long bits, mpfr_ptr lo, mpfr_ptr hi, F&& f) {
-  for (long work = bits + 64;; work *= 2) {
-    BallPrecision guard(work);
-    const Ball b = f();
-    if (b.accuracy_bits() >= bits || work > 16 * (bits + 64)) {
-      b.to_mpfr(lo, hi);
-      return;
+void enclose_with_ball(long bits, mpfr_ptr lo, mpfr_ptr hi, BallCache& cache, F&& f) {
+  if (cache.accuracy < bits) {
+    for (long work = bits + 64;; work *= 2) {
+      BallPrecision guard(work);
+      cache.value = f();
+      cache.accuracy = cache.value.accuracy_bits();
+      if (cache.accuracy >= bits || work > 16 * (bits + 64)) break;
     }
   }
+  cache.value.to_mpfr(lo, hi);
 }
 
 class CircleRadius : public CertifiedConstant {
@@ -59,7 +65,7 @@ class CircleRadius : public CertifiedConstant {
   CircleRadius(std::shared_ptr<const PolygonSites> s, VoronoiCircle c, std::string id)
       : sites_(std::move(s)), circle_(c), id_(std::move(id)) {}
   void enclose(mpfr_ptr lo, mpfr_ptr hi) const override {
-    enclose_with_ball(mpfr_get_prec(lo), lo, hi, [&] { return solve_ball(*sites_, circle_).r; });
+    enclose_with_ball(mpfr_get_prec(lo), lo, hi, cache_, [&] { return solve_ball(*sites_, circle_).r; });
   }
   std::string identity() const override { return id_; }
 
@@ -67,6 +73,7 @@ class CircleRadius : public CertifiedConstant {
   std::shared_ptr<const PolygonSites> sites_;
   VoronoiCircle circle_;
   std::string id_;
+  mutable BallCache cache_;
 };
 
 class EdgeLength : public CertifiedConstant {
@@ -74,7 +81,7 @@ class EdgeLength : public CertifiedConstant {
   EdgeLength(std::shared_ptr<const PolygonSites> s, AxisEdgeData e, VoronoiCircle a, VoronoiCircle b, std::string id)
       : sites_(std::move(s)), edge_(e), a_(a), b_(b), id_(std::move(id)) {}
   void enclose(mpfr_ptr lo, mpfr_ptr hi) const override {
-    enclose_with_ball(mpfr_get_prec(lo), lo, hi, [&] {
+    enclose_with_ball(mpfr_get_prec(lo), lo, hi, cache_, [&] {
       return length_of(*sites_, edge_, solve_ball(*sites_, a_), solve_ball(*sites_, b_));
     });
   }
@@ -85,6 +92,7 @@ class EdgeLength : public CertifiedConstant {
   AxisEdgeData edge_;
   VoronoiCircle a_, b_;
   std::string id_;
+  mutable BallCache cache_;
 };
 
 // sqrt(x) for an exact sum x >= 0 that does not denest.
