@@ -18,7 +18,7 @@ namespace grassfire {
 namespace {
 
 // An enclosure is re-evaluated in Arb when it has fewer than this many relative bits.
-constexpr int kTightBits = 50;
+constexpr int kTightBits = 40;
 
 double seconds_since(std::chrono::steady_clock::time_point t0) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
