@@ -24,25 +24,31 @@ struct BurnTimes::Refined {
   Refined& operator=(const Refined&) = delete;
 };
 
+BurnTimes::BurnTimes(const MedialGraph& graph) : graph_(&graph) {}
+BurnTimes::~BurnTimes() = default;
+BurnTimes::BurnTimes(BurnTimes&&) noexcept = default;
+BurnTimes& BurnTimes::operator=(BurnTimes&&) noexcept = default;
+
 const BurnTimes::Refined& BurnTimes::refined(TimeId t) const {
+  if (refined_.size() < records_.size()) refined_.resize(records_.size());
   // Walk up to the nearest memoised ancestor, then fill in downwards.
   std::vector<TimeId> chain;
-  for (TimeId cur = t; cur != kNoTime && !refined_.count(cur); cur = records_[cur].pred) chain.push_back(cur);
+  for (TimeId cur = t; cur != kNoTime && !refined_[cur]; cur = records_[cur].pred) chain.push_back(cur);
   for (auto it = chain.rbegin(); it != chain.rend(); ++it) {
     const Record& r = records_[*it];
-    auto out = std::make_shared<Refined>();
+    auto out = std::make_unique<Refined>();
     if (r.pred == kNoTime) {
       graph_->geometry().enclose_radius(r.ref, out->lo, out->hi);
     } else {
       Refined step;
       graph_->geometry().enclose_length(r.ref, step.lo, step.hi);
-      const Refined& base = *refined_.at(r.pred);
+      const Refined& base = *refined_[r.pred];
       mpfr_add(out->lo, base.lo, step.lo, MPFR_RNDD);
       mpfr_add(out->hi, base.hi, step.hi, MPFR_RNDU);
     }
-    refined_.emplace(*it, std::move(out));
+    refined_[*it] = std::move(out);
   }
-  return *refined_.at(t);
+  return *refined_[t];
 }
 
 int BurnTimes::refined_sign(TimeId a, TimeId b) const {

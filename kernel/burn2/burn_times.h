@@ -16,7 +16,6 @@
 
 #include <cstdint>
 #include <memory>
-#include <unordered_map>
 #include <vector>
 
 #include "burn2/graph_sum.h"
@@ -30,7 +29,10 @@ constexpr TimeId kNoTime = 0xffffffffu;
 
 class BurnTimes {
  public:
-  explicit BurnTimes(const MedialGraph& graph) : graph_(&graph) {}
+  explicit BurnTimes(const MedialGraph& graph);
+  ~BurnTimes();
+  BurnTimes(BurnTimes&&) noexcept;
+  BurnTimes& operator=(BurnTimes&&) noexcept;
 
   TimeId ignition(std::uint32_t leaf);
   TimeId advance(TimeId from, std::uint32_t edge);
@@ -50,6 +52,8 @@ class BurnTimes {
 
   std::size_t size() const { return records_.size(); }
   const NumberStats& stats() const { return stats_; }
+  // Counts a comparison that the caller decided from the enclosures alone.
+  void count_filter_decision() const { ++stats_.filter_decided; }
   const MedialGraph& graph() const { return *graph_; }
 
  private:
@@ -69,7 +73,7 @@ class BurnTimes {
   const MedialGraph* graph_;
   std::vector<Record> records_;
   mutable NumberStats stats_;
-  mutable std::unordered_map<TimeId, std::shared_ptr<Refined>> refined_;
+  mutable std::vector<std::unique_ptr<Refined>> refined_;  // by TimeId, filled on demand
 };
 
 }  // namespace grassfire

@@ -61,11 +61,10 @@ class EventSimulation {
     const EventSimulation* sim;
     bool operator()(const Arrival& a, const Arrival& b) const {
       int c;
-      if (a.value.hi < b.value.lo)
-        c = -1;
-      else if (b.value.hi < a.value.lo)
-        c = 1;
-      else {
+      if (a.value.hi < b.value.lo || b.value.hi < a.value.lo) {
+        c = a.value.hi < b.value.lo ? -1 : 1;
+        sim->result_.times.count_filter_decision();
+      } else {
         c = sim->result_.times.compare(a.time, b.time);
         if (c == 0 && a.time != b.time) ++sim->ties_;
       }

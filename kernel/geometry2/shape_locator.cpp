@@ -15,7 +15,7 @@ constexpr double kInf = std::numeric_limits<double>::infinity();
 constexpr double kMargin = 1.0 / 1024.0;
 }  // namespace
 
-ShapeLocator::ShapeLocator(const Shape2& shape) {
+ShapeLocator::ShapeLocator(const Shape2& shape, std::size_t expected_queries) {
   double xmin = kInf, ymin = kInf, xmax = -kInf, ymax = -kInf;
   for (const Ring& ring : shape.rings) {
     const std::size_t n = ring.points.size();
@@ -30,7 +30,7 @@ ShapeLocator::ShapeLocator(const Shape2& shape) {
   }
   if (edges_.size() < 3) throw std::invalid_argument("shape locator: a shape needs at least 3 boundary edges");
   const double w = std::max(xmax - xmin, 1e-300), h = std::max(ymax - ymin, 1e-300);
-  const double cells = static_cast<double>(edges_.size());
+  const double cells = std::min(4.0e6, std::max(static_cast<double>(edges_.size()), expected_queries / 4.0));
   const double side = std::sqrt(w * h / cells);
   nx_ = static_cast<int>(std::min(4096.0, std::max(1.0, std::ceil(w / side)))) + 2;  // one padding cell
   ny_ = static_cast<int>(std::min(4096.0, std::max(1.0, std::ceil(h / side)))) + 2;  // on each side

@@ -29,7 +29,9 @@ enum class Location { Inside, Boundary, Outside };
 
 class ShapeLocator {
  public:
-  explicit ShapeLocator(const Shape2& shape);
+  // `expected_queries` sizes the grid (about one cell per boundary edge, or per 4 queries
+  // when there are many more queries than edges, so a query rarely meets an edge).
+  explicit ShapeLocator(const Shape2& shape, std::size_t expected_queries = 0);
 
   Location locate(const LazyPoint& p) const;
   // True when the closed segment pq meets the shape boundary.

@@ -31,8 +31,9 @@ enum class EdgeKind : std::uint8_t { Segment, ParabolicArc };
 const char* to_string(EdgeKind kind);
 
 struct MedialNode {
-  Point2 position;  // nearest double to the exact position
-  Interval radius;  // encloses R, the distance to the shape boundary
+  Point2 position;             // a double approximation of the exact position
+  Interval radius;             // encloses R, the distance to the shape boundary
+  double position_error = 0;   // |position - exact| <= this, per coordinate
 };
 
 struct MedialEdge {

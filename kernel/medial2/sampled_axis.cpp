@@ -132,7 +132,7 @@ class SampledAxisBuilder {
   }
 
   MedialGraph assemble(SampledAxisReport& report) {
-    ShapeLocator locator(shape_);
+    ShapeLocator locator(shape_, faces_.size());
     std::vector<std::uint32_t> node_of(faces_.size(), kNone);
     std::vector<MedialNode> nodes;
     std::vector<std::array<std::uint32_t, 3>> node_triangle;
@@ -141,7 +141,7 @@ class SampledAxisBuilder {
       if (locator.locate(center_of(f)) != Location::Inside) continue;
       node_of[f] = static_cast<std::uint32_t>(nodes.size());
       const IntervalPoint2& c = centers_[f];
-      nodes.push_back({Point2{c.x.mid(), c.y.mid()}, radii_[f]});
+      nodes.push_back({Point2{c.x.mid(), c.y.mid()}, radii_[f], std::max(c.x.radius(), c.y.radius())});
       node_triangle.push_back(faces_[f]);
     }
     std::vector<MedialEdge> edges;

@@ -84,12 +84,12 @@ SampledVoronoiGeometry::SampledVoronoiGeometry(std::vector<Point2> samples,
     : samples_(std::move(samples)), triangles_(std::move(node_triangles)), ends_(std::move(edge_ends)) {}
 
 const IntegerCircumcenter& SampledVoronoiGeometry::center(std::uint32_t node) const {
-  auto it = centers_.find(node);
-  if (it == centers_.end()) {
+  if (centers_.size() < triangles_.size()) centers_.resize(triangles_.size());
+  if (!centers_[node]) {
     const auto& t = triangles_[node];
-    it = centers_.emplace(node, integer_circumcenter(samples_[t[0]], samples_[t[1]], samples_[t[2]])).first;
+    centers_[node] = std::make_unique<IntegerCircumcenter>(integer_circumcenter(samples_[t[0]], samples_[t[1]], samples_[t[2]]));
   }
-  return it->second;
+  return *centers_[node];
 }
 
 SampledVoronoiGeometry::SquaredLength SampledVoronoiGeometry::squared_radius(std::uint32_t node) const {

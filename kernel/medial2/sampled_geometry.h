@@ -15,7 +15,7 @@
 
 #include <array>
 #include <cstdint>
-#include <unordered_map>
+#include <memory>
 #include <vector>
 
 #include "medial2/medial_graph.h"
@@ -57,7 +57,7 @@ class SampledVoronoiGeometry : public MedialGeometry {
   std::vector<Point2> samples_;
   std::vector<std::array<std::uint32_t, 3>> triangles_;
   std::vector<std::pair<std::uint32_t, std::uint32_t>> ends_;
-  mutable std::unordered_map<std::uint32_t, IntegerCircumcenter> centers_;
+  mutable std::vector<std::unique_ptr<IntegerCircumcenter>> centers_;  // by node, on demand
 };
 
 }  // namespace grassfire

@@ -1,0 +1,38 @@
+// medial2_json.h -- the JSON output of `grassfire edf2d` (format "grassfire-medial2d").
+//
+// Format, version 1 (documented in README.md; later versions add members, never remove
+// or change one):
+//   {"format": "grassfire-medial2d", "version": 1,
+//    "shape": NAME, "variant": "exact"|"dissertation", "samples": N,
+//    "nodes": [{"x", "y", "R", "edf", "et", "st"}, ...],       ids = array index
+//    "edges": [{"u", "v", "length", "kind"}, ...],             kind: "segment"|"parabolic-arc"
+//    "ema": {"kind": "point", "x", "y", "edf", "node": id}                 (at a node)
+//         | {"kind": "point", "x", "y", "edf", "edge": id, "offset": s}   (s from edge.u)
+//         | {"kind": "cycles", "nodes": [ids], "edges": [ids]}
+//         | {"kind": "components", "parts": [one of the above per component]},
+//    "error_bound": {"position", "R", "edf", "et", "st", "length", "ema"},
+//    "certification": {filter/exact counters}}
+// "edf" and "et" are the string "inf" where infinite. Every printed number is the
+// midpoint of a certified enclosure; "error_bound" gives, per quantity, the largest
+// distance from a printed value to the exact one ("position": node coordinates; "ema":
+// the EMA's edf and offset; the EMA's x, y inside an edge are interpolated for display).
+#pragma once
+
+#include <string>
+
+#include "burn2/extended_grassfire.h"
+#include "burn2/measures.h"
+
+namespace grassfire {
+
+struct Medial2dJsonInput {
+  std::string shape_name;
+  std::size_t samples = 0;
+  const MedialGraph* graph = nullptr;
+  const GrassfireResult* burning = nullptr;
+  const NodeMeasures* measures = nullptr;
+};
+
+std::string medial2d_json(const Medial2dJsonInput& in);
+
+}  // namespace grassfire
