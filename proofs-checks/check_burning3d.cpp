@@ -3,8 +3,9 @@
 //
 // Corpora: synthetic = the reference complexes of synthetic_complexes.h; generated =
 // seeded random books, box medial axes and closed octahedra with flaps and hairs; real =
-// the .ma files in data/ma (exact box medial axes; the builders' output joins when it is
-// in the repository). Distances for Prop. 4: within a planar sheet, the exact geodesic
+// the .ma files in data/ma (exact box medial axes) and the exact medial axes of the convex
+// meshes in data/meshes and of seeded random convex polyhedra with Pythagorean facet
+// normals (kernel/complex3/builders/convex_polyhedron_axis.h). Distances for Prop. 4: within a planar sheet, the exact geodesic
 // |x - y| when the segment xy stays in the sheet (tested against the sheet's border and
 // singular edges in its plane); else, and on curved sheets, the baseline's graph distance
 // inside the sheet, an upper bound of the geodesic; along a singular curve, the exact
@@ -21,10 +22,12 @@
 #include "burn3/discrete_burning.h"
 #include "burn3/steiner_graph.h"
 #include "check_registry.h"
+#include "complex3/builders/convex_polyhedron_axis.h"
 #include "complex3/closed_subcomplex.h"
 #include "complex3/complex_builder.h"
 #include "complex3/synthetic_complexes.h"
 #include "io/complex_ma.h"
+#include "io/mesh_io.h"
 
 namespace grassfire::checks {
 namespace {
@@ -64,7 +67,8 @@ void add(Corpus& c, const std::string& name, const RawComplex& raw) {
 }
 
 std::vector<Corpus> corpora(const CheckContext& ctx) {
-  Corpus syn{"synthetic", {}}, gen{"generated (seeded)", {}}, real{"real (data/ma)", {}};
+  Corpus syn{"synthetic", {}}, gen{"generated (seeded)", {}}, real{"real (data/ma)", {}},
+      convex{"convex polyhedra (builder)", {}};
   add(syn, "board-fin", board_fin({8, 1}));
   add(syn, "board-cylinder", board_cylinder({16, 3, 4, 2.0, 6}));
   for (int k = 2; k <= (ctx.quick ? 4 : 6); ++k) add(syn, "book:" + std::to_string(k), book({k, {}, 0, 1}));
@@ -98,7 +102,31 @@ std::vector<Corpus> corpora(const CheckContext& ctx) {
     std::sort(files.begin(), files.end());
     for (const std::string& f : files) add(real, f, read_ma(ctx.data_dir + "/ma/" + f));
   }
-  return {std::move(syn), std::move(gen), std::move(real)};
+  for (const char* mesh : {"cube.off", "octahedron.off"}) {
+    const std::string path = ctx.data_dir + "/meshes/" + mesh;
+    add(convex, mesh, convex_polyhedron_axis(convex_polyhedron_from_mesh(read_triangle_mesh(path))).complex);
+  }
+  // The cube [-2, 2]^3 cut by random planes with normals (3, 4, 0)/5-type Pythagorean
+  // directions: every |n|^2 is a square, so the builder is exact (s = 1).
+  const int pythagorean[6][3] = {{3, 4, 0}, {0, 3, 4}, {4, 0, 3}, {-3, 4, 0}, {0, -3, 4}, {4, 0, -3}};
+  for (int i = 0; i < (ctx.quick ? 2 : 8); ++i) {
+    ConvexPolyhedron p;
+    p.source = "cut cube " + std::to_string(i);
+    for (int axis = 0; axis < 3; ++axis)
+      for (int sign : {1, -1}) {
+        mpq_class n[3] = {0, 0, 0};
+        n[axis] = sign;
+        p.planes.push_back({n[0], n[1], n[2], 2});
+      }
+    std::uniform_int_distribution<int> which(0, 5), offset(6, 9), flip(0, 1);
+    for (int cut = 0; cut < 3; ++cut) {
+      const int* d = pythagorean[which(rng)];
+      const int sg = flip(rng) ? 1 : -1;
+      p.planes.push_back({sg * d[0], sg * d[1], sg * d[2], offset(rng)});  // |n| = 5, offset 6..9
+    }
+    add(convex, p.source, convex_polyhedron_axis(p).complex);
+  }
+  return {std::move(syn), std::move(gen), std::move(real), std::move(convex)};
 }
 
 double spacing_for(const MedialComplex& mc, bool quick) {

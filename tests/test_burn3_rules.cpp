@@ -1,0 +1,220 @@
+// The burning rule on hand-built complexes: Prop. 7 on closed surfaces, 1-dimensional
+// parts, the kink of the board and fin, monotonicity in h, burning sets, ET = BT - R.
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <cstdlib>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+#include "burn3/burn3_reference.h"
+#include "burn3/burn_sets.h"
+#include "burn3/discrete_burning.h"
+#include "burn3/junction_arrivals.h"
+#include "burn3/steiner_graph.h"
+#include "complex3/closed_subcomplex.h"
+#include "complex3/complex_builder.h"
+#include "complex3/synthetic_complexes.h"
+
+using namespace grassfire;
+
+namespace {
+
+MedialComplex built(const RawComplex& raw) {
+  MedialComplex mc(raw);
+  mc.validate();
+  return mc;
+}
+
+std::size_t infinite_points(const DiscreteBurning& d) {
+  std::size_t n = 0;
+  for (double b : d.vertex_bt) n += std::isinf(b) ? 1 : 0;
+  for (double b : d.steiner_bt) n += std::isinf(b) ? 1 : 0;
+  return n;
+}
+
+std::uint32_t vertex_at(const MedialComplex& mc, const ExactPoint3& p) {
+  for (std::uint32_t v = 0; v < mc.vertex_count(); ++v)
+    if (mc.vertex(v).exact == p) return v;
+  FAIL("no such vertex");
+  return kNoIndex;
+}
+
+}  // namespace
+
+TEST_CASE("Prop 7: closed surfaces never burn; what hangs off them does", "[burn3]") {
+  for (const RawComplex& raw : {tetrahedron_surface(), octahedron_surface()}) {
+    const MedialComplex mc = built(raw);
+    const DiscreteBurning d = burn_discrete(mc, {0.1});
+    CHECK(infinite_points(d) == mc.vertex_count() + d.steiner_bt.size());
+    const ClosedSubcomplex k = maximal_closed_subcomplex(mc);
+    CHECK(k.triangles == mc.triangle_count());
+  }
+  const MedialComplex flap = built(tetrahedron_with_flap());
+  const DiscreteBurning d = burn_discrete(flap, {0.1});
+  const ClosedSubcomplex k = maximal_closed_subcomplex(flap);
+  CHECK(k.triangles == 4);
+  CHECK(k.vertices == 4);
+  const SteinerGraph g(flap, 0.1, 1'000'000);
+  for (std::uint32_t node = 0; node < g.node_count(); ++node) {
+    const double bt = g.is_vertex(node) ? d.vertex_bt[node] : d.steiner_bt[node - g.vertex_count()];
+    const bool closed = g.is_vertex(node) ? k.vertex[node] : k.edge[g.edge_of(node)];
+    CHECK(std::isinf(bt) == closed);
+  }
+  // The flap's far edge ignites at f = R = 0; its middle burns at its distance from there.
+  CHECK(d.vertex_bt[vertex_at(flap, {1, -1, 0})] == 0.0);
+}
+
+TEST_CASE("1-dimensional parts burn by the 2D rule", "[burn3]") {
+  // A tripod of segments with leaves at distances 1, 2, 3 (R = 0): the junction burns at the
+  // second arrival, 2, and fire meets the third front at 1/2 from the junction (3.3.1).
+  ComplexBuilder b("tripod");
+  const auto o = b.vertex({0, 0, 0});
+  b.segment(o, b.vertex({1, 0, 0}));
+  b.segment(o, b.vertex({0, 2, 0}));
+  b.segment(o, b.vertex({0, 0, 3}));
+  const MedialComplex mc = built(b.raw());
+  const DiscreteBurning d = burn_discrete(mc, {0.25});
+  CHECK(d.vertex_bt[o] == Approx(2.0).margin(1e-12));
+  for (std::uint32_t e = 0; e < mc.edge_count(); ++e) {
+    if (mc.edge(e).length != 3.0) continue;
+    for (std::uint32_t i = 1; i <= d.steiner_count(e); ++i) {
+      const Vec3d p = DiscreteBurning::point_on_edge(mc, e, static_cast<double>(i) / (d.steiner_count(e) + 1));
+      CHECK(d.bt_on_edge(mc, e, i) == Approx(std::min(2 + p[2], 3 - p[2])).margin(1e-12));
+    }
+  }
+  // A hair on a sheet: fire coming up the hair dies at the sheet (its circle is intact).
+  ComplexBuilder h("hair");
+  const auto c = h.vertex({0, 0, 0});
+  std::vector<std::uint32_t> rim;
+  for (auto [x, y] : std::vector<std::pair<long, long>>{{4, 0}, {0, 4}, {-4, 0}, {0, -4}}) rim.push_back(h.vertex({x, y, 0}));
+  for (int j = 0; j < 4; ++j) h.triangle(c, rim[j], rim[(j + 1) % 4]);
+  h.segment(c, h.vertex({0, 0, 1}));
+  const MedialComplex hair = built(h.raw());
+  CHECK(hair.vertex(c).kind == VertexKind::SingularPoint);
+  const DiscreteBurning dh = burn_discrete(hair, {0.1});
+  CHECK(dh.vertex_bt[c] > 2.8);  // the sheet's front (distance to the rim, 2 sqrt 2), not the hair's (1)
+  CHECK(dh.vertex_bt[c] < 2.8285 + 0.05);
+}
+
+TEST_CASE("board and fin: the kink lands within the discretisation error of 2 + sqrt 2", "[burn3]") {
+  const MedialComplex mc = built(board_fin({10, 1}));
+  const std::uint32_t c = vertex_at(mc, {1, 1, 0});
+  const std::vector<std::uint32_t> n = singular_curve_from(mc, c);
+  CHECK(n.size() == 9);
+  auto side = [&](std::uint32_t t) {
+    Vec3d g{0, 0, 0};
+    for (std::uint32_t v : mc.triangle(t).v)
+      for (int i = 0; i < 3; ++i) g[i] += mc.vertex(v).approx[i] / 3;
+    return g[2] > 0 ? 2 : g[1] < g[0] ? 0 : 1;
+  };
+  for (double h : {0.125, 0.0625}) {
+    const DiscreteBurning d = burn_discrete(mc, {h});
+    const ErrorSummary err = summarize_error(mc, d, board_fin_burning_time, [](const Vec3d& p) {
+      return std::abs(p[0]) <= 7 && p[1] <= 7 && p[2] <= 7;
+    });
+    const auto kinks = kinks_along_curve(arrivals_along_curve(mc, d, c, n, side), 0, 2);
+    REQUIRE(kinks.size() == 1);
+    // The arrival difference has slope 1 - 1/sqrt2 along N: a time error e moves it by e / that.
+    CAPTURE(h, kinks[0], err.max_error);
+    CHECK(std::abs(kinks[0] - (2 + std::sqrt(2.0))) <= err.max_error / (1 - 1 / std::sqrt(2.0)));
+  }
+}
+
+TEST_CASE("finer nested spacings never burn later; errors shrink within 0.5 h", "[burn3]") {
+  // On the Y (edges 1 and sqrt 2 only) h = 1/2, 1/4, 1/8 double the points of every edge, so
+  // the graphs are nested and every coarse graph point exists at the finer spacing.
+  const MedialComplex y = built(y_junction(1));
+  DiscreteBurning coarse = burn_discrete(y, {0.5});
+  for (double h : {0.25, 0.125}) {
+    const DiscreteBurning fine = burn_discrete(y, {h});
+    for (std::uint32_t v = 0; v < y.vertex_count(); ++v) CHECK(fine.vertex_bt[v] <= coarse.vertex_bt[v] + 1e-12);
+    for (std::uint32_t e = 0; e < y.edge_count(); ++e) {
+      REQUIRE(fine.steiner_count(e) + 1 == 2 * (coarse.steiner_count(e) + 1));
+      for (std::uint32_t i = 1; i <= coarse.steiner_count(e); ++i)
+        CHECK(fine.bt_on_edge(y, e, 2 * i) <= coarse.bt_on_edge(y, e, i) + 1e-12);
+    }
+    coarse = fine;
+  }
+  // On the board and fin the error against the closed form stays within 0.5 h and shrinks.
+  const MedialComplex mc = built(board_fin({8, 1}));
+  double previous = 1e9;
+  for (double h : {0.5, 0.25, 0.125, 0.0625}) {
+    const ErrorSummary err = summarize_error(mc, burn_discrete(mc, {h}), board_fin_burning_time, [](const Vec3d& p) {
+      return std::abs(p[0]) <= 6 && p[1] <= 6 && p[2] <= 6;
+    });
+    CAPTURE(h, err.max_error);
+    CHECK(err.max_error <= 0.5 * h);
+    CHECK(err.max_error < previous);
+    CHECK(err.min_error >= -1e-12);
+    previous = err.max_error;
+  }
+}
+
+TEST_CASE("burning sets recomputed from witnesses agree with the event loop (Def. 10, Lemma 2)", "[burn3]") {
+  for (const RawComplex& raw : {board_fin({5, 1}), y_junction(1), tetrahedron_with_flap(), box_medial_axis(4, 3, 1, 2)}) {
+    const MedialComplex mc = built(raw);
+    const double h = 0.2;
+    const SteinerGraph g(mc, h, 1'000'000);
+    const DiscreteBurning d = burn_discrete(mc, {h});
+    const BurnSets sets(g, d);
+    for (std::uint32_t node = 0; node < g.node_count(); ++node) {
+      const double bt = sets.burn_time(node);
+      const double first = sets.first_time(node);
+      CHECK((first == bt || (std::isinf(first) && std::isinf(bt))));
+      if (std::isfinite(bt)) {
+        CHECK(sets.contains(node, bt));
+        CHECK(sets.contains(node, bt + 1));
+        CHECK_FALSE(sets.contains(node, std::nextafter(bt, -1.0)));
+      }
+    }
+  }
+}
+
+TEST_CASE("box medial axis: strata, radius and ET = BT - R", "[burn3]") {
+  const MedialComplex mc = built(box_medial_axis(5, 3, 2));
+  CHECK(mc.sheets().size() == 13);
+  CHECK(mc.count(EdgeStratum::Singular) == 12);
+  CHECK(mc.count(EdgeStratum::Border) == 12);
+  CHECK(mc.count(VertexKind::SingularPoint) == 12);  // 4 rectangle corners, 8 box corners
+  const std::uint32_t corner = vertex_at(mc, {3, 1, 0});
+  CHECK(mc.vertex(corner).radius_squared == 4);
+  CHECK(mc.link_elements(corner).size() == 4 + 6);  // four singular curves, six sectors
+  const DiscreteBurning d = burn_discrete(mc, {0.05});
+  for (std::uint32_t v = 0; v < mc.vertex_count(); ++v) CHECK(d.vertex_et[v] == d.vertex_bt[v] - mc.vertex(v).radius);
+  // The trapezoids burn from the box edges: their fronts reach the rectangle's edges at
+  // c sqrt2 = 2 sqrt2 (the slant height), where two of three sectors have arrived.
+  CHECK(d.vertex_bt[corner] == Approx(2 * std::sqrt(2.0)).margin(0.05));
+  CHECK(d.vertex_bt[corner] >= 2 * std::sqrt(2.0) - 1e-12);
+}
+
+TEST_CASE("grassfire burn3d: JSON report, and clear errors with a non-zero exit", "[burn3]") {
+  const std::string json = "/tmp/grassfire_burn3_test.json";
+  const std::string cmd = std::string(GF_CLI) + " burn3d book:3 --spacing 0.25 --json " + json + " > /dev/null";
+  REQUIRE(std::system(cmd.c_str()) == 0);
+  std::ifstream in(json);
+  const nlohmann::json j = nlohmann::json::parse(in);
+  CHECK(j["complex"]["sheets"] == 3);
+  CHECK(j["complex"]["singular_edges"] == 12);  // spine of height 6 at 2 cells per unit
+  CHECK(j["summary"]["unburned_vertices"] == 0);
+  CHECK(j["vertex_values"]["BT"].size() == j["complex"]["vertices"]);
+  std::remove(json.c_str());
+  // A convex mesh: its exact medial axis (the builder), burned; the cube's centre burns at
+  // sqrt 2, the distance from an edge of the cube to the centre inside a medial triangle.
+  const std::string cube = std::string(GF_CLI) + " burn3d " + GF_PROJECT_DATA + "/meshes/cube.off --spacing 0.05 --json " +
+                           json + " > /dev/null";
+  REQUIRE(std::system(cube.c_str()) == 0);
+  std::ifstream cube_in(json);
+  const nlohmann::json c = nlohmann::json::parse(cube_in);
+  CHECK(c["complex"]["singular_edges"] == 8);
+  CHECK(c["summary"]["max_bt"].get<double>() == Approx(std::sqrt(2.0)).margin(1e-9));
+  std::remove(json.c_str());
+  for (const std::string& bad : {std::string(" burn3d no-such-thing"), std::string(" burn3d board-fin --spacing -1"),
+                                 " burn3d " + std::string(GF_TEST_DATA) + "/3d/bad_index.ma",
+                                 std::string(" burn3d board-fin --method exact"),
+                                 " burn3d " + std::string(GF_PROJECT_DATA) + "/meshes/tripod.off"}) {
+    CAPTURE(bad);
+    CHECK(std::system((std::string(GF_CLI) + bad + " > /dev/null 2>&1").c_str()) != 0);
+  }
+}
