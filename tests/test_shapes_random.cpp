@@ -103,8 +103,10 @@ TEST_CASE("grid validation equals the reference on large polygons with long edge
   for (int i = 0; i < 6; ++i) {
     INFO("instance " << i);
     // Star-shaped with 3000 vertices, plus long chords: every 500th vertex removed in a
-    // run of 40 (long edges spanning many grid cells, also diagonally).
-    std::vector<Point2> p = star(rng, 3000, 0.5, -0.25, 1, 1.2, 0.0);
+    // run of 40 (long edges spanning many grid cells, also diagonally). The last two lie
+    // far from the origin, where the grid's cells are anchored.
+    const Point2 centre = i < 4 ? Point2{0.5, -0.25} : Point2{1e9, -3e9};
+    std::vector<Point2> p = star(rng, 3000, centre.x, centre.y, 1, 1.2, 0.0);
     std::vector<Point2> q;
     for (std::size_t k = 0; k < p.size(); ++k)
       if (k % 500 >= 40) q.push_back(p[k]);
@@ -112,7 +114,7 @@ TEST_CASE("grid validation equals the reference on large polygons with long edge
     if (i % 2 == 1) {  // move one vertex somewhere random: usually a self-intersection
       std::uniform_int_distribution<std::size_t> pick(0, q.size() - 1);
       std::uniform_real_distribution<double> u(-1.2, 1.2);
-      s.rings[0].points[pick(rng)] = {u(rng), u(rng)};
+      s.rings[0].points[pick(rng)] = {centre.x + u(rng), centre.y + u(rng)};
     }
     require_same(run(s, PairSearch::Grid), run(s, PairSearch::AllPairs));
   }

@@ -9,10 +9,13 @@ namespace grassfire {
 
 namespace {
 
-// The power of two at or above twice the mean edge extent and at or above 2^-30 times
-// the largest coordinate (so that |x / s| <= 2^30 and every column and row index fits).
+// The power of two at or above twice the mean edge extent, at or above 2^-30 times the
+// extent of the bounding box (at most 2^31 columns and rows, which the cell keys need), and
+// at or above 2^-52 times the largest coordinate (|x / s| <= 2^52: every cell index and
+// every cell side i * s is an exact double).
 double choose_cell_size(const std::vector<Ring>& rings) {
   double largest = 0.0, mean_extent = 0.0;
+  double min_x = std::numeric_limits<double>::max(), max_x = -min_x, min_y = min_x, max_y = -min_x;
   std::size_t edges = 0;
   for (const Ring& r : rings) edges += r.points.size();
   for (const Ring& r : rings) {
@@ -21,12 +24,17 @@ double choose_cell_size(const std::vector<Ring>& rings) {
       const Point2& a = r.points[i];
       const Point2& b = r.points[(i + 1) % n];
       largest = std::max({largest, std::fabs(a.x), std::fabs(a.y)});
+      min_x = std::min(min_x, a.x);
+      max_x = std::max(max_x, a.x);
+      min_y = std::min(min_y, a.y);
+      max_y = std::max(max_y, a.y);
       // Dividing before summing keeps the mean finite for coordinates near the double range.
       mean_extent += std::max(std::fabs(b.x - a.x), std::fabs(b.y - a.y)) / static_cast<double>(edges);
     }
   }
-  double target = std::max(2.0 * mean_extent, std::ldexp(largest, -30));
-  if (!(target <= std::numeric_limits<double>::max())) target = largest;
+  const double box = std::max(max_x - min_x, max_y - min_y);
+  double target = std::max({2.0 * mean_extent, std::ldexp(box, -30), std::ldexp(largest, -52)});
+  if (!(target <= std::numeric_limits<double>::max())) target = largest;  // an extent overflowed
   if (target == 0.0) return 1.0;
   int exponent = 0;
   std::frexp(target, &exponent);  // target = f * 2^exponent, f in [0.5, 1)

@@ -12,8 +12,8 @@
 // edge is registered column by column, in the rows between the rows of its heights at the
 // column's two sides; those rows are found exactly by orientation tests of cell corners
 // against the edge, so a long diagonal edge costs O(length / s) cells, not O(length^2).
-// s is the power of two at or above twice the mean edge extent (and at least 2^-30 times
-// the largest coordinate, which keeps every index below 2^31).
+// s is the power of two at or above twice the mean edge extent (and large enough that the
+// grid has at most 2^31 columns and rows, and that every cell index is below 2^52).
 // Contract: finite coordinates; rings have at least 2 vertices (closing edge implicit).
 // Complexity: O(E + R log R) to build for E edges and R registrations (R = O(E) when
 // edge lengths are comparable); candidate pairs cost the sum over cells of the squared

@@ -74,6 +74,7 @@ struct PairProblem {
   EdgeKey first, second;  // first < second
   std::uint32_t ring1, edge1, ring2, edge2;
   SegmentIntersection kind;
+  bool adjacent;  // consecutive edges of one ring
 };
 
 // Stage 3: judges candidate pairs and keeps the first offence.
@@ -87,7 +88,7 @@ class PairJudge {
     const SegmentIntersection kind = classify_segments(p0, p1, q0, q1, stats_);
     const bool adjacent = r1 == r2 && (next(r1, e1) == e2 || next(r2, e2) == e1);
     if (kind == SegmentIntersection::Disjoint || (adjacent && kind != SegmentIntersection::Overlap)) return;
-    PairProblem p{key(r1, e1), key(r2, e2), r1, e1, r2, e2, kind};
+    PairProblem p{key(r1, e1), key(r2, e2), r1, e1, r2, e2, kind, adjacent};
     if (p.second < p.first) {
       std::swap(p.first, p.second);
       std::swap(p.ring1, p.ring2);
@@ -144,8 +145,7 @@ void PairJudge::throw_if_any(const std::string& source) const {
   const PairProblem& p = *worst_;
   const long ring = static_cast<long>(p.ring1);
   const long vertex = static_cast<long>(std::get<1>(p.first));
-  const bool adjacent = p.ring1 == p.ring2 && (next(p.ring1, p.edge1) == p.edge2 || next(p.ring2, p.edge2) == p.edge1);
-  if (adjacent) {
+  if (p.adjacent) {
     const std::uint32_t before = next(p.ring1, p.edge1) == p.edge2 ? p.edge1 : p.edge2;
     const std::uint32_t after = before == p.edge1 ? p.edge2 : p.edge1;
     throw InvalidShapeError(source, ring, vertex,
