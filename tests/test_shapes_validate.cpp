@@ -91,6 +91,21 @@ TEST_CASE("an empty shape and non-finite coordinates are rejected", "[shapes]") 
   CHECK_THROWS_AS(validate_shape(b, "b"), InvalidShapeError);
 }
 
+TEST_CASE("degenerate rings: collinear vertices and a spike back to a vertex", "[shapes]") {
+  // Three distinct collinear vertices: the boundary doubles back at vertices 2 and 0; the
+  // pair of edges 2-0 and 0-1 comes first in (ring, vertex) order.
+  Shape2 line = polygon({{{0, 0}, {1, 1}, {3, 3}}});
+  CHECK_THROWS_WITH(validate_shape(line, "line"),
+                    "line: ring 0 (outer): spike at vertex 0: edges 2-0 and 0-1 overlap (the boundary doubles back on itself)");
+  // A spike whose tip returns exactly to the previous vertex's position touches it too;
+  // the first offence in (ring, vertex) order is the touch of edges 1-2 and 3-4.
+  Shape2 back = polygon({{{0, 0}, {4, 0}, {4, 2}, {6, 2}, {4, 2}, {4, 4}, {0, 4}}});
+  CHECK_THROWS_WITH(validate_shape(back, "back"), Catch::Contains("ring 0 (outer): edge 1-2 touches edge 3-4 at about (4, 2)"));
+  // Collinear consecutive edges that continue straight on are fine.
+  Shape2 straight = polygon({{{0, 0}, {1, 0}, {2, 0}, {2, 1}, {0, 1}}});
+  CHECK_NOTHROW(validate_shape(straight, "straight"));
+}
+
 TEST_CASE("a failed validation leaves the shape unchanged", "[shapes]") {
   Shape2 s = polygon({{{0, 0}, {0, 0}, {2, 2}, {2, 0}, {0, 2}, {0, 0}}});
   const Shape2 before = s;

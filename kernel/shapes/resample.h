@@ -6,7 +6,8 @@
 // is p_{n-1} p_0), edge lengths len_i = hypot(p_{i+1} - p_i), prefix sums C_0 = 0,
 // C_{i+1} = C_i + len_i, and length L = C_n. Sample k (0 <= k < m_r) has arc length
 // t_k = (L * k) / m_r; it lies on the last edge i with C_i <= t_k, at
-// s_k = p_i + f (p_{i+1} - p_i), f = min(1, (t_k - C_i) / len_i), coordinate by coordinate.
+// s_k = p_i + f (p_{i+1} - p_i), f = min(1, (t_k - C_i) / (C_{i+1} - C_i)) (f = 0 if that
+// difference is 0, possible only on the last edge), coordinate by coordinate.
 // So s_0 = p_0 exactly, and consecutive samples are L / m_r apart along the ring (up to
 // rounding), across vertices.
 // Sample counts:
