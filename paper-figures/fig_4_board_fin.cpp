@@ -92,7 +92,7 @@ std::vector<FigureFile> fig_4_2(const FigureContext& ctx) {
   canvas.save(ctx.out_dir + "/fig4_2.svg");
   return {{"fig4_2.svg",
            "Fig. 4.2: the board (half-plane, border B), the fin (quarter-plane, borders F and N) and the board and fin "
-           "joined along the junction N (red) from the corner c. Drawn: x in [-3, 8], y in [0, 8], fin height 4 of the "
+           "joined along the junction N (red) from the corner c. Drawn: x in [-3, 8], y in [0, 8], fin height 3 of the "
            "complex truncated at E = 10 (exact rational vertices, triangles of side 1/4)."}};
 }
 

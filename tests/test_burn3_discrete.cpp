@@ -8,19 +8,11 @@
 #include "burn3/discrete_burning.h"
 #include "complex3/complex_builder.h"
 #include "complex3/synthetic_complexes.h"
+#include "test_complex3_support.h"
 
 using namespace grassfire;
 
-namespace {
-
-MedialComplex built(const RawComplex& raw) {
-  MedialComplex mc(raw);
-  mc.validate();
-  return mc;
-}
-
-
-}  // namespace
+using testing::built;
 
 TEST_CASE("board and fin: error against the closed form shrinks with h", "[burn3]") {
   const MedialComplex mc = built(board_fin({10, 1}));

@@ -16,29 +16,20 @@
 #include "complex3/closed_subcomplex.h"
 #include "complex3/complex_builder.h"
 #include "complex3/synthetic_complexes.h"
+#include "test_complex3_support.h"
 
 using namespace grassfire;
 
-namespace {
+using testing::built;
+using testing::vertex_at;
 
-MedialComplex built(const RawComplex& raw) {
-  MedialComplex mc(raw);
-  mc.validate();
-  return mc;
-}
+namespace {
 
 std::size_t infinite_points(const DiscreteBurning& d) {
   std::size_t n = 0;
   for (double b : d.vertex_bt) n += std::isinf(b) ? 1 : 0;
   for (double b : d.steiner_bt) n += std::isinf(b) ? 1 : 0;
   return n;
-}
-
-std::uint32_t vertex_at(const MedialComplex& mc, const ExactPoint3& p) {
-  for (std::uint32_t v = 0; v < mc.vertex_count(); ++v)
-    if (mc.vertex(v).exact == p) return v;
-  FAIL("no such vertex");
-  return kNoIndex;
 }
 
 }  // namespace

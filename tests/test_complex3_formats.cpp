@@ -31,6 +31,15 @@ std::string error_of(F f) {
   return "no error";
 }
 
+// Each file must be rejected by `read` with a message containing the expected text.
+template <class Read>
+void check_rejections(const std::vector<std::pair<std::string, std::string>>& cases, Read read) {
+  for (const auto& [file, expected] : cases) {
+    CAPTURE(file);
+    CHECK_THAT(error_of([&] { read(data(file)); }), Catch::Contains(expected));
+  }
+}
+
 }  // namespace
 
 TEST_CASE("exact decimals", "[complex3]") {
@@ -97,10 +106,7 @@ TEST_CASE(".ma: malformed files are rejected naming file, line and problem", "[c
       {"bad_empty.ma", "bad_empty.ma: empty file"},
       {"bad_tag.ma", "bad_tag.ma:5: unknown line tag 'q'"},
   };
-  for (const auto& [file, expected] : cases) {
-    CAPTURE(file);
-    CHECK_THAT(error_of([&] { read_ma(data(file)); }), Catch::Contains(expected));
-  }
+  check_rejections(cases, [](const std::string& path) { read_ma(path); });
   CHECK_THAT(error_of([&] { MedialComplex mc(read_ma(data("bad_degenerate.ma"))); }),
              Catch::Contains("bad_degenerate.ma: triangle 0 is degenerate"));
   CHECK_THAT(error_of([&] { read_ma(data("does_not_exist.ma")); }), Catch::Contains("cannot open"));
@@ -152,10 +158,7 @@ TEST_CASE("meshes: malformed files are rejected", "[complex3]") {
       {"bad_truncated_binary.ply", "face 3: file ends early"},
       {"two_triangles_segment.ma", "unknown mesh extension 'ma'"},
   };
-  for (const auto& [file, expected] : cases) {
-    CAPTURE(file);
-    CHECK_THAT(error_of([&] { read_triangle_mesh(data(file)); }), Catch::Contains(expected));
-  }
+  check_rejections(cases, [](const std::string& path) { read_triangle_mesh(path); });
 }
 
 TEST_CASE("ball lists", "[complex3]") {

@@ -6,23 +6,15 @@
 #include "complex3/complex_builder.h"
 #include "complex3/medial_complex.h"
 #include "complex3/synthetic_complexes.h"
+#include "test_complex3_support.h"
 
 using namespace grassfire;
 
+using testing::built;
+
 namespace {
 
-MedialComplex built(const RawComplex& raw) {
-  MedialComplex mc(raw);
-  mc.validate();
-  return mc;
-}
-
-std::uint32_t vertex_at(const MedialComplex& mc, long x, long y, long z) {
-  for (std::uint32_t v = 0; v < mc.vertex_count(); ++v)
-    if (mc.vertex(v).exact == ExactPoint3{x, y, z}) return v;
-  FAIL("no vertex at " << x << " " << y << " " << z);
-  return kNoIndex;
-}
+std::uint32_t vertex_at(const MedialComplex& mc, long x, long y, long z) { return testing::vertex_at(mc, {x, y, z}); }
 
 std::size_t count_sectors(const MedialComplex& mc, std::uint32_t v) {
   std::size_t n = 0;
