@@ -165,10 +165,52 @@ class SampledAxisBuilder {
       edges.push_back({node_of[rf], node_of[rg], EdgeKind::Segment, interval_distance(centers_[rf], centers_[rg])});
     }
     report.inside_nodes = nodes.size();
-    report.edges = edges.size();
     report.predicates = locator.counters();
+    keep_largest_component(nodes, node_triangle, edges, ends, report);
+    report.edges = edges.size();
     auto geometry = std::make_shared<SampledVoronoiGeometry>(points_, std::move(node_triangle), std::move(ends));
     return MedialGraph(std::move(nodes), std::move(edges), std::move(geometry));
+  }
+
+  // The shape is connected, so its medial axis is; smaller components of the Voronoi
+  // graph are fragments left by undersampled sharp features. Keep the largest one.
+  static void keep_largest_component(std::vector<MedialNode>& nodes, std::vector<std::array<std::uint32_t, 3>>& triangles,
+                                     std::vector<MedialEdge>& edges,
+                                     std::vector<std::pair<std::uint32_t, std::uint32_t>>& ends,
+                                     SampledAxisReport& report) {
+    UnionFind components(nodes.size());
+    for (const MedialEdge& e : edges) components.unite(e.u, e.v);
+    std::vector<std::uint32_t> size(nodes.size(), 0);
+    for (std::uint32_t v = 0; v < nodes.size(); ++v) ++size[components.find(v)];
+    std::uint32_t largest = 0;
+    for (std::uint32_t v = 0; v < nodes.size(); ++v) {
+      if (size[v] > size[largest]) largest = v;
+      report.components += size[v] > 0 && components.find(v) == v;
+    }
+    if (nodes.empty() || report.components <= 1) return;
+    std::vector<std::uint32_t> renumber(nodes.size(), kNone);
+    std::uint32_t kept = 0;
+    for (std::uint32_t v = 0; v < nodes.size(); ++v) {
+      if (components.find(v) != largest) continue;
+      renumber[v] = kept;
+      nodes[kept] = nodes[v];
+      triangles[kept] = triangles[v];
+      ++kept;
+    }
+    report.fragment_nodes = nodes.size() - kept;
+    nodes.resize(kept);
+    triangles.resize(kept);
+    std::size_t k = 0;
+    for (std::size_t e = 0; e < edges.size(); ++e) {
+      if (renumber[edges[e].u] == kNone) continue;
+      edges[k] = edges[e];
+      edges[k].u = renumber[edges[e].u];
+      edges[k].v = renumber[edges[e].v];
+      ends[k] = {edges[k].u, edges[k].v};
+      ++k;
+    }
+    edges.resize(k);
+    ends.resize(k);
   }
 
   const Shape2& shape_;

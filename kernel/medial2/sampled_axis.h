@@ -8,7 +8,9 @@
 // boundary (possible where the sampling is sparse or near sharp corners). R at a node is
 // the circumradius of its Delaunay triangle (the distance to the nearest sample). Voronoi
 // vertices that coincide (cocircular samples, common on symmetric shapes) are merged into
-// one node, so no edge has zero length.
+// one node, so no edge has zero length. The shape is connected, and so is its medial
+// axis; where undersampled sharp features cut the Voronoi graph into several components,
+// only the largest is kept and the others are counted as fragments in the report.
 // Exactness: the Delaunay triangulation uses CGAL's exact predicates; cocircularity is
 // decided by CGAL's exact in-circle predicate; inside/outside and boundary crossings by
 // exact orientations on the rational circumcentres (geometry2/shape_locator.h); R and
@@ -36,6 +38,8 @@ struct SampledAxisReport {
   std::uint64_t boundary_dual_edges = 0;   // rule (a) above
   std::uint64_t crossing_edges = 0;        // rule (b) above
   std::uint64_t edges = 0;
+  std::uint64_t components = 0;           // of the Voronoi graph, before fragments are dropped
+  std::uint64_t fragment_nodes = 0;       // nodes in the dropped components
   PredicateCounters predicates;            // orientation filter successes and exact fallbacks
   double delaunay_seconds = 0;
   double axis_seconds = 0;                 // everything after the triangulation

@@ -39,19 +39,20 @@ std::vector<std::pair<std::uint32_t, std::uint32_t>> random_ends(std::mt19937_64
 
 MedialGraph integer_graph(std::mt19937_64& rng, std::uint32_t n, std::uint32_t extra) {
   auto ends = random_ends(rng, n, extra);
-  // Lengths first, then R by a walk that keeps every edge 1-Lipschitz: R(v) within
-  // [R(parent) - w, R(parent) + w] for tree edges; chords get length >= |R(a) - R(b)|.
+  // Lengths first, then R by a walk that keeps every edge strictly 1-Lipschitz, as R is
+  // on a medial axis: R(v) within [R(parent) - w + 1, R(parent) + w - 1] for tree edges;
+  // chords get length > |R(a) - R(b)|.
   std::vector<long> radius(n, 0);
   std::vector<long> length(ends.size(), 0);
   radius[0] = std::uniform_int_distribution<long>(0, 6)(rng);
   for (std::size_t e = 0; e < n - 1; ++e) {
     const auto [p, v] = ends[e];
     length[e] = std::uniform_int_distribution<long>(1, 4)(rng);
-    radius[v] = std::max(0L, radius[p] + std::uniform_int_distribution<long>(-length[e], length[e])(rng));
+    radius[v] = std::max(0L, radius[p] + std::uniform_int_distribution<long>(1 - length[e], length[e] - 1)(rng));
   }
   for (std::size_t e = n - 1; e < ends.size(); ++e) {
     const long gap = std::abs(radius[ends[e].first] - radius[ends[e].second]);
-    length[e] = std::max(1L, gap + std::uniform_int_distribution<long>(0, 2)(rng));
+    length[e] = gap + std::uniform_int_distribution<long>(1, 3)(rng);
   }
   std::vector<Point2> positions(n);
   std::vector<ExactSum> radii, lengths;
@@ -80,7 +81,8 @@ MedialGraph geometric_graph(std::mt19937_64& rng, std::uint32_t n, std::uint32_t
     long best = squared_distance(p, sites[0]);
     for (const IntPoint& s : sites) best = std::min(best, squared_distance(p, s));
     positions.push_back({static_cast<double>(p.x), static_cast<double>(p.y)});
-    radii.push_back(ExactSum::sqrt_of(best));
+    // 9/10 of the distance to the nearest site: strictly 1-Lipschitz along every edge.
+    radii.push_back(ExactSum::sqrt_of(make_rational(81 * best, 100)));
   }
   for (const auto& [a, b] : ends) lengths.push_back(ExactSum::sqrt_of(squared_distance(points[a], points[b])));
   return MedialGraph::from_exact(std::move(positions), std::move(radii), std::move(ends), std::move(lengths));

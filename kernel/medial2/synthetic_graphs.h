@@ -1,10 +1,10 @@
 // synthetic_graphs.h -- seeded random medial graphs with exact values, for tests and checks.
 //
-// Computes: graphs whose R is 1-Lipschitz along edges (|R(u) - R(v)| <= length), as on
-// every true medial axis, in two families:
-//  - integer: integer R and integer lengths, with many exact ties and Lipschitz equalities;
+// Computes: graphs whose R is strictly 1-Lipschitz along edges (|R(u) - R(v)| < length),
+// as on every true medial axis, in two families:
+//  - integer: integer R and integer lengths, with many exact ties between burn times;
 //  - geometric: nodes at integer points, lengths = Euclidean distances (square roots of
-//    integers), R = distance to the nearest of a few integer "boundary" sites.
+//    integers), R = 9/10 of the distance to the nearest of a few integer "boundary" sites.
 // Trees are random recursive trees; `extra_edges` adds random chords that create cycles.
 // Contract: nodes >= 1. Complexity: O(n * sites).
 #pragma once

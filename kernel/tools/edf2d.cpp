@@ -5,6 +5,7 @@
 
 #include "io/atomic_file.h"
 #include "io/medial2_json.h"
+#include "io/svg_medial2.h"
 #include "pipeline/edf2d.h"
 #include "shapes/builtin_shapes.h"
 #include "shapes/load_shape.h"
@@ -44,6 +45,9 @@ void print_summary(std::ostream& os, const Shape2& shape, const Edf2dOptions& op
   for (std::uint32_t v = 0; v < g.node_count(); ++v) leaves += g.degree(v) == 1;
   os << "graph      " << g.node_count() << " nodes, " << g.edge_count() << " edges, " << leaves << " leaves, "
      << g.component_count() << " components, " << g.cycle_rank() << " independent cycles\n";
+  if (r.axis_report.fragment_nodes > 0)
+    os << "fragments  " << r.axis_report.components - 1 << " small components (" << r.axis_report.fragment_nodes
+       << " nodes) of the Voronoi graph dropped; more samples reduce them\n";
   for (const ExtendedMedialAxis& e : b.ema) os << "EMA        " << describe_ema(g, e) << "\n";
   const NumberStats& st = b.stats();
   os << "certified  " << st.filter_decided << " by interval filter, " << st.mpfr_decided << " by multiprecision, "
@@ -67,6 +71,8 @@ int edf2d_main(int argc, char** argv) {
       .option("variant", "V", "burning algorithm: exact (arrival-ordered, the definition) or dissertation "
                               "(the thinning of 3.3.2)", "exact")
       .option("json", "OUT", "write nodes, edges, EDF, ET, ST and the EMA as JSON (format: README)")
+      .option("svg", "OUT", "draw the shape, its medial axis coloured by --field and the EMA as SVG")
+      .option("field", "F", "the field --svg colours the axis by: edf, et, st or r", "edf")
       .flag("quiet", "print nothing on success")
       .epilog("examples:\n  grassfire edf2d hole --json hole.json\n"
               "  grassfire edf2d data/shapes2d/Bone-1.json --samples 5000\n"
@@ -85,6 +91,7 @@ int edf2d_main(int argc, char** argv) {
     options.variant = GrassfireVariant::Dissertation;
   else if (variant != "exact")
     throw std::invalid_argument("option --variant must be 'exact' or 'dissertation', got '" + variant + "'");
+  const Medial2Field field = parse_medial2_field(opt.get("field"));
   const Shape2 shape = load_shape(opt.arg("SHAPE"));
   const Edf2dResult r = compute_edf2d(shape, options);
   if (opt.has("json")) {
@@ -92,6 +99,12 @@ int edf2d_main(int argc, char** argv) {
     for (const auto& ring : r.samples) samples += ring.size();
     write_file_atomically(opt.get("json"),
                           medial2d_json({shape.name, samples, r.graph.get(), r.burning.get(), &r.measures}));
+  }
+  if (opt.has("svg")) {
+    Medial2SvgOptions svg;
+    svg.field = field;
+    svg.title = shape.name;
+    write_file_atomically(opt.get("svg"), medial2_svg(shape, *r.graph, *r.burning, r.measures, svg));
   }
   if (!opt.has("quiet")) print_summary(std::cout, shape, options, r);
   return 0;
