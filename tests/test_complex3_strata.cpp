@@ -6,6 +6,7 @@
 #include "complex3/complex_builder.h"
 #include "complex3/medial_complex.h"
 #include "complex3/synthetic_complexes.h"
+#include "number/exact_sum.h"
 #include "test_complex3_support.h"
 
 using namespace grassfire;
@@ -190,4 +191,23 @@ TEST_CASE("malformed raw complexes are rejected with the first violation", "[com
   r.border_rules.push_back({{0, 9}, IgnitionRule::Never, {}});
   CHECK_THAT(message(r), Catch::Contains("not a border edge"));
   CHECK_THAT(message(RawComplex{}), Catch::Contains("empty"));
+  // Embedding: crossing triangles, a segment through a triangle, overlapping edges.
+  r = ok;  // three more points on the vertical line x = y = 1/4 and at (1, 1, 0)
+  const mpq_class q = make_rational(1, 4);
+  for (const ExactPoint3& p : {ExactPoint3{q, q, -1}, ExactPoint3{q, q, 1}, ExactPoint3{1, 1, 0}}) {
+    r.vertices.push_back(p);
+    r.radius_squared.push_back(0);
+  }
+  RawComplex crossing = r;  // a vertical triangle in the plane x = y, through the first one
+  crossing.triangles.push_back({3, 4, 5});
+  CHECK_THAT(message(crossing), Catch::Contains("triangle 0 and triangle 1 intersect"));
+  RawComplex pierced = r;  // a segment through the first triangle
+  pierced.segments.push_back({3, 4});
+  CHECK_THAT(message(pierced), Catch::Contains("segment 0 intersect"));
+  RawComplex folded = ok;  // a triangle sharing only vertex 0, along half of edge 0-1
+  folded.vertices.push_back({make_rational(1, 2), 0, 0});
+  folded.vertices.push_back({0, 0, 1});
+  folded.radius_squared.insert(folded.radius_squared.end(), {0, 0});
+  folded.triangles.push_back({0, 3, 4});
+  CHECK_THAT(message(folded), Catch::Contains("intersect"));
 }

@@ -9,6 +9,7 @@
 #include <tuple>
 
 #include "complex3/complex_checks.h"
+#include "complex3/complex_intersections.h"
 
 namespace grassfire {
 
@@ -53,7 +54,7 @@ PlanarFrame frame_of_triangle(const ExactPoint3& a, const ExactPoint3& b, const 
   return f;
 }
 
-MedialComplex::MedialComplex(const RawComplex& raw) : source_(raw.source) {
+MedialComplex::MedialComplex(const RawComplex& raw, bool check_embedding) : source_(raw.source) {
   check_raw(raw);
   vertices_.resize(raw.vertices.size());
   for (std::size_t i = 0; i < raw.vertices.size(); ++i) {
@@ -65,6 +66,8 @@ MedialComplex::MedialComplex(const RawComplex& raw) : source_(raw.source) {
   }
   build_edges(raw);
   order_edge_triangles();
+  if (check_embedding)
+    if (auto problem = first_improper_intersection(raw)) fail(*problem);
   build_sheets();
   build_sectors();
   classify_vertices();

@@ -31,10 +31,11 @@
 // violation): indices in range; no repeated vertex in a cell; distinct vertex positions;
 // no degenerate (collinear) triangle; no duplicate triangle or segment; no segment that is
 // also a triangle edge; R^2 >= 0; two triangles on one edge never lie in the same
-// half-plane (a local overlap); border rules name border edges. Global self-intersection
-// of far-apart triangles is not checked.
-// Complexity: construction O(n log n) exact comparisons (n = cells), validate() the same;
-// every accessor O(1).
+// half-plane (a local overlap); border rules name border edges; no two cells meet outside
+// their common faces (complex_intersections.h: CGAL box intersection and filtered exact
+// predicates; can be skipped by the caller that already knows the complex is embedded).
+// Complexity: construction O(n log n) exact comparisons (n = cells) plus O(k) filtered
+// predicates for k overlapping bounding boxes; validate() the same; accessors O(1).
 #pragma once
 
 #include <gmpxx.h>
@@ -142,7 +143,7 @@ struct LinkElement {
 
 class MedialComplex {
  public:
-  explicit MedialComplex(const RawComplex& raw);
+  explicit MedialComplex(const RawComplex& raw, bool check_embedding = true);
 
   // Re-checks the contract and every derived structure; throws std::logic_error naming
   // the first violation. Every test calls it after every construction.
