@@ -44,11 +44,22 @@ IVec icross(const IVec& a, const IVec& b) {
 }
 int idot_sign(const IVec& a, const IVec& b) { return sgn(mpz_class(a.x * b.x + a.y * b.y + a.z * b.z)); }
 bool izero(const IVec& a) { return sgn(a.x) == 0 && sgn(a.y) == 0 && sgn(a.z) == 0; }
-IVec integer_direction(const ExactPoint3& d) {
-  mpz_class l;
-  mpz_lcm(l.get_mpz_t(), d.x.get_den_mpz_t(), d.y.get_den_mpz_t());
-  mpz_lcm(l.get_mpz_t(), l.get_mpz_t(), d.z.get_den_mpz_t());
-  return {d.x.get_num() * (l / d.x.get_den()), d.y.get_num() * (l / d.y.get_den()), d.z.get_num() * (l / d.z.get_den())};
+// A vertex in homogeneous integer coordinates (X, Y, Z) / W, W > 0.
+struct Homogeneous {
+  mpz_class x, y, z, w;
+};
+Homogeneous homogeneous(const ExactPoint3& p) {
+  Homogeneous h;
+  mpz_lcm(h.w.get_mpz_t(), p.x.get_den_mpz_t(), p.y.get_den_mpz_t());
+  mpz_lcm(h.w.get_mpz_t(), h.w.get_mpz_t(), p.z.get_den_mpz_t());
+  h.x = p.x.get_num() * (h.w / p.x.get_den());
+  h.y = p.y.get_num() * (h.w / p.y.get_den());
+  h.z = p.z.get_num() * (h.w / p.z.get_den());
+  return h;
+}
+// q - p scaled by W_p W_q > 0.
+IVec direction(const Homogeneous& p, const Homogeneous& q) {
+  return {q.x * p.w - p.x * q.w, q.y * p.w - p.y * q.w, q.z * p.w - p.z * q.w};
 }
 
 // The cone of a cell at its vertex v: the directions of its edges at v (one or two).
@@ -67,8 +78,11 @@ bool in_cone(const Cone& c, const IVec& u) {
 
 class Tester {
  public:
-  explicit Tester(const RawComplex& raw) : raw_(raw) {
-    for (const ExactPoint3& p : raw.vertices) points_.emplace_back(exact_ft(p.x), exact_ft(p.y), exact_ft(p.z));
+  explicit Tester(const RawComplex& raw) {
+    for (const ExactPoint3& p : raw.vertices) {
+      points_.emplace_back(exact_ft(p.x), exact_ft(p.y), exact_ft(p.z));
+      h_.push_back(homogeneous(p));
+    }
   }
 
   // Do cells a and b meet outside their common vertices?
@@ -78,7 +92,7 @@ class Tester {
       for (int j = 0; j < b.n; ++j)
         if (a.v[i] == b.v[j]) common.push_back(a.v[i]);
     if (common.size() >= 2) return false;  // a shared edge: settled by the angular order
-    if (common.empty()) return meets(a, b);
+    if (common.empty()) return !(a.n == 3 && b.n == 3 && separated(a, b)) && meets(a, b);
     return cones_overlap(cone(a, common[0]), cone(b, common[0]));
   }
 
@@ -88,7 +102,7 @@ class Tester {
   Cone cone(const Cell& c, std::uint32_t v) const {
     std::vector<IVec> dirs;
     for (int i = 0; i < c.n; ++i)
-      if (c.v[i] != v) dirs.push_back(integer_direction(raw_.vertices[c.v[i]] - raw_.vertices[v]));
+      if (c.v[i] != v) dirs.push_back(direction(h_[v], h_[c.v[i]]));
     if (dirs.size() == 1) return {dirs[0], dirs[0], {}, false};
     return {dirs[0], dirs[1], icross(dirs[0], dirs[1]), true};
   }
@@ -105,6 +119,35 @@ class Tester {
     // One plane: two sectors of angle < pi overlap iff one holds a boundary ray of the other.
     return in_cone(p, q.a) || in_cone(p, q.b) || in_cone(q, p.a) || in_cone(q, p.b);
   }
+  // An exact certificate that two triangles without a common vertex are disjoint: one lies
+  // strictly on one side of the other's plane, or they are coplanar and an edge line of one
+  // separates them strictly (for convex polygons in a plane such a line exists iff they are
+  // disjoint). False means "not certified here": the full test decides.
+  bool separated(const Cell& a, const Cell& b) const {
+    const IVec na = icross(direction(h_[a.v[0]], h_[a.v[1]]), direction(h_[a.v[0]], h_[a.v[2]]));
+    int sides[3];
+    for (int i = 0; i < 3; ++i) sides[i] = idot_sign(na, direction(h_[a.v[0]], h_[b.v[i]]));
+    if (sides[0] == sides[1] && sides[1] == sides[2] && sides[0] != 0) return true;
+    const bool coplanar = sides[0] == 0 && sides[1] == 0 && sides[2] == 0;
+    if (!coplanar) {
+      const IVec nb = icross(direction(h_[b.v[0]], h_[b.v[1]]), direction(h_[b.v[0]], h_[b.v[2]]));
+      for (int i = 0; i < 3; ++i) sides[i] = idot_sign(nb, direction(h_[b.v[0]], h_[a.v[i]]));
+      return sides[0] == sides[1] && sides[1] == sides[2] && sides[0] != 0;
+    }
+    return separating_edge(a, b, na) || separating_edge(b, a, na);
+  }
+  bool separating_edge(const Cell& a, const Cell& b, const IVec& n) const {
+    for (int e = 0; e < 3; ++e) {
+      const Homogeneous &p = h_[a.v[e]], &q = h_[a.v[(e + 1) % 3]];
+      const IVec pq = direction(p, q);
+      const int inner = idot_sign(n, icross(pq, direction(p, h_[a.v[(e + 2) % 3]])));
+      bool all_outside = true;
+      for (int i = 0; i < 3 && all_outside; ++i) all_outside = idot_sign(n, icross(pq, direction(p, h_[b.v[i]]))) == -inner;
+      if (all_outside) return true;
+    }
+    return false;
+  }
+
   bool meets(const Cell& a, const Cell& b) const {
     if (a.n < b.n) return meets(b, a);
     const Point& a0 = points_[a.v[0]];
@@ -121,8 +164,8 @@ class Tester {
     }
     return points_[a.v[0]] == points_[b.v[0]];
   }
-  const RawComplex& raw_;
   std::vector<Point> points_;
+  std::vector<Homogeneous> h_;
 };
 
 }  // namespace

@@ -3,15 +3,16 @@
 //
 // Computes: the first pair of cells (triangles, dangling segments) that meet outside
 // their common faces, or nothing. Broad phase: CGAL box_intersection_d on bounding boxes
-// of the exact coordinates (rounded outwards). Narrow phase, with CGAL's filtered exact
-// predicates on the rational coordinates (Epeck): cells without a common vertex must not
-// intersect at all (CGAL do_intersect); cells sharing exactly one vertex v meet beyond v
-// iff their cones at v (the directions of their edges at v) overlap, since near v each flat
-// cell is its cone and the set two convex cells share is convex: an exact rational test on
-// direction vectors; triangles sharing an edge meet beyond it only when coplanar on the
-// same side, which MedialComplex's exact angular order already rejects.
+// of the exact coordinates (rounded outwards). Narrow phase, exact, in integer
+// homogeneous coordinates: cells without a common vertex must not intersect at all (first
+// a separation certificate: a strict separating plane, or for coplanar triangles a
+// separating edge line; otherwise CGAL do_intersect with Epeck on the rational points);
+// cells sharing exactly one vertex v meet beyond v iff their cones at v (the directions of
+// their edges at v) overlap, since near v each flat cell is its cone and the set two
+// convex cells share is convex; triangles sharing an edge meet beyond it only when
+// coplanar on the same side, which MedialComplex's exact angular order already rejects.
 // Contract: cells valid as RawComplex (indices, distinct vertices, no degenerate triangle).
-// Complexity: O(n log n + k) for k box overlaps, each an O(1) filtered predicate.
+// Complexity: O(n log n + k) for k box overlaps, each O(1) integer sign tests.
 #pragma once
 
 #include <optional>
