@@ -51,6 +51,30 @@ const BurnTimes::Refined& BurnTimes::refined(TimeId t) const {
   return *refined_[t];
 }
 
+const LongInterval& BurnTimes::long_value(TimeId t) const {
+  if (long_.size() < records_.size()) {
+    long_.resize(records_.size());
+    has_long_.resize(records_.size(), 0);
+  }
+  std::vector<TimeId> chain;
+  for (TimeId cur = t; cur != kNoTime && !has_long_[cur]; cur = records_[cur].pred) chain.push_back(cur);
+  for (auto it = chain.rbegin(); it != chain.rend(); ++it) {
+    const Record& r = records_[*it];
+    long_[*it] = r.pred == kNoTime ? graph_->geometry().enclose_radius_long(r.ref)
+                                   : long_[r.pred] + graph_->geometry().enclose_length_long(r.ref);
+    has_long_[*it] = 1;
+  }
+  return long_[t];
+}
+
+int BurnTimes::long_sign(TimeId a, TimeId b) const {
+  const LongInterval& x = long_value(a);
+  const LongInterval& y = long_value(b);
+  if (x.hi < y.lo) return -1;
+  if (y.hi < x.lo) return 1;
+  return kUndecided;
+}
+
 int BurnTimes::refined_sign(TimeId a, TimeId b) const {
   const Refined& x = refined(a);
   const Refined& y = refined(b);
@@ -137,6 +161,11 @@ int BurnTimes::compare(TimeId a, TimeId b) const {
   if (y.hi < x.lo) {
     ++stats_.filter_decided;
     return 1;
+  }
+  const int l = long_sign(a, b);
+  if (l != kUndecided) {
+    ++stats_.extended_decided;
+    return l;
   }
   const int r = refined_sign(a, b);
   if (r != kUndecided) {

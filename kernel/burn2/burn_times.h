@@ -1,14 +1,16 @@
 // burn_times.h -- burn times on a medial graph, kept as a DAG of exact expressions.
 //
 // Computes: certified comparisons of burn times. A burn time is either an ignition,
-// R(z) at a leaf z, or an advance, T + length(e) along an edge (3.3.1). Three stages:
+// R(z) at a leaf z, or an advance, T + length(e) along an edge (3.3.1). Four stages:
 // (1) every record keeps a certified double enclosure, which decides most comparisons;
-// (2) otherwise both times get 128-bit MPFR enclosures, computed along their chains from
-// the exact atoms and memoised per record, so a chain is refined at most once however
-// often it is compared (near-ties between long chains are common on almost symmetric
-// shapes); (3) otherwise both times are expanded into ExactSums (R at the ignition leaf
-// plus the edge lengths along the chain), their common part cancelled, and the sign of
-// the difference decided exactly (number/exact_sum.h).
+// (2) otherwise both times get x87 extended-precision enclosures (11 more bits), and
+// (3) then 128-bit MPFR enclosures, each computed along the chains from the atoms'
+// enclosures and memoised per record, so a chain is refined at most once per stage
+// however often it is compared (near-ties between long chains occur on large inputs,
+// where the double enclosures of 10^5 summed lengths are about 10^-11 wide);
+// (4) otherwise both times are expanded into ExactSums (R at the ignition leaf plus the
+// edge lengths along the chain), their common part cancelled, and the sign of the
+// difference decided exactly (number/exact_sum.h).
 // Contract: the graph outlives this object; every edge id and node id is valid.
 // Complexity: O(1) to create a time; a comparison is O(1) when the filter decides, and
 // O(L) exact work for chains of length L otherwise.
@@ -65,7 +67,10 @@ class BurnTimes {
   };
   // Exact a - b with the shared part of the two chains cancelled.
   ExactSum exact_difference(TimeId a, TimeId b) const;
-  // Stage 2: sign of a - b from memoised 128-bit enclosures, or kUndecided.
+  // Stage 2: sign of a - b from memoised extended-precision enclosures, or kUndecided.
+  int long_sign(TimeId a, TimeId b) const;
+  const LongInterval& long_value(TimeId t) const;
+  // Stage 3: sign of a - b from memoised 128-bit enclosures, or kUndecided.
   int refined_sign(TimeId a, TimeId b) const;
   struct Refined;
   const Refined& refined(TimeId t) const;
@@ -74,6 +79,8 @@ class BurnTimes {
   std::vector<Record> records_;
   mutable NumberStats stats_;
   mutable std::vector<std::unique_ptr<Refined>> refined_;  // by TimeId, filled on demand
+  mutable std::vector<LongInterval> long_;                  // by TimeId, filled on demand
+  mutable std::vector<std::uint8_t> has_long_;
 };
 
 }  // namespace grassfire

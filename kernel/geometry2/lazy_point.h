@@ -15,6 +15,7 @@
 
 #include "geometry2/point2.h"
 #include "number/interval.h"
+#include "number/long_interval.h"
 
 namespace grassfire {
 
@@ -65,6 +66,10 @@ struct Circle {
   Interval radius;
 };
 Circle interval_circle(const Point2& a, const Point2& b, const Point2& c);
+// The same in x87 extended precision (11 more bits); false for a nearly degenerate or
+// extreme triangle, for which the caller must use the exact circumcentre.
+bool long_circle(const Point2& a, const Point2& b, const Point2& c, LongInterval& x, LongInterval& y,
+                 LongInterval& radius);
 
 // Interval enclosure of an exact rational point.
 IntervalPoint2 enclose(const ExactPoint2& p);

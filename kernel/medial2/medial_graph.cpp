@@ -17,6 +17,28 @@ const char* to_string(EdgeKind kind) {
   return "unknown";
 }
 
+namespace {
+template <class Enclose>
+LongInterval long_from_mpfr(Enclose enclose) {
+  mpfr_t lo, hi;
+  mpfr_init2(lo, 80);
+  mpfr_init2(hi, 80);
+  enclose(lo, hi);
+  const LongInterval r{mpfr_get_ld(lo, MPFR_RNDD), mpfr_get_ld(hi, MPFR_RNDU)};
+  mpfr_clear(lo);
+  mpfr_clear(hi);
+  return r;
+}
+}  // namespace
+
+LongInterval MedialGeometry::enclose_radius_long(std::uint32_t node) const {
+  return long_from_mpfr([&](mpfr_ptr lo, mpfr_ptr hi) { enclose_radius(node, lo, hi); });
+}
+
+LongInterval MedialGeometry::enclose_length_long(std::uint32_t edge) const {
+  return long_from_mpfr([&](mpfr_ptr lo, mpfr_ptr hi) { enclose_length(edge, lo, hi); });
+}
+
 Point2 MedialGeometry::point_along(const MedialGraph& g, std::uint32_t edge, std::uint32_t from,
                                    double s) const {
   const MedialEdge& e = g.edge(edge);

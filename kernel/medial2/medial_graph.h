@@ -24,6 +24,7 @@
 #include "geometry2/point2.h"
 #include "number/exact_sum.h"
 #include "number/interval.h"
+#include "number/long_interval.h"
 
 namespace grassfire {
 
@@ -60,6 +61,10 @@ class MedialGeometry {
   virtual void enclose_length(std::uint32_t edge, mpfr_ptr lo, mpfr_ptr hi) const {
     exact_length(edge).enclose(lo, hi);
   }
+  // Enclosures in x87 extended precision, the second filter of burn-time comparisons;
+  // by default rounded outwards from 80-bit MPFR enclosures.
+  virtual LongInterval enclose_radius_long(std::uint32_t node) const;
+  virtual LongInterval enclose_length_long(std::uint32_t edge) const;
   // The point at arc length s (0 <= s <= length) from end `from` along the edge, for
   // drawing and reporting; straight segments by default.
   virtual Point2 point_along(const MedialGraph& g, std::uint32_t edge, std::uint32_t from, double s) const;

@@ -1,6 +1,8 @@
 // sampled_geometry.cpp -- see sampled_geometry.h.
 #include "medial2/sampled_geometry.h"
 
+#include "geometry2/lazy_point.h"
+
 #include <algorithm>
 #include <climits>
 #include <cmath>
@@ -125,6 +127,28 @@ void SampledVoronoiGeometry::enclose_radius(std::uint32_t node, mpfr_ptr lo, mpf
 void SampledVoronoiGeometry::enclose_length(std::uint32_t edge, mpfr_ptr lo, mpfr_ptr hi) const {
   const SquaredLength s = squared_length(edge);
   enclose_root(s.num, s.den, s.scale, lo, hi);
+}
+
+const SampledVoronoiGeometry::LongCircle& SampledVoronoiGeometry::long_circle_of(std::uint32_t node) const {
+  if (long_circles_.size() < triangles_.size()) long_circles_.resize(triangles_.size());
+  LongCircle& c = long_circles_[node];
+  if (c.state == 0) {
+    const auto& t = triangles_[node];
+    c.state = long_circle(samples_[t[0]], samples_[t[1]], samples_[t[2]], c.x, c.y, c.radius) ? 1 : 2;
+  }
+  return c;
+}
+
+LongInterval SampledVoronoiGeometry::enclose_radius_long(std::uint32_t node) const {
+  const LongCircle& c = long_circle_of(node);
+  return c.state == 1 ? c.radius : MedialGeometry::enclose_radius_long(node);
+}
+
+LongInterval SampledVoronoiGeometry::enclose_length_long(std::uint32_t edge) const {
+  const LongCircle& a = long_circle_of(ends_[edge].first);
+  const LongCircle& b = long_circle_of(ends_[edge].second);
+  if (a.state != 1 || b.state != 1) return MedialGeometry::enclose_length_long(edge);
+  return sqrt(square(a.x - b.x) + square(a.y - b.y));
 }
 
 std::string SampledVoronoiGeometry::description() const {

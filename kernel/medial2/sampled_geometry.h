@@ -39,6 +39,8 @@ class SampledVoronoiGeometry : public MedialGeometry {
   ExactSum exact_length(std::uint32_t edge) const override;
   void enclose_radius(std::uint32_t node, mpfr_ptr lo, mpfr_ptr hi) const override;
   void enclose_length(std::uint32_t edge, mpfr_ptr lo, mpfr_ptr hi) const override;
+  LongInterval enclose_radius_long(std::uint32_t node) const override;
+  LongInterval enclose_length_long(std::uint32_t edge) const override;
   std::string description() const override;
 
   const std::vector<Point2>& samples() const { return samples_; }
@@ -57,7 +59,14 @@ class SampledVoronoiGeometry : public MedialGeometry {
   std::vector<Point2> samples_;
   std::vector<std::array<std::uint32_t, 3>> triangles_;
   std::vector<std::pair<std::uint32_t, std::uint32_t>> ends_;
+  struct LongCircle {
+    LongInterval x, y, radius;
+    std::uint8_t state = 0;  // 0 not computed, 1 valid, 2 degenerate (use the exact path)
+  };
+  const LongCircle& long_circle_of(std::uint32_t node) const;
+
   mutable std::vector<std::unique_ptr<IntegerCircumcenter>> centers_;  // by node, on demand
+  mutable std::vector<LongCircle> long_circles_;                        // by node, on demand
 };
 
 }  // namespace grassfire

@@ -111,6 +111,7 @@ Interval enclose(const mpq_class& q) {
 
 void NumberStats::merge(const NumberStats& o) {
   filter_decided += o.filter_decided;
+  extended_decided += o.extended_decided;
   mpfr_decided += o.mpfr_decided;
   exact_zero += o.exact_zero;
   uncertified_zero += o.uncertified_zero;

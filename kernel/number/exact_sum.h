@@ -84,6 +84,7 @@ class ExactSum {
 // How often each stage of the certified sign decided (DESIGN.md 3: count fallbacks).
 struct NumberStats {
   std::uint64_t filter_decided = 0;    // decided by the double interval
+  std::uint64_t extended_decided = 0;  // decided by x87 extended-precision enclosures
   std::uint64_t mpfr_decided = 0;      // decided by a multiprecision enclosure
   std::uint64_t exact_zero = 0;        // proved zero by the square-class test
   std::uint64_t uncertified_zero = 0;  // constants left, no precision up to kMaxBits separated
