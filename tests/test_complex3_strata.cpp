@@ -204,6 +204,14 @@ TEST_CASE("malformed raw complexes are rejected with the first violation", "[com
   RawComplex pierced = r;  // a segment through the first triangle
   pierced.segments.push_back({3, 4});
   CHECK_THAT(message(pierced), Catch::Contains("segment 0 intersect"));
+  RawComplex coplanar = ok;  // a second triangle in the plane z = 0 overlapping the first
+  coplanar.vertices.insert(coplanar.vertices.end(), {{q, q, 0}, {2, q, 0}, {q, 2, 0}});
+  coplanar.radius_squared.insert(coplanar.radius_squared.end(), {0, 0, 0});
+  coplanar.triangles.push_back({3, 4, 5});
+  CHECK_THAT(message(coplanar), Catch::Contains("triangle 0 and triangle 1 intersect"));
+  RawComplex apart = coplanar;  // the same, moved clear of the first: accepted
+  for (std::size_t v = 3; v < 6; ++v) apart.vertices[v].x += 2;
+  CHECK(message(apart) == "accepted");
   RawComplex folded = ok;  // a triangle sharing only vertex 0, along half of edge 0-1
   folded.vertices.push_back({make_rational(1, 2), 0, 0});
   folded.vertices.push_back({0, 0, 1});
