@@ -197,8 +197,9 @@ std::optional<std::string> first_improper_intersection(const RawComplex& raw) {
   std::optional<std::string> found;
   auto callback = [&](const Box& a, const Box& b) {
     if (found) return;
-    const Cell &ca = *a.handle(), &cb = *b.handle();
-    if (tester.improper(ca, cb)) found = name(ca) + " and " + name(cb) + " intersect (the complex is not embedded)";
+    const Cell *ca = a.handle(), *cb = b.handle();
+    if (cb->n > ca->n || (cb->n == ca->n && cb->id < ca->id)) std::swap(ca, cb);  // a deterministic message
+    if (tester.improper(*ca, *cb)) found = name(*ca) + " and " + name(*cb) + " intersect (the complex is not embedded)";
   };
   CGAL::box_self_intersection_d(boxes.begin(), boxes.end(), callback);
   return found;
