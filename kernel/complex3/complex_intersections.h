@@ -1,7 +1,7 @@
 // complex_intersections.h -- is a 2-complex embedded? Exact search for improper
 // intersections between its cells.
 //
-// Computes: the first pair of cells (triangles, dangling segments) that meet outside
+// Computes: a pair of cells (triangles, dangling segments) that meet outside
 // their common faces, or nothing. Broad phase: CGAL box_intersection_d on bounding boxes
 // of the exact coordinates (rounded outwards). Narrow phase, exact, in integer
 // homogeneous coordinates: cells without a common vertex must not intersect at all (first
@@ -22,6 +22,7 @@
 
 namespace grassfire {
 
+// The pair found first in the box scan (the message orders the pair deterministically).
 std::optional<std::string> first_improper_intersection(const RawComplex& raw);
 
 }  // namespace grassfire
