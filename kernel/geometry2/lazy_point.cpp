@@ -192,7 +192,7 @@ mpq_class LazyPoint::squared_distance(const Point2& p) const {
   return dx * dx + dy * dy;
 }
 
-int orientation(const LazyPoint& p, const LazyPoint& q, const LazyPoint& r, PredicateCounters* counters) {
+int orientation(const LazyPoint& p, const LazyPoint& q, const LazyPoint& r, OrientationStats* counters) {
   const IntervalPoint2 &a = p.approx(), &b = q.approx(), &c = r.approx();
   const Interval det = (b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x);
   const int s = certified_sign(det);

@@ -14,6 +14,7 @@
 #include <cstdint>
 
 #include "geometry2/point2.h"
+#include "geometry2/predicates2.h"
 #include "number/interval.h"
 #include "number/long_interval.h"
 
@@ -48,13 +49,8 @@ class LazyPoint {
   IntervalPoint2 approx_;
 };
 
-struct PredicateCounters {
-  std::uint64_t filtered = 0;
-  std::uint64_t exact = 0;
-};
-
 // Sign of the orientation of (p, q, r): +1 left turn, -1 right turn, 0 collinear. Exact.
-int orientation(const LazyPoint& p, const LazyPoint& q, const LazyPoint& r, PredicateCounters* counters = nullptr);
+int orientation(const LazyPoint& p, const LazyPoint& q, const LazyPoint& r, OrientationStats* counters = nullptr);
 
 // Exact circumcentre and its interval enclosure.
 ExactPoint2 exact_circumcenter(const Point2& a, const Point2& b, const Point2& c);

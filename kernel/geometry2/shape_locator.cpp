@@ -158,10 +158,10 @@ bool ShapeLocator::crosses(const LazyPoint& p, const LazyPoint& q, const Edge& e
   return orientation(a, b, p, &counters_) * orientation(a, b, q, &counters_) < 0;
 }
 
-Location ShapeLocator::locate(const LazyPoint& p) const {
+BoundedSide ShapeLocator::locate(const LazyPoint& p) const {
   const IntervalPoint2& box = p.approx();
   const Point2 lo{x0_ + dx_, y0_ + dy_}, hi{x0_ + (nx_ - 1) * dx_, y0_ + (ny_ - 1) * dy_};
-  if (box.x.hi < lo.x || box.x.lo > hi.x || box.y.hi < lo.y || box.y.lo > hi.y) return Location::Outside;
+  if (box.x.hi < lo.x || box.x.lo > hi.x || box.y.hi < lo.y || box.y.lo > hi.y) return BoundedSide::Outside;
   Point2 where = p.nearest();
   Cell cell = cell_of(where.x, where.y);
   // The widened cell must contain the whole enclosure; otherwise locate by exact value.
@@ -176,10 +176,10 @@ Location ShapeLocator::locate(const LazyPoint& p) const {
   std::uint8_t parity = reference_inside_[c];
   for (std::uint32_t k = cell_start_[c]; k < cell_start_[c + 1]; ++k) {
     const Edge& e = edges_[cell_edges_[k]];
-    if (on_edge(p, e)) return Location::Boundary;
+    if (on_edge(p, e)) return BoundedSide::Boundary;
     if (crosses(p, ref, e)) parity ^= 1;
   }
-  return parity ? Location::Inside : Location::Outside;
+  return parity ? BoundedSide::Inside : BoundedSide::Outside;
 }
 
 bool ShapeLocator::segment_meets_edge(const LazyPoint& p, const LazyPoint& q, const Edge& e) const {

@@ -25,19 +25,17 @@
 
 namespace grassfire {
 
-enum class Location { Inside, Boundary, Outside };
-
 class ShapeLocator {
  public:
   // `expected_queries` sizes the grid (about one cell per boundary edge, or per 4 queries
   // when there are many more queries than edges, so a query rarely meets an edge).
   explicit ShapeLocator(const Shape2& shape, std::size_t expected_queries = 0);
 
-  Location locate(const LazyPoint& p) const;
+  BoundedSide locate(const LazyPoint& p) const;
   // True when the closed segment pq meets the shape boundary.
   bool segment_meets_boundary(const LazyPoint& p, const LazyPoint& q) const;
 
-  const PredicateCounters& counters() const { return counters_; }
+  const OrientationStats& counters() const { return counters_; }
   std::size_t edge_count() const { return edges_.size(); }
 
  private:
@@ -62,7 +60,7 @@ class ShapeLocator {
   std::vector<std::uint32_t> cell_edges_;
   std::vector<Point2> reference_;          // per cell
   std::vector<std::uint8_t> reference_inside_;
-  mutable PredicateCounters counters_;
+  mutable OrientationStats counters_;
 };
 
 }  // namespace grassfire

@@ -138,7 +138,7 @@ class SampledAxisBuilder {
     std::vector<std::array<std::uint32_t, 3>> node_triangle;
     for (std::uint32_t f = 0; f < faces_.size(); ++f) {
       if (groups_.find(f) != f) continue;
-      if (locator.locate(center_of(f)) != Location::Inside) continue;
+      if (locator.locate(center_of(f)) != BoundedSide::Inside) continue;
       node_of[f] = static_cast<std::uint32_t>(nodes.size());
       const IntervalPoint2& c = centers_[f];
       nodes.push_back({Point2{c.x.mid(), c.y.mid()}, radii_[f], std::max(c.x.radius(), c.y.radius())});

@@ -40,7 +40,7 @@ struct SampledAxisReport {
   std::uint64_t edges = 0;
   std::uint64_t components = 0;           // of the Voronoi graph, before fragments are dropped
   std::uint64_t fragment_nodes = 0;       // nodes in the dropped components
-  PredicateCounters predicates;            // orientation filter successes and exact fallbacks
+  OrientationStats predicates;            // orientation filter successes and exact fallbacks
   double delaunay_seconds = 0;
   double axis_seconds = 0;                 // everything after the triangulation
 };
