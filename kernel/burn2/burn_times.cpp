@@ -1,6 +1,8 @@
 // burn_times.cpp -- see burn_times.h.
 #include "burn2/burn_times.h"
 
+#include "number/mpfr_bounds.h"
+
 #include <stdexcept>
 
 namespace grassfire {
@@ -10,18 +12,8 @@ constexpr long kRefinedBits = 128;
 }  // namespace
 
 // A 128-bit MPFR enclosure [lo, hi].
-struct BurnTimes::Refined {
-  mpfr_t lo, hi;
-  Refined() {
-    mpfr_init2(lo, kRefinedBits);
-    mpfr_init2(hi, kRefinedBits);
-  }
-  ~Refined() {
-    mpfr_clear(lo);
-    mpfr_clear(hi);
-  }
-  Refined(const Refined&) = delete;
-  Refined& operator=(const Refined&) = delete;
+struct BurnTimes::Refined : MpfrBounds {
+  Refined() : MpfrBounds(kRefinedBits) {}
 };
 
 BurnTimes::BurnTimes(const MedialGraph& graph) : graph_(&graph) {}
@@ -40,7 +32,7 @@ const BurnTimes::Refined& BurnTimes::refined(TimeId t) const {
     if (r.pred == kNoTime) {
       graph_->geometry().enclose_radius(r.ref, out->lo, out->hi);
     } else {
-      Refined step;
+      MpfrBounds step(kRefinedBits);
       graph_->geometry().enclose_length(r.ref, step.lo, step.hi);
       const Refined& base = *refined_[r.pred];
       mpfr_add(out->lo, base.lo, step.lo, MPFR_RNDD);

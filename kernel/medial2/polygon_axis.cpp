@@ -12,6 +12,7 @@
 #include "medial2/polygon_axis_geometry.h"
 #include "medial2/segment_voronoi.h"
 #include "medial2/voronoi_circle.h"
+#include "medial2/union_find.h"
 
 namespace grassfire {
 
@@ -78,19 +79,6 @@ Frame choose_frame(const Shape2& shape, const PolygonAxisOptions& options) {
   return f;
 }
 
-struct UnionFind {
-  std::vector<std::uint32_t> parent;
-  explicit UnionFind(std::size_t n) : parent(n) { std::iota(parent.begin(), parent.end(), 0u); }
-  std::uint32_t find(std::uint32_t x) {
-    while (parent[x] != x) x = parent[x] = parent[parent[x]];
-    return x;
-  }
-  void unite(std::uint32_t a, std::uint32_t b) {
-    a = find(a);
-    b = find(b);
-    if (a != b) parent[std::max(a, b)] = std::min(a, b);
-  }
-};
 
 class Builder {
  public:

@@ -13,6 +13,7 @@
 
 #include "geometry2/shape_locator.h"
 #include "medial2/sampled_geometry.h"
+#include "medial2/union_find.h"
 
 namespace grassfire {
 
@@ -25,19 +26,6 @@ using Tds = CGAL::Triangulation_data_structure_2<Vb, Fb>;
 using Delaunay = CGAL::Delaunay_triangulation_2<K, Tds>;
 constexpr std::uint32_t kNone = 0xffffffffu;
 
-struct UnionFind {
-  std::vector<std::uint32_t> parent;
-  explicit UnionFind(std::size_t n) : parent(n) { std::iota(parent.begin(), parent.end(), 0u); }
-  std::uint32_t find(std::uint32_t x) {
-    while (parent[x] != x) x = parent[x] = parent[parent[x]];
-    return x;
-  }
-  void unite(std::uint32_t a, std::uint32_t b) {
-    a = find(a);
-    b = find(b);
-    if (a != b) parent[std::max(a, b)] = std::min(a, b);
-  }
-};
 
 bool overlaps(const IntervalPoint2& a, const IntervalPoint2& b) {
   return !(a.x.hi < b.x.lo || b.x.hi < a.x.lo || a.y.hi < b.y.lo || b.y.hi < a.y.lo);
@@ -220,7 +208,7 @@ class SampledAxisBuilder {
   std::vector<std::array<std::uint32_t, 3>> faces_;
   std::vector<IntervalPoint2> centers_;
   std::vector<Interval> radii_;
-  UnionFind groups_{0};
+  UnionFind groups_;
 };
 
 }  // namespace

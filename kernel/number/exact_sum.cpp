@@ -1,6 +1,8 @@
 // exact_sum.cpp -- see exact_sum.h.
 #include "number/exact_sum.h"
 
+#include "number/mpfr_bounds.h"
+
 #include <algorithm>
 #include <map>
 #include <sstream>
@@ -10,20 +12,6 @@ namespace grassfire {
 
 namespace {
 
-// RAII pair of MPFR numbers used as a lower and an upper bound.
-struct MpfrBounds {
-  mpfr_t lo, hi;
-  explicit MpfrBounds(long bits) {
-    mpfr_init2(lo, bits);
-    mpfr_init2(hi, bits);
-  }
-  ~MpfrBounds() {
-    mpfr_clear(lo);
-    mpfr_clear(hi);
-  }
-  MpfrBounds(const MpfrBounds&) = delete;
-  MpfrBounds& operator=(const MpfrBounds&) = delete;
-};
 
 // Adds c * [slo, shi] (with shi >= slo >= 0) to [lo, hi], rounding outwards.
 void add_scaled(mpfr_ptr lo, mpfr_ptr hi, const mpq_class& c, mpfr_srcptr slo, mpfr_srcptr shi) {
@@ -39,17 +27,11 @@ void add_scaled(mpfr_ptr lo, mpfr_ptr hi, const mpq_class& c, mpfr_srcptr slo, m
   mpfr_add(hi, hi, t.hi, MPFR_RNDU);
 }
 
-int sign_of_bounds(mpfr_srcptr lo, mpfr_srcptr hi) {
-  if (mpfr_sgn(lo) > 0) return 1;
-  if (mpfr_sgn(hi) < 0) return -1;
-  if (mpfr_zero_p(lo) && mpfr_zero_p(hi)) return 0;
-  return kUndecided;
-}
 
 int mpfr_sign(const ExactSum& x, long bits) {
   MpfrBounds b(bits);
   x.enclose(b.lo, b.hi);
-  return sign_of_bounds(b.lo, b.hi);
+  return b.sign();
 }
 
 // Odd primes used for Legendre-symbol fingerprints of square classes.
