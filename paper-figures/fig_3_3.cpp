@@ -93,8 +93,8 @@ std::vector<FigureFile> fig_3_3(const FigureContext& ctx) {
     files.push_back({file, part == 0 ? "Fig. 3.3 (a) redone: the medial axis (Voronoi of " + std::to_string(kSamples) +
                                            " boundary samples) coloured by the EDF, blue low to red high. EMA: " +
                                            ema_summary(simple) + " (grey dot, left); " + ema_summary(holed) +
-                                           " (grey loop, right). Look for EDF = R at the leaves, growing at slope 1 "
-                                           "inwards, the maximum at the grey dot and the infinite (black) loop."
+                                           " (right: black, the colour of infinity, in a grey band). Look for EDF = R "
+                                           "at the leaves, growing at slope 1 inwards, the maximum at the grey dot."
                                      : "Fig. 3.3 (b) redone: the same over the distance function R (grey, dark at the "
                                        "boundary, white at the largest R). Look for branches into small boundary "
                                        "features keeping an EDF close to the R around them, and long limbs "
