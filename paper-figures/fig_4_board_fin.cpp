@@ -84,7 +84,7 @@ std::vector<FigureFile> fig_4_2(const FigureContext& ctx) {
       annotate(r, s.mc, panel == 1 ? fin_tris : s.drawn, false);
       r.label({1, 1, 3}, "F", 16, {-14, 0});
       r.label({6, 6, 0}, "N", 16, {14, 14});
-      if (panel == 2) r.label({3, 0, 0}, "B", 16, {0, 20});
+      if (panel == 2) r.label({7, 0, 0}, "B", 16, {6, 18});
     }
     r.render(canvas, 400.0 * panel, 30, 400, 390);
     canvas.text({400.0 * panel + 200, 24}, titles[panel], 14, "middle");
