@@ -112,6 +112,8 @@ TEST_CASE("the engine equals the definition on random trees and graphs with cycl
     const DefinitionalEdf d = edf_by_definition(g);
     INFO("seed " << seed);
     require_equal_to_definition(g, r, d);
+    for (std::size_t k = 1; k < r.events.size(); ++k)  // the log is in exact time order
+      REQUIRE(compare(event_time(r, r.events[k - 1]), event_time(r, r.events[k]), g) <= 0);
     ++graphs;
     with_cycles += g.cycle_rank() > 0;
     for (const ExtendedMedialAxis& e : r.ema) edge_quenches += e.kind == ExtendedMedialAxis::Kind::Point && !e.point.at_node;

@@ -51,6 +51,7 @@ class EventSimulation {
       else
         arrive(a);
     }
+    place_edge_quenches_in_time_order();
     assign_extended_medial_axis(g_, result_, quenches_);
     return std::move(result_);
   }
@@ -83,10 +84,10 @@ class EventSimulation {
   void ignite(const Arrival& a) {
     const std::uint32_t z = a.node;
     result_.burn[z] = a.time;
-    result_.events.push_back({BurnEventType::Ignite, a.value, node_point(z)});
+    result_.events.push_back({BurnEventType::Ignite, a.value, node_point(z), a.time});
     if (g_.degree(z) == 0) {
       quenches_.push_back({node_point(z), a.value});
-      result_.events.push_back({BurnEventType::Quench, a.value, node_point(z)});
+      result_.events.push_back({BurnEventType::Quench, a.value, node_point(z), a.time});
       return;
     }
     std::uint32_t edge = 0;
@@ -103,7 +104,7 @@ class EventSimulation {
     edge_arrived_[e] |= (g_.edge(e).u == j) ? 1 : 2;
     const std::uint32_t count = ++arrived_[j];
     if (count + 1 < g_.degree(j)) {
-      result_.events.push_back({BurnEventType::Annihilate, a.value, node_point(j)});
+      result_.events.push_back({BurnEventType::Annihilate, a.value, node_point(j), a.time});
       return;
     }
     result_.burn[j] = a.time;
@@ -156,7 +157,23 @@ class EventSimulation {
       place.offset = half(w + times.approx(tj) - times.approx(tk));
     }
     quenches_.push_back({place, value, sent_from, sent_other});
-    result_.events.push_back({BurnEventType::Quench, value, place});
+    result_.events.push_back({BurnEventType::Quench, value, place, place.at_node ? tj : kNoTime});
+  }
+
+  // A quench inside an edge is logged when the second front enters the edge, but happens
+  // later, when the fronts meet: move it forward past every event that is not later
+  // (certified comparisons; at equal times the quench comes last).
+  void place_edge_quenches_in_time_order() {
+    std::vector<BurnEvent>& ev = result_.events;
+    for (std::size_t i = ev.size(); i-- > 0;) {
+      if (ev[i].type != BurnEventType::Quench || ev[i].place.at_node) continue;
+      const GraphSum when = event_time(result_, ev[i]);
+      std::size_t k = i;
+      while (k + 1 < ev.size() && !(ev[i].time.hi < ev[k + 1].time.lo) &&
+             compare(event_time(result_, ev[k + 1]), when, g_) <= 0)
+        ++k;
+      std::rotate(ev.begin() + i, ev.begin() + i + 1, ev.begin() + k + 1);
+    }
   }
 
   static GraphPoint node_point(std::uint32_t v) {
@@ -210,6 +227,14 @@ Interval GrassfireResult::edf_along(std::uint32_t edge, std::uint32_t from, doub
     best = best.is_infinite() ? other : Interval(std::fmin(best.lo, other.lo), std::fmin(best.hi, other.hi));
   }
   return best;
+}
+
+GraphSum event_time(const GrassfireResult& r, const BurnEvent& e) {
+  if (e.time_id != kNoTime) return r.times.as_graph_sum(e.time_id);
+  const EdgeFire& f = r.fire[e.place.edge];
+  GraphSum s = r.times.as_graph_sum(f.from_u) + r.times.as_graph_sum(f.from_v);
+  s.add_length(e.place.edge);
+  return s.divide(2);
 }
 
 Point2 position_of(const MedialGraph& g, const GraphPoint& p) {

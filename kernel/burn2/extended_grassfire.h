@@ -51,6 +51,9 @@ struct BurnEvent {
   BurnEventType type;
   Interval time;
   GraphPoint place;
+  // The exact time: a burn-time record for events at nodes; kNoTime for a quench inside
+  // an edge, whose time is (from_u + from_v + length) / 2 of that edge (see event_time).
+  TimeId time_id = kNoTime;
 };
 
 // Fire entering an edge: the time its end node burnt and sent fire into it (kNoTime if
@@ -78,7 +81,7 @@ struct GrassfireResult {
   BurnTimes times;
   std::vector<TimeId> burn;        // per node; kNoTime where the EDF is infinite
   std::vector<EdgeFire> fire;      // per edge
-  std::vector<BurnEvent> events;   // in certified time order (Exact variant)
+  std::vector<BurnEvent> events;   // in certified time order, ties by processing order (Exact variant)
   std::vector<ExtendedMedialAxis> ema;  // one per connected component
   std::uint64_t queue_ties = 0;    // exactly equal times met in the event queue
 
@@ -92,6 +95,9 @@ struct GrassfireResult {
 };
 
 GrassfireResult extended_grassfire(const MedialGraph& g, GrassfireVariant variant = GrassfireVariant::Exact);
+
+// The exact time of a logged event, as a sum of the graph's atoms.
+GraphSum event_time(const GrassfireResult& r, const BurnEvent& e);
 
 // Position of a graph point (drawing and reports).
 Point2 position_of(const MedialGraph& g, const GraphPoint& p);
