@@ -1,0 +1,172 @@
+// bench_shapes_throughput -- the whole 2D pipeline over every shape of a folder: the exact
+// polygon axis with EDF, EMA and the measures, and the sampled pipeline at 2000 samples.
+//
+// For each *.json / *.wkt file (sorted by name): load and validate (shapes/load_shape.h);
+// (1) exact: pipeline/edf2d.h with AxisMethod::ExactPolygon (axis, burning, ET and ST),
+// then the boundary signatures of apps2d (LFS at 200 boundary samples); (2) sampled:
+// pipeline/edf2d.h with 2000 samples. Each stage is timed with steady_clock; a failure in
+// either is recorded with its message and the next shape goes on.
+// Output: OUT/shapes_throughput.csv (one row per shape), OUT/shapes_throughput_summary.csv
+// (shapes, failures per pipeline, total, median and max seconds per pipeline, with the
+// first failure messages), the summary also on stderr.
+// Usage: bench_shapes_throughput FOLDER [OUT]
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "apps2d/boundary_matching.h"
+#include "pipeline/edf2d.h"
+#include "shapes/load_shape.h"
+
+using namespace grassfire;
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+double since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
+
+struct Row {
+  std::string file;
+  std::size_t vertices = 0;
+  std::size_t exact_nodes = 0, sampled_nodes = 0;
+  double exact_axis = 0, exact_burn = 0, exact_measures = 0, signatures = 0, exact_total = 0;
+  double sampled_delaunay = 0, sampled_axis = 0, sampled_burn = 0, sampled_total = 0;
+  std::string exact_error, sampled_error, load_error;
+};
+
+void run_exact(const Shape2& s, Row& r) {
+  try {
+    const auto t0 = Clock::now();
+    Edf2dOptions o;
+    o.axis = AxisMethod::ExactPolygon;
+    const Edf2dResult e = compute_edf2d(s, o);
+    const auto t1 = Clock::now();
+    const BoundarySignature b = boundary_samples(s, 200);
+    const std::vector<double> lfs = local_feature_size(b.points, *e.graph);
+    r.signatures = since(t1);
+    r.exact_nodes = e.graph->node_count();
+    r.exact_axis = e.timings.axis;
+    r.exact_burn = e.timings.burn;
+    r.exact_measures = e.timings.measures;
+    r.exact_total = since(t0);
+  } catch (const std::exception& ex) {
+    r.exact_error = ex.what();
+  }
+}
+
+void run_sampled(const Shape2& s, Row& r) {
+  try {
+    const auto t0 = Clock::now();
+    Edf2dOptions o;
+    o.samples = 2000;
+    const Edf2dResult e = compute_edf2d(s, o);
+    r.sampled_total = since(t0);
+    r.sampled_nodes = e.graph->node_count();
+    r.sampled_delaunay = e.timings.delaunay;
+    r.sampled_axis = e.timings.axis;
+    r.sampled_burn = e.timings.burn;
+  } catch (const std::exception& ex) {
+    r.sampled_error = ex.what();
+  }
+}
+
+std::string csv(std::string s) {
+  std::replace(s.begin(), s.end(), ',', ';');
+  std::replace(s.begin(), s.end(), '\n', ' ');
+  return s;
+}
+
+struct Stats {
+  std::size_t ok = 0, failed = 0;
+  double total = 0, median = 0, max = 0;
+  std::map<std::string, std::size_t> reasons;
+};
+
+Stats stats(const std::vector<Row>& rows, double Row::*time, std::string Row::*error) {
+  Stats s;
+  std::vector<double> t;
+  for (const Row& r : rows) {
+    const std::string& e = !r.load_error.empty() ? r.load_error : r.*error;
+    if (!e.empty()) {
+      ++s.failed;
+      ++s.reasons[e.substr(0, 160)];
+      continue;
+    }
+    ++s.ok;
+    t.push_back(r.*time);
+    s.total += r.*time;
+  }
+  std::sort(t.begin(), t.end());
+  if (!t.empty()) s.median = t[t.size() / 2], s.max = t.back();
+  return s;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  if (argc < 2) {
+    std::fprintf(stderr, "usage: bench_shapes_throughput FOLDER [OUT]\n");
+    return 2;
+  }
+  const std::string out = argc > 2 ? argv[2] : ".";
+  std::vector<std::filesystem::path> files;
+  std::error_code ec;
+  for (const auto& e : std::filesystem::directory_iterator(argv[1], ec))
+    if (e.path().extension() == ".json" || e.path().extension() == ".wkt") files.push_back(e.path());
+  if (ec) {
+    std::fprintf(stderr, "%s: %s\n", argv[1], ec.message().c_str());
+    return 1;
+  }
+  std::sort(files.begin(), files.end());
+  std::vector<Row> rows;
+  for (const auto& f : files) {
+    Row r;
+    r.file = f.filename().string();
+    try {
+      const Shape2 s = load_shape(f.string());
+      for (const Ring& ring : s.rings) r.vertices += ring.points.size();
+      run_exact(s, r);
+      run_sampled(s, r);
+    } catch (const std::exception& ex) {
+      r.load_error = ex.what();
+    }
+    rows.push_back(r);
+  }
+  std::ofstream os(out + "/shapes_throughput.csv");
+  os << "file,vertices,exact_nodes,exact_axis_s,exact_burn_s,exact_measures_s,signatures_s,exact_total_s,"
+        "sampled_nodes,sampled_delaunay_s,sampled_axis_s,sampled_burn_s,sampled_total_s,error\n";
+  for (const Row& r : rows) {
+    char buf[512];
+    std::snprintf(buf, sizeof buf, "%s,%zu,%zu,%.5f,%.5f,%.5f,%.5f,%.5f,%zu,%.5f,%.5f,%.5f,%.5f,", csv(r.file).c_str(),
+                  r.vertices, r.exact_nodes, r.exact_axis, r.exact_burn, r.exact_measures, r.signatures, r.exact_total,
+                  r.sampled_nodes, r.sampled_delaunay, r.sampled_axis, r.sampled_burn, r.sampled_total);
+    std::string err = r.load_error;
+    if (!r.exact_error.empty()) err += "exact: " + r.exact_error + " ";
+    if (!r.sampled_error.empty()) err += "sampled: " + r.sampled_error;
+    os << buf << csv(err) << "\n";
+  }
+  std::ofstream sum(out + "/shapes_throughput_summary.csv");
+  sum << "pipeline,shapes,ok,failed,total_s,median_s,max_s,failure_reasons\n";
+  const struct {
+    const char* name;
+    double Row::*time;
+    std::string Row::*error;
+  } pipelines[] = {{"exact axis + EDF + measures + LFS", &Row::exact_total, &Row::exact_error},
+                   {"sampled 2000 + EDF + measures", &Row::sampled_total, &Row::sampled_error}};
+  for (const auto& p : pipelines) {
+    const Stats s = stats(rows, p.time, p.error);
+    std::string reasons;
+    for (const auto& [why, n] : s.reasons) reasons += std::to_string(n) + "x " + csv(why) + "; ";
+    char buf[256];
+    std::snprintf(buf, sizeof buf, "%s,%zu,%zu,%zu,%.3f,%.5f,%.4f,", p.name, rows.size(), s.ok, s.failed, s.total,
+                  s.median, s.max);
+    sum << buf << reasons << "\n";
+    std::fprintf(stderr, "%s%s\n", buf, reasons.c_str());
+  }
+  return 0;
+}

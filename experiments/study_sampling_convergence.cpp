@@ -1,0 +1,227 @@
+// study_sampling_convergence -- does the EDF on the sampled Voronoi axis converge to the
+// EDF on the exact polygon axis as the boundary sampling densifies (issue 4, item 3)?
+//
+// For each shape of a fixed list (22 real shapes of the 2D Shape Structure dataset and the
+// built-ins) and each sample count N: the sampled pipeline (pipeline/edf2d.h, Sampled, N
+// samples) against the exact polygon axis (ExactPolygon), compared by
+// apps2d/axis_correspondence.h: each node of the sampled axis is mapped to the nearest
+// point of the exact axis, and the EDFs there are compared (the exact EDF inside an edge
+// by edf_along). Reported, all divided by the shape's diameter D: max and mean absolute
+// EDF error, the distance between the two EMA points, the Hausdorff distance between the
+// axes (evaluated at points D/2000 apart). The comparison is measurement in double
+// precision (see axis_correspondence.h); both axes and both burnings are certified.
+// Output: OUT/sampling_convergence.csv (one row per shape and N), OUT/sampling_convergence
+// _summary.csv (per N: mean and median over shapes, slope of the mean against the previous
+// N in log-log), OUT/sampling_convergence.svg (log-log plot of the means).
+// Usage: study_sampling_convergence SHAPES_DIR [OUT] [--quick]
+//   SHAPES_DIR holds the dataset's *.json files (e.g. /work/shared/data/shapes2d);
+//   --quick runs N = 500, 1000, 2000 only.
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "apps2d/axis_correspondence.h"
+#include "pipeline/edf2d.h"
+#include "plot_svg.h"
+#include "shapes/builtin_shapes.h"
+#include "shapes/load_shape.h"
+
+using namespace grassfire;
+
+namespace {
+
+const char* const kShapes[] = {"apple-3",   "bell-3",     "bird-3",   "Bone-3",   "bottle-03", "car-03",
+                               "cattle-7",  "chicken-3",  "children-3", "classic-3", "Comma-3", "cup-3",
+                               "device3-3", "dog-10",     "fork-3",   "guitar-3", "hammer-3",  "horseshoe-3",
+                               "key-3",     "ray-3",      "spoon-3",  "Heart-3"};
+const char* const kBuiltins[] = {"rectangle", "rectangle-bump", "branches", "blunt-sharp", "noisy", "hole"};
+
+struct Row {
+  std::string shape;
+  std::size_t samples = 0, nodes = 0, infinite = 0;
+  AxisComparison cmp;
+  double seconds = 0;
+  std::string error;
+};
+
+double seconds_since(std::chrono::steady_clock::time_point t0) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+std::vector<Row> run_shape(const std::string& arg, const std::string& label, const std::vector<std::size_t>& levels) {
+  std::vector<Row> rows;
+  try {
+    const Shape2 shape = load_shape(arg);
+    const double diameter = shape_diameter(shape);
+    Edf2dOptions exact_opt;
+    exact_opt.axis = AxisMethod::ExactPolygon;
+    const Edf2dResult exact = compute_edf2d(shape, exact_opt);
+    for (std::size_t n : levels) {
+      Row r;
+      r.shape = label;
+      r.samples = n;
+      try {
+        const auto t0 = std::chrono::steady_clock::now();
+        Edf2dOptions opt;
+        opt.samples = n;
+        const Edf2dResult sampled = compute_edf2d(shape, opt);
+        r.seconds = seconds_since(t0);
+        r.nodes = sampled.graph->node_count();
+        r.cmp = compare_axes(*sampled.graph, *sampled.burning, *exact.graph, *exact.burning, diameter, diameter / 2000);
+      } catch (const std::exception& e) {
+        r.error = e.what();
+      }
+      rows.push_back(r);
+    }
+  } catch (const std::exception& e) {
+    for (std::size_t n : levels) {
+      Row r;
+      r.shape = label;
+      r.samples = n;
+      r.error = e.what();
+      rows.push_back(r);
+    }
+  }
+  return rows;
+}
+
+std::string csv_text(std::string s) {
+  std::replace(s.begin(), s.end(), ',', ';');
+  std::replace(s.begin(), s.end(), '\n', ' ');
+  return s;
+}
+
+double median(std::vector<double> v) {
+  if (v.empty()) return std::nan("");
+  std::sort(v.begin(), v.end());
+  const std::size_t m = v.size() / 2;
+  return v.size() % 2 ? v[m] : 0.5 * (v[m - 1] + v[m]);
+}
+
+double mean(const std::vector<double>& v) {
+  double s = 0;
+  for (double x : v) s += x;
+  return v.empty() ? std::nan("") : s / static_cast<double>(v.size());
+}
+
+struct Metric {
+  const char* name;
+  double (*get)(const AxisComparison&);
+};
+const Metric kMetrics[] = {
+    {"max_edf_error", [](const AxisComparison& c) { return c.max_edf_error; }},
+    {"mean_edf_error", [](const AxisComparison& c) { return c.mean_edf_error; }},
+    {"p95_edf_error", [](const AxisComparison& c) { return c.p95_edf_error; }},
+    {"ema_distance", [](const AxisComparison& c) { return c.ema_distance; }},
+    {"hausdorff", [](const AxisComparison& c) { return c.hausdorff; }},
+};
+
+// Per level and metric, the values over the shapes without error (NaN EMA distances skipped).
+std::map<std::size_t, std::vector<std::vector<double>>> collect(const std::vector<Row>& rows) {
+  std::map<std::size_t, std::vector<std::vector<double>>> by_level;
+  for (const Row& r : rows) {
+    auto& v = by_level[r.samples];
+    v.resize(std::size(kMetrics));
+    if (!r.error.empty()) continue;
+    for (std::size_t m = 0; m < std::size(kMetrics); ++m) {
+      const double x = kMetrics[m].get(r.cmp);
+      if (std::isfinite(x)) v[m].push_back(x);
+    }
+  }
+  return by_level;
+}
+
+void write_summary(const std::vector<Row>& rows, const std::string& path) {
+  std::ofstream os(path);
+  os << "samples,metric,shapes,mean,median,max,slope_of_mean\n";
+  const auto by_level = collect(rows);
+  std::vector<double> prev_mean(std::size(kMetrics), std::nan(""));
+  std::size_t prev_n = 0;
+  for (const auto& [n, values] : by_level) {
+    for (std::size_t m = 0; m < std::size(kMetrics); ++m) {
+      const double mu = mean(values[m]);
+      const double slope = prev_n ? std::log(mu / prev_mean[m]) / std::log(double(n) / double(prev_n)) : std::nan("");
+      const double mx = values[m].empty() ? std::nan("") : *std::max_element(values[m].begin(), values[m].end());
+      char buf[256];
+      std::snprintf(buf, sizeof buf, "%zu,%s,%zu,%.4g,%.4g,%.4g,%.3f\n", n, kMetrics[m].name, values[m].size(), mu,
+                    median(values[m]), mx, slope);
+      os << buf;
+      prev_mean[m] = mu;
+    }
+    prev_n = n;
+  }
+}
+
+void write_plot(const std::vector<Row>& rows, const std::string& path) {
+  plot::Plot p;
+  p.title = "Sampled axis vs exact polygon axis: mean over shapes (all / D)";
+  p.x_label = "boundary samples N";
+  p.y_label = "error / diameter";
+  p.log_x = p.log_y = true;
+  const auto by_level = collect(rows);
+  for (std::size_t m = 0; m < std::size(kMetrics); ++m) {
+    plot::Series s;
+    s.name = kMetrics[m].name;
+    s.colour = plot::series_colour(m);
+    for (const auto& [n, values] : by_level) s.x.push_back(double(n)), s.y.push_back(mean(values[m]));
+    p.series.push_back(s);
+  }
+  if (!by_level.empty() && !p.series[0].y.empty())
+    p.slopes.push_back({-1, p.series[0].x.front(), p.series[0].y.front() * 1.5, "slope -1 (dotted)"});
+  plot::save(p, path);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  std::string dir, out = ".";
+  bool quick = false;
+  for (int i = 1; i < argc; ++i) {
+    const std::string a = argv[i];
+    if (a == "--quick")
+      quick = true;
+    else if (dir.empty())
+      dir = a;
+    else
+      out = a;
+  }
+  if (dir.empty()) {
+    std::fprintf(stderr, "usage: study_sampling_convergence SHAPES_DIR [OUT] [--quick]\n");
+    return 2;
+  }
+  const std::vector<std::size_t> levels =
+      quick ? std::vector<std::size_t>{500, 1000, 2000} : std::vector<std::size_t>{500, 1000, 2000, 4000, 8000, 16000};
+  std::vector<Row> rows;
+  for (const char* name : kShapes) {
+    const auto r = run_shape(dir + "/" + name + ".json", name, levels);
+    rows.insert(rows.end(), r.begin(), r.end());
+    std::fprintf(stderr, "%s done\n", name);
+  }
+  for (const char* name : kBuiltins) {
+    const auto r = run_shape(std::string("builtin:") + name, name, levels);
+    rows.insert(rows.end(), r.begin(), r.end());
+  }
+  std::ofstream os(out + "/sampling_convergence.csv");
+  os << "shape,samples,nodes,compared,infinite,max_edf_error,mean_edf_error,p95_edf_error,p99_edf_error,"
+        "max_node_offset,ema_distance,hausdorff,seconds,error\n";
+  std::size_t failures = 0;
+  for (const Row& r : rows) {
+    char buf[512];
+    std::snprintf(buf, sizeof buf, "%s,%zu,%zu,%zu,%zu,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.4f,", r.shape.c_str(),
+                  r.samples, r.nodes, r.cmp.nodes, r.cmp.infinite, r.cmp.max_edf_error, r.cmp.mean_edf_error,
+                  r.cmp.p95_edf_error, r.cmp.p99_edf_error, r.cmp.max_node_offset, r.cmp.ema_distance, r.cmp.hausdorff,
+                  r.seconds);
+    os << buf << csv_text(r.error) << "\n";
+    failures += !r.error.empty();
+  }
+  write_summary(rows, out + "/sampling_convergence_summary.csv");
+  write_plot(rows, out + "/sampling_convergence.svg");
+  std::fprintf(stderr, "%zu rows, %zu failures; wrote %s/sampling_convergence{.csv,_summary.csv,.svg}\n", rows.size(),
+               failures, out.c_str());
+  return failures ? 1 : 0;
+}

@@ -1,0 +1,108 @@
+// apps2d/boundary_matching.h: the cyclic dynamic-programming correspondence of two
+// boundaries guided by a signature (3.5.3), against its definition.
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <random>
+
+#include "apps2d/boundary_matching.h"
+#include "pipeline/edf2d.h"
+#include "shapes/load_shape.h"
+
+using namespace grassfire;
+
+namespace {
+
+// Multiples of 1/8 in [0, 1]: every cost the DP and the reference add up is exact.
+std::vector<double> dyadic_signature(std::mt19937_64& rng, std::size_t n) {
+  std::uniform_int_distribution<int> u(0, 8);
+  std::vector<double> v(n);
+  for (double& x : v) x = u(rng) / 8.0;
+  return v;
+}
+
+std::vector<double> rotated(const std::vector<double>& v, std::size_t k) {
+  std::vector<double> r(v.size());
+  for (std::size_t i = 0; i < v.size(); ++i) r[i] = v[(i + k) % v.size()];
+  return r;
+}
+
+std::vector<double> real_signature(const char* name, std::size_t samples) {
+  const Shape2 s = load_shape(std::string(GF_PROJECT_DATA) + "/shapes2d/" + name);
+  Edf2dOptions o;
+  o.axis = AxisMethod::ExactPolygon;
+  const Edf2dResult r = compute_edf2d(s, o);
+  return local_feature_size(boundary_samples(s, samples).points, *r.graph);
+}
+
+}  // namespace
+
+TEST_CASE("the DP equals the enumeration of every monotone path on tiny signatures", "[apps2d]") {
+  std::mt19937_64 rng(2024);
+  MatchOptions o;
+  o.normalise = false;
+  o.stretch = 0.125;
+  for (int k = 0; k < 300; ++k) {
+    const std::size_t n = 1 + rng() % 6, m = 1 + rng() % 6;
+    const auto a = dyadic_signature(rng, n), b = dyadic_signature(rng, m);
+    const BoundaryMatch fast = match_signatures(a, b, o), slow = match_signatures_reference(a, b, o);
+    CHECK(fast.cost == slow.cost);
+    CHECK(fast.offset == slow.offset);
+    // The path is monotone, starts at (0, offset), ends at (n-1, offset + m - 1 mod m).
+    REQUIRE(!fast.path.empty());
+    CHECK(fast.path.front() == std::make_pair(std::uint32_t{0}, fast.offset));
+    CHECK(fast.path.back().first == n - 1);
+    CHECK(fast.path.back().second == (fast.offset + m - 1) % m);
+    CHECK(fast.path.size() >= std::max(n, m));
+  }
+}
+
+TEST_CASE("a boundary matched with itself gives the identity", "[apps2d]") {
+  std::mt19937_64 rng(3);
+  for (int k = 0; k < 20; ++k) {
+    const auto a = dyadic_signature(rng, 40);
+    const BoundaryMatch m = match_signatures(a, a);
+    CHECK(m.offset == 0);
+    CHECK(m.cost == 0);
+    CHECK(m.stretch_steps == 0);
+    const auto corr = correspondence_of(m, a.size());
+    for (std::uint32_t i = 0; i < a.size(); ++i) CHECK(corr[i] == i);
+  }
+  const auto lfs = real_signature("key-1.json", 120);
+  const BoundaryMatch m = match_signatures(lfs, lfs);
+  CHECK(m.offset == 0);
+  CHECK(m.path.size() == lfs.size());
+}
+
+TEST_CASE("matching a cyclically shifted copy recovers the shift", "[apps2d]") {
+  std::mt19937_64 rng(9);
+  for (int k = 0; k < 20; ++k) {
+    const auto a = dyadic_signature(rng, 50);
+    const std::size_t shift = rng() % 50;
+    const BoundaryMatch m = match_signatures(a, rotated(a, shift));
+    // b = a rotated by `shift`: b_j = a_{j + shift}, so a_0 corresponds to b_{n - shift}.
+    // A random signature of 50 values has no cyclic symmetry to tie with.
+    CHECK(m.offset == (50 - shift) % 50);
+    CHECK(m.cost == 0);
+  }
+  for (const char* name : {"key-1.json", "children-1.json"}) {
+    const auto lfs = real_signature(name, 100);
+    const BoundaryMatch m = match_signatures(lfs, rotated(lfs, 37));
+    CHECK(m.offset == 63);
+    CHECK(m.stretch_steps == 0);
+  }
+}
+
+TEST_CASE("bad signatures are rejected with a message", "[apps2d]") {
+  CHECK_THROWS_WITH(match_signatures({}, {1.0}), Catch::Contains("empty"));
+  CHECK_THROWS_WITH(match_signatures({0.0, 0.0}, {1.0}), Catch::Contains("zero everywhere"));
+  CHECK_THROWS_WITH(match_signatures({std::nan(""), 1.0}, {1.0}), Catch::Contains("not finite"));
+}
+
+TEST_CASE("curvature of a regular polygon is its turning angle over its side", "[apps2d]") {
+  std::vector<Point2> hexagon;
+  for (int i = 0; i < 6; ++i) hexagon.push_back({std::cos(i * M_PI / 3), std::sin(i * M_PI / 3)});
+  for (double k : curvature_signature(hexagon)) CHECK(k == Approx(M_PI / 3).epsilon(1e-12));
+  std::reverse(hexagon.begin(), hexagon.end());
+  for (double k : curvature_signature(hexagon)) CHECK(k == Approx(-M_PI / 3).epsilon(1e-12));
+}
