@@ -47,7 +47,7 @@ Json ema_json(const MedialGraph& g, const ExtendedMedialAxis& ema, double& bound
 std::string medial2d_json(const Medial2dJsonInput& in) {
   const MedialGraph& g = *in.graph;
   const GrassfireResult& r = *in.burning;
-  double b_r = 0, b_edf = 0, b_et = 0, b_st = 0, b_len = 0, b_ema = 0, b_pos = 0;
+  double b_r = 0, b_edf = 0, b_et = 0, b_st = 0, b_len = 0, b_ema = 0, b_pos = 0, b_pr = 0;
   Json j;
   j["format"] = "grassfire-medial2d";
   j["version"] = 1;
@@ -65,6 +65,7 @@ std::string medial2d_json(const Medial2dJsonInput& in) {
     o["edf"] = value(r.edf(v), b_edf);
     o["et"] = value(in.measures->erosion_thickness[v], b_et);
     o["st"] = value(in.measures->tubularity[v], b_st);
+    if (in.residue) o["pr"] = value(in.residue->node[v].value, b_pr);
     nodes.push_back(std::move(o));
   }
   j["nodes"] = std::move(nodes);
@@ -85,8 +86,16 @@ std::string medial2d_json(const Medial2dJsonInput& in) {
     for (const ExtendedMedialAxis& e : r.ema) parts.push_back(ema_json(g, e, b_ema));
     j["ema"] = {{"kind", "components"}, {"parts", std::move(parts)}};
   }
+  if (in.residue) {
+    const ResidueMaximum& m = in.residue->maximum;
+    j["pr_max"] = {{"x", m.position.x},
+                   {"y", m.position.y},
+                   {"pr", value(m.value.value, b_pr)},
+                   {"closest", {{m.closest[0].x, m.closest[0].y}, {m.closest[1].x, m.closest[1].y}}}};
+  }
   j["error_bound"] = {{"position", b_pos}, {"R", b_r},          {"edf", b_edf}, {"et", b_et},
                       {"st", b_st},        {"length", b_len}, {"ema", b_ema}};
+  if (in.residue) j["error_bound"]["pr"] = b_pr;
   const NumberStats& st = r.stats();
   j["certification"] = {{"filter_decided", st.filter_decided},
                         {"multiprecision_decided", st.mpfr_decided},

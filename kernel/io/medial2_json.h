@@ -10,8 +10,11 @@
 //         | {"kind": "point", "x", "y", "edf", "edge": id, "offset": s}   (s from edge.u)
 //         | {"kind": "cycles", "nodes": [ids], "edges": [ids]}
 //         | {"kind": "components", "parts": [one of the above per component]},
-//    "error_bound": {"position", "R", "edf", "et", "st", "length", "ema"},
+//    "error_bound": {"position", "R", "edf", "et", "st", "length", "ema", "pr"},
 //    "certification": {filter/exact counters}}
+// With a potential residue (burn2/potential_residue.h), also: per node "pr" (a number, or
+// "inf" where the closest points lie on different rings), and at the top level
+//    "pr_max": {"x", "y", "pr", "closest": [[x, y], [x, y]]}  (the PR maximum point).
 // "edf" and "et" are the string "inf" where infinite. Every printed number is the
 // midpoint of a certified enclosure; "error_bound" gives, per quantity, the largest
 // distance from a printed value to the exact one ("position": node coordinates; "ema":
@@ -22,6 +25,7 @@
 
 #include "burn2/extended_grassfire.h"
 #include "burn2/measures.h"
+#include "burn2/potential_residue.h"
 
 namespace grassfire {
 
@@ -31,6 +35,7 @@ struct Medial2dJsonInput {
   const MedialGraph* graph = nullptr;
   const GrassfireResult* burning = nullptr;
   const NodeMeasures* measures = nullptr;
+  const PotentialResidue* residue = nullptr;  // optional
 };
 
 std::string medial2d_json(const Medial2dJsonInput& in);

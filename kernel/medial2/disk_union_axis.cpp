@@ -12,6 +12,7 @@
 
 #include "medial2/disk_union_geometry.h"
 #include "medial2/disk_union_triangulations.h"
+#include "number/sqrt_field.h"
 
 namespace grassfire {
 
@@ -97,6 +98,11 @@ class DiskUnionBuilder {
   void build_dual() {
     const RegularTriangulationData rt = regular_triangulation(d_);
     report_.disks = d_.size();
+    neighbours_.assign(d_.size(), {});
+    for (const RegularTriangulationData::Edge& e : rt.edges) {
+      neighbours_[e.i].push_back(e.j);
+      neighbours_[e.j].push_back(e.i);
+    }
     std::vector<bool> face_in_k(rt.faces.size(), false);
     for (std::size_t f = 0; f < rt.faces.size(); ++f) face_in_k[f] = classify_face(rt.faces[f]);
     report_.dual_triangles = std::count(face_in_k.begin(), face_in_k.end(), true);
@@ -109,14 +115,9 @@ class DiskUnionBuilder {
       k_edges.emplace_back(e.i, e.j);
       has_k_edge_[e.i] = has_k_edge_[e.j] = true;
     }
-    std::vector<std::vector<std::uint32_t>> neighbours(d_.size());
-    for (const RegularTriangulationData::Edge& e : rt.edges) {
-      neighbours[e.i].push_back(e.j);
-      neighbours[e.j].push_back(e.i);
-    }
     isolated_.assign(d_.size(), false);
     for (std::uint32_t i : rt.vertices)
-      if (!has_k_edge_[i]) isolated_[i] = center_in_own_cell(i, neighbours[i]);
+      if (!has_k_edge_[i]) isolated_[i] = center_in_own_cell(i, neighbours_[i]);
     std::uint64_t k_vertices = 0;
     for (std::uint32_t i = 0; i < d_.size(); ++i) k_vertices += has_k_edge_[i] || isolated_[i];
     report_.isolated_disks = std::count(isolated_.begin(), isolated_.end(), true);
@@ -136,7 +137,7 @@ class DiskUnionBuilder {
   }
 
   // A triangle ijk is in K iff its power vertex lies inside the three disks.
-  bool classify_face(const std::array<std::uint32_t, 3>& f) const {
+  bool classify_face(const std::array<std::uint32_t, 3>& f) {
     const Disk &a = d_[f[0]], &b = d_[f[1]], &c = d_[f[2]];
     // 2 (c_b - c_a) . p = w_b - w_a, likewise for c, with w = |c|^2 - r^2.
     const mpq_class wa = a.x * a.x + a.y * a.y - a.r * a.r;
@@ -145,10 +146,47 @@ class DiskUnionBuilder {
     const mpq_class det = e1x * e2y - e1y * e2x;
     const mpq_class px = (r1 * e2y - r2 * e1y) / det, py = (e1x * r2 - e2x * r1) / det;
     const int s = sgn(power(a, px, py));
-    if (s == 0)
-      reject("the circles of the disks on " + where(f[0]) + ", " + where(f[1]) + " and " + where(f[2]) +
-             " pass through one point of the union's boundary (a degenerate union); perturb one of them");
+    if (s == 0) {  // the power vertex is on the three circles: in K iff inside the union
+      std::vector<std::uint32_t> through{f[0], f[1], f[2]};
+      for (std::uint32_t k : neighbours_[f[0]])
+        if (sgn(power(d_[k], px, py)) == 0) through.push_back(k);
+      require_interior({ExactSum::rational(px), ExactSum::rational(py)}, through);
+      return true;
+    }
     return s < 0;
+  }
+
+  // A point q on the circles of the disks `through` and in no other disk is inside the
+  // union iff the directions from q to their centres leave no angular gap of pi or more
+  // (the disks then cover a neighbourhood of q); otherwise it is a boundary point on three
+  // or more circles, or where two circles touch: a degenerate union.
+  void require_interior(const std::array<ExactSum, 2>& q, std::vector<std::uint32_t> through) {
+    std::sort(through.begin(), through.end());
+    through.erase(std::unique(through.begin(), through.end()), through.end());
+    std::vector<std::array<ExactSum, 2>> dir;
+    for (std::uint32_t k : through) dir.push_back({ExactSum::rational(d_[k].x) - q[0], ExactSum::rational(d_[k].y) - q[1]});
+    auto half = [&](const std::array<ExactSum, 2>& v) {
+      const int sy = sign(v[1], &stats_);
+      return sy > 0 || (sy == 0 && sign(v[0], &stats_) > 0) ? 0 : 1;
+    };
+    auto cross = [&](const std::array<ExactSum, 2>& a, const std::array<ExactSum, 2>& b) {
+      return sign(multiply(a[0], b[1]) - multiply(a[1], b[0]), &stats_);
+    };
+    std::sort(dir.begin(), dir.end(), [&](const auto& a, const auto& b) {
+      return half(a) != half(b) ? half(a) < half(b) : cross(a, b) > 0;
+    });
+    bool interior = dir.size() >= 3;
+    for (std::size_t k = 0; interior && k < dir.size(); ++k) {
+      const auto &a = dir[k], &b = dir[(k + 1) % dir.size()];
+      const int c = cross(a, b);
+      interior = c > 0 || (c == 0 && sign(multiply(a[0], b[0]) + multiply(a[1], b[1]), &stats_) > 0);
+    }
+    if (interior) return;
+    std::string names;
+    for (std::size_t k = 0; k < through.size(); ++k) names += (k ? ", " : "") + where(through[k]);
+    reject("the circles of the disks on " + names + " meet at one point of the union's boundary (" +
+           (through.size() == 2 ? "the disks touch there" : "a corner on three or more circles") +
+           "); the union is degenerate there, perturb one of them");
   }
 
   // An edge ij is in K iff the power edge meets the lens B_i and B_j; records its corners.
@@ -171,14 +209,19 @@ class DiskUnionBuilder {
     if (!in_k) return false;
     for (int s : {+1, -1}) {
       const UnionCorner c = s > 0 ? *plus : *circle_crossing(d_, e.i, e.j, -1);
-      bool on_boundary = true;
+      bool on_boundary = true, on_third_circle = false;
       for (std::uint32_t k : e.apex) {
         if (k == kNoId) continue;
         const int p = corner_power_sign(d_[k], c, &stats_);
-        if (p == 0)
-          reject("the circles of the disks on " + where(e.i) + ", " + where(e.j) + " and " + where(k) +
-                 " pass through one point of the union's boundary (a degenerate union); perturb one of them");
+        on_third_circle = on_third_circle || p == 0;
         if (p < 0) on_boundary = false;
+      }
+      if (on_boundary && on_third_circle) {  // inside the union, or a degenerate corner
+        std::vector<std::uint32_t> through{e.i, e.j};
+        for (std::uint32_t k : neighbours_[e.i])
+          if (corner_power_sign(d_[k], c, &stats_) == 0) through.push_back(k);
+        require_interior({corner_x(c), corner_y(c)}, through);
+        on_boundary = false;
       }
       if (on_boundary) corners_.push_back(c);
     }
@@ -187,16 +230,18 @@ class DiskUnionBuilder {
 
   // Tangent circles: harmless inside another disk or when one disk contains the other;
   // a single touching point on the boundary makes the union non-manifold.
-  void check_tangency(const RegularTriangulationData::Edge& e) const {
+  void check_tangency(const RegularTriangulationData::Edge& e) {
     const Disk &a = d_[e.i], &b = d_[e.j];
     const mpq_class dx = b.x - a.x, dy = b.y - a.y, dr = a.r - b.r;
     if (dx * dx + dy * dy == dr * dr) return;  // internally tangent: one disk covers the other
     const mpq_class t = a.r / (a.r + b.r);
     const mpq_class px = a.x + t * dx, py = a.y + t * dy;
     for (std::uint32_t k : e.apex)
-      if (k != kNoId && sgn(power(d_[k], px, py)) <= 0) return;
-    reject("the disks on " + where(e.i) + " and " + where(e.j) +
-           " touch at a single boundary point; the union is not a 2-manifold there (move one of them)");
+      if (k != kNoId && sgn(power(d_[k], px, py)) < 0) return;  // inside a third disk
+    std::vector<std::uint32_t> through{e.i, e.j};
+    for (std::uint32_t k : neighbours_[e.i])
+      if (sgn(power(d_[k], px, py)) == 0) through.push_back(k);
+    require_interior({ExactSum::rational(px), ExactSum::rational(py)}, through);
   }
 
   // A disk without K edges is isolated iff its centre lies in its own power cell.
@@ -448,6 +493,7 @@ class DiskUnionBuilder {
   CornerPredicates predicates_;
   NumberStats stats_;
   std::vector<bool> has_k_edge_, isolated_;
+  std::vector<std::vector<std::uint32_t>> neighbours_;  // in the regular triangulation
   std::vector<std::vector<std::uint32_t>> on_circle_;  // corners on each circle, sorted by id
   std::vector<std::uint32_t> arc_count_;
   std::vector<UnionArc> arcs_;

@@ -2,6 +2,7 @@
 #include "pipeline/edf2d.h"
 
 #include <chrono>
+#include <stdexcept>
 
 namespace grassfire {
 
@@ -16,6 +17,10 @@ Edf2dResult compute_edf2d(const Shape2& shape, const Edf2dOptions& options) {
   auto t = std::chrono::steady_clock::now();
   if (options.axis == AxisMethod::ExactPolygon) {
     r.graph = std::make_unique<MedialGraph>(exact_polygon_axis(shape, {}, &r.polygon_report));
+    r.timings.axis = seconds_since(t);
+  } else if (options.axis == AxisMethod::DiskUnion) {
+    if (!options.disks) throw std::invalid_argument("edf2d: the disk-union axis needs a disk list");
+    r.graph = std::make_unique<MedialGraph>(disk_union_axis(*options.disks, &r.disk_report));
     r.timings.axis = seconds_since(t);
   } else {
     r.samples = options.spacing > 0 ? resample_by_spacing(shape, options.spacing)

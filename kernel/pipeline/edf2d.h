@@ -2,8 +2,9 @@
 //
 // Computes: for a validated shape, its medial axis, either from uniform arc-length
 // boundary samples (shapes/resample.h, medial2/sampled_axis.h) or exactly for the polygon
-// (medial2/polygon_axis.h), then the extended grassfire on it (burn2/extended_grassfire.h)
-// and the node measures (burn2/measures.h), with timings.
+// (medial2/polygon_axis.h) -- or exactly for a union of disks (medial2/disk_union_axis.h,
+// from options.disks; the shape is then unused) -- then the extended grassfire on it
+// (burn2/extended_grassfire.h) and the node measures (burn2/measures.h), with timings.
 // This is what `grassfire edf2d`, the benchmark, the figures and the proof checks run.
 // Contract: a validated Shape2 (shapes/load_shape.h gives one).
 // Complexity: O(n log n) for n samples.
@@ -14,6 +15,7 @@
 
 #include "burn2/extended_grassfire.h"
 #include "burn2/measures.h"
+#include "medial2/disk_union_axis.h"
 #include "medial2/polygon_axis.h"
 #include "medial2/sampled_axis.h"
 #include "shapes/resample.h"
@@ -22,13 +24,14 @@ namespace grassfire {
 
 constexpr std::size_t kDefaultSamples = 2000;
 
-enum class AxisMethod { Sampled, ExactPolygon };
+enum class AxisMethod { Sampled, ExactPolygon, DiskUnion };
 
 struct Edf2dOptions {
   AxisMethod axis = AxisMethod::Sampled;
   std::size_t samples = kDefaultSamples;  // total boundary samples (ignored when spacing > 0)
   double spacing = 0.0;                   // arc-length spacing, if > 0
   GrassfireVariant variant = GrassfireVariant::Exact;
+  const DiskList* disks = nullptr;        // AxisMethod::DiskUnion
 };
 
 struct Edf2dTimings {
@@ -43,6 +46,7 @@ struct Edf2dResult {
   NodeMeasures measures;
   SampledAxisReport axis_report;    // sampled axis
   PolygonAxisReport polygon_report;  // exact polygon axis
+  DiskUnionAxisReport disk_report;    // union of disks
   Edf2dTimings timings;
 };
 

@@ -1,9 +1,13 @@
 // edf2d.cpp -- `grassfire edf2d`: medial axis, EDF, EMA, ET and ST of a planar shape.
 #include <cstdio>
 #include <iostream>
+#include <optional>
 #include <sstream>
 
+#include "burn2/closest_points.h"
+#include "burn2/potential_residue.h"
 #include "io/atomic_file.h"
+#include "io/disk_list.h"
 #include "io/medial2_json.h"
 #include "io/svg_medial2.h"
 #include "pipeline/edf2d.h"
@@ -36,9 +40,14 @@ void print_summary(std::ostream& os, const Shape2& shape, const Edf2dOptions& op
   const GrassfireResult& b = *r.burning;
   std::size_t samples = 0;
   for (const auto& ring : r.samples) samples += ring.size();
-  os << "shape      " << shape.name << " (" << shape.rings.size() << " rings)\n";
+  os << "shape      " << shape.name;
+  if (opt.axis != AxisMethod::DiskUnion) os << " (" << shape.rings.size() << " rings)";
+  os << "\n";
   if (opt.axis == AxisMethod::ExactPolygon)
     os << "axis       exact polygon axis (" << to_string(r.polygon_report.construction) << ")\n";
+  else if (opt.axis == AxisMethod::DiskUnion)
+    os << "axis       exact axis of a union of " << r.disk_report.disks << " disks (" << r.disk_report.covered_disks
+       << " covered, " << r.disk_report.corners << " boundary corners)\n";
   else
     os << "axis       Voronoi of " << samples << " boundary samples\n";
   std::uint32_t leaves = 0;
@@ -64,7 +73,8 @@ int edf2d_main(int argc, char** argv) {
               "the extended medial axis (EMA), erosion thickness ET = EDF - R and shape\n"
               "tubularity ST = 1 - R/EDF (Liu 2011, ch. 3), with certified arithmetic.");
   opt.positional("SHAPE", "a .json (2D Shape Structure dataset) or .wkt file, or a built-in name (" +
-                              builtin_shape_names() + ")")
+                              builtin_shape_names() + "); not with --disks", false)
+      .option("disks", "FILE", "a union of disks instead of SHAPE (one 'x y r' line per disk): its exact axis")
       .option("samples", "N", "boundary samples for the Voronoi medial axis", std::to_string(kDefaultSamples))
       .option("spacing", "H", "arc-length spacing of the samples instead of a count")
       .flag("exact", "exact medial axis of the polygon (segment Voronoi diagram) instead of samples")
@@ -76,7 +86,8 @@ int edf2d_main(int argc, char** argv) {
       .flag("quiet", "print nothing on success")
       .epilog("examples:\n  grassfire edf2d hole --json hole.json\n"
               "  grassfire edf2d data/shapes2d/Bone-1.json --samples 5000\n"
-              "  grassfire edf2d rectangle --exact --variant dissertation");
+              "  grassfire edf2d rectangle --exact --variant dissertation\n"
+              "  grassfire edf2d --disks tests/data/disks/three.txt");
   if (!opt.parse(argc, argv)) return opt.exit_code();
   Edf2dOptions options;
   if (opt.has("exact")) options.axis = AxisMethod::ExactPolygon;
@@ -92,13 +103,28 @@ int edf2d_main(int argc, char** argv) {
   else if (variant != "exact")
     throw std::invalid_argument("option --variant must be 'exact' or 'dissertation', got '" + variant + "'");
   const Medial2Field field = parse_medial2_field(opt.get("field"));
-  const Shape2 shape = load_shape(opt.arg("SHAPE"));
+  if (opt.has("disks") == opt.has_arg("SHAPE"))
+    throw std::invalid_argument("give either a SHAPE or --disks FILE");
+  if (opt.has("disks") && opt.has("exact")) throw std::invalid_argument("--exact applies to a SHAPE, not to --disks");
+  DiskList disks;
+  Shape2 shape;
+  if (opt.has("disks")) {
+    disks = read_disk_list(opt.get("disks"));
+    options.axis = AxisMethod::DiskUnion;
+    options.disks = &disks;
+    shape.name = disks.name;
+  } else {
+    shape = load_shape(opt.arg("SHAPE"));
+  }
   const Edf2dResult r = compute_edf2d(shape, options);
   if (opt.has("json")) {
     std::size_t samples = 0;
     for (const auto& ring : r.samples) samples += ring.size();
-    write_file_atomically(opt.get("json"),
-                          medial2d_json({shape.name, samples, r.graph.get(), r.burning.get(), &r.measures}));
+    std::optional<PotentialResidue> pr;  // PR needs arc lengths along the boundary
+    if (options.axis != AxisMethod::DiskUnion)
+      pr = potential_residue(*r.graph, closest_points(*r.graph, &shape, &r.samples));
+    write_file_atomically(opt.get("json"), medial2d_json({shape.name, samples, r.graph.get(), r.burning.get(),
+                                                          &r.measures, pr ? &*pr : nullptr}));
   }
   if (opt.has("svg")) {
     Medial2SvgOptions svg;

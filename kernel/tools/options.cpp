@@ -13,8 +13,11 @@ namespace grassfire::cli {
 Options::Options(std::string command, std::string summary)
     : command_(std::move(command)), summary_(std::move(summary)) {}
 
-Options& Options::positional(const std::string& name, const std::string& help) {
+Options& Options::positional(const std::string& name, const std::string& help, bool required) {
+  if (required && required_positionals_ < positionals_.size())
+    throw std::logic_error("options: a required positional after an optional one");
   positionals_.emplace_back(name, help);
+  if (required) ++required_positionals_;
   return *this;
 }
 
@@ -43,7 +46,8 @@ const Options::Spec* Options::find(const std::string& name) const {
 std::string Options::usage() const {
   std::ostringstream os;
   os << "usage: grassfire " << command_;
-  for (const auto& [name, help] : positionals_) os << " " << name;
+  for (std::size_t i = 0; i < positionals_.size(); ++i)
+    os << (i < required_positionals_ ? " " + positionals_[i].first : " [" + positionals_[i].first + "]");
   if (!specs_.empty()) os << " [options]";
   os << "\n\n" << summary_ << "\n";
   if (!positionals_.empty()) {
@@ -100,7 +104,7 @@ bool Options::parse(int argc, char** argv) {
     if (next_positional >= positionals_.size()) return fail("unexpected argument '" + a + "'");
     args_[positionals_[next_positional++].first] = a;
   }
-  if (next_positional < positionals_.size())
+  if (next_positional < required_positionals_)
     return fail("missing argument " + positionals_[next_positional].first);
   return true;
 }

@@ -17,7 +17,8 @@ class Options {
  public:
   Options(std::string command, std::string summary);
 
-  Options& positional(const std::string& name, const std::string& help);
+  // A positional argument; an optional one may be left out (has_arg says whether it was given).
+  Options& positional(const std::string& name, const std::string& help, bool required = true);
   Options& flag(const std::string& name, const std::string& help);
   Options& option(const std::string& name, const std::string& value_name, const std::string& help,
                   std::optional<std::string> default_value = std::nullopt);
@@ -29,6 +30,7 @@ class Options {
   int exit_code() const { return exit_code_; }
 
   const std::string& arg(const std::string& positional_name) const;
+  bool has_arg(const std::string& positional_name) const { return args_.count(positional_name) > 0; }
   bool has(const std::string& name) const;  // a flag given, or an option with a value
   std::string get(const std::string& name) const;
   long get_long(const std::string& name, long min_value, long max_value) const;
@@ -45,6 +47,7 @@ class Options {
 
   std::string command_, summary_, epilog_;
   std::vector<std::pair<std::string, std::string>> positionals_;
+  std::size_t required_positionals_ = 0;  // the first ones are required
   std::vector<Spec> specs_;
   std::map<std::string, std::string> values_;
   std::map<std::string, std::string> args_;
