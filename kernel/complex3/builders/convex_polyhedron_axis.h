@@ -51,7 +51,7 @@ ConvexPolyhedron read_halfspaces(const std::string& path);
 ConvexPolyhedron convex_polyhedron_from_mesh(const TriangleMesh3& mesh);
 
 struct ConvexAxisOptions {
-  long approximation_bits = 40;  // approximate mode: rational unit normals within 2^-bits
+  long approximation_bits = 24;  // approximate mode: rational unit normals within about 2^-bits
 };
 
 struct ConvexAxis {

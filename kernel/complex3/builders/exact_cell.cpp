@@ -49,6 +49,33 @@ std::vector<std::uint32_t> sorted_union(std::vector<std::uint32_t> a, std::uint3
 
 }  // namespace
 
+HomogeneousPoint point_on_planes(const std::array<RadicalNumber, 4>& a, const std::array<RadicalNumber, 4>& b,
+                                 const std::array<RadicalNumber, 4>& c, NumberStats* stats) {
+  HomogeneousPoint h;
+  h.c = cramer<RadicalNumber>({&a, &b, &c});
+  h.w_sign = sign(h.c[3], stats);
+  if (h.w_sign == 0) throw std::logic_error("exact_cell: defining planes are dependent");
+  return h;
+}
+
+LazyPoint3::LazyPoint3(const ExactPoint3& p)
+    : approx_{enclose(p.x), enclose(p.y), enclose(p.z)}, rational_(true), point_(p) {
+  auto h = std::make_shared<HomogeneousPoint>();
+  h->c = {RadicalNumber(p.x), RadicalNumber(p.y), RadicalNumber(p.z), RadicalNumber(1)};
+  exact_ = h;
+}
+
+LazyPoint3::LazyPoint3(std::array<std::array<RadicalNumber, 4>, 3> planes, const std::array<Interval, 3>& approx)
+    : planes_(std::move(planes)), approx_(approx) {}
+
+LazyPoint3::LazyPoint3(std::shared_ptr<const HomogeneousPoint> exact, const std::array<Interval, 3>& approx)
+    : approx_(approx), exact_(std::move(exact)) {}
+
+const HomogeneousPoint& LazyPoint3::exact() const {
+  if (!exact_) exact_ = std::make_shared<HomogeneousPoint>(point_on_planes(planes_[0], planes_[1], planes_[2]));
+  return *exact_;
+}
+
 void ClipStats::merge(const ClipStats& o) {
   sign_tests += o.sign_tests;
   by_support += o.by_support;
@@ -59,13 +86,23 @@ void ClipStats::merge(const ClipStats& o) {
   number.merge(o.number);
 }
 
-CellPlane make_cell_plane(std::array<RadicalNumber, 4> coef, std::uint64_t label) {
-  CellPlane p;
-  for (int k = 0; k < 4; ++k) p.approx[k] = coef[k].approx();
-  p.coef = std::move(coef);
-  p.label = label;
-  return p;
+CellPlane::CellPlane(Coefficients coef, std::uint64_t label) : label_(label) {
+  for (int k = 0; k < 4; ++k) approx_[k] = coef[k].approx();
+  coef_ = std::make_shared<const Coefficients>(std::move(coef));
 }
+
+CellPlane::CellPlane(std::function<Coefficients()> make, const std::array<Interval, 4>& approx, std::uint64_t label)
+    : make_(std::move(make)), approx_(approx), label_(label) {}
+
+CellPlane::CellPlane(Coefficients coef, const std::array<Interval, 4>& approx, std::uint64_t label)
+    : coef_(std::make_shared<const Coefficients>(std::move(coef))), approx_(approx), label_(label) {}
+
+const CellPlane::Coefficients& CellPlane::coef() const {
+  if (!coef_) coef_ = std::make_shared<const Coefficients>(make_());
+  return *coef_;
+}
+
+CellPlane make_cell_plane(std::array<RadicalNumber, 4> coef, std::uint64_t label) { return CellPlane(std::move(coef), label); }
 
 CellPlane rational_plane(const mpq_class& a, const mpq_class& b, const mpq_class& c, const mpq_class& d,
                          std::uint64_t label) {
@@ -80,11 +117,8 @@ std::uint32_t PlaneSet::add(CellPlane p) {
 const HomogeneousPoint& PlaneSet::exact(const CellVertex& v) {
   if (!v.exact) {
     if (v.defining[0] == kNoPlane) throw std::logic_error("exact_cell: vertex without exact point or planes");
-    auto h = std::make_shared<HomogeneousPoint>();
-    h->c = cramer<RadicalNumber>({&planes_[v.defining[0]].coef, &planes_[v.defining[1]].coef,
-                                  &planes_[v.defining[2]].coef});
-    h->w_sign = sign(h->c[3], &stats.number);
-    if (h->w_sign == 0) throw std::logic_error("exact_cell: defining planes are dependent");
+    auto h = std::make_shared<HomogeneousPoint>(point_on_planes(
+        planes_[v.defining[0]].coef(), planes_[v.defining[1]].coef(), planes_[v.defining[2]].coef(), &stats.number));
     ++stats.exact_points;
     // The cache is logically const: the value is a function of the defining planes.
     const_cast<CellVertex&>(v).exact = h;
@@ -99,11 +133,11 @@ int PlaneSet::side(std::uint32_t id, const CellVertex& v) {
     return 0;
   }
   const CellPlane& p = planes_[id];
-  if (structural_zero_ && structural_zero_(p, v)) {
+  if (structural_zero_ && structural_zero_(id, v)) {
     ++stats.by_structure;
     return 0;
   }
-  const Interval value = p.approx[0] * v.approx[0] + p.approx[1] * v.approx[1] + p.approx[2] * v.approx[2] + p.approx[3];
+  const Interval value = p.approx()[0] * v.approx[0] + p.approx()[1] * v.approx[1] + p.approx()[2] * v.approx[2] + p.approx()[3];
   const int s = certified(value);
   if (s != 2) {
     ++stats.by_filter;
@@ -111,7 +145,8 @@ int PlaneSet::side(std::uint32_t id, const CellVertex& v) {
   }
   ++stats.by_exact;
   const HomogeneousPoint& h = exact(v);
-  const RadicalNumber e = p.coef[0] * h.c[0] + p.coef[1] * h.c[1] + p.coef[2] * h.c[2] + p.coef[3] * h.c[3];
+  const CellPlane::Coefficients& c = p.coef();
+  const RadicalNumber e = c[0] * h.c[0] + c[1] * h.c[1] + c[2] * h.c[2] + c[3] * h.c[3];
   return sign(e, &stats.number) * h.w_sign;
 }
 
@@ -120,7 +155,7 @@ CellVertex PlaneSet::vertex_on(std::array<std::uint32_t, 3> defining, std::vecto
   v.defining = defining;
   v.support = std::move(support);
   const std::array<Interval, 4> h =
-      cramer<Interval>({&planes_[defining[0]].approx, &planes_[defining[1]].approx, &planes_[defining[2]].approx});
+      cramer<Interval>({&planes_[defining[0]].approx(), &planes_[defining[1]].approx(), &planes_[defining[2]].approx()});
   if (certified(h[3]) != 2) {
     for (int k = 0; k < 3; ++k) v.approx[k] = h[k] / h[3];
     return v;
@@ -135,11 +170,11 @@ CellVertex PlaneSet::vertex_on(std::array<std::uint32_t, 3> defining, std::vecto
   return v;
 }
 
-CellVertex rational_vertex(const ExactPoint3& p, std::vector<std::uint32_t> support) {
+CellVertex rational_vertex(const ExactPoint3& p, std::vector<std::uint32_t> support, const std::array<double, 3>& origin) {
   CellVertex v;
   v.support = std::move(support);
   std::sort(v.support.begin(), v.support.end());
-  v.approx = {enclose(p.x), enclose(p.y), enclose(p.z)};
+  v.approx = {enclose(p.x) - origin[0], enclose(p.y) - origin[1], enclose(p.z) - origin[2]};
   auto h = std::make_shared<HomogeneousPoint>();
   h->c = {RadicalNumber(p.x), RadicalNumber(p.y), RadicalNumber(p.z), RadicalNumber(1)};
   v.exact = h;

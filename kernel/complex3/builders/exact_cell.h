@@ -34,10 +34,27 @@ namespace grassfire {
 
 constexpr std::uint32_t kNoPlane = std::numeric_limits<std::uint32_t>::max();
 
-struct CellPlane {
-  std::array<RadicalNumber, 4> coef;  // the kept side is a x + b y + c z + d <= 0
-  std::array<Interval, 4> approx;
-  std::uint64_t label = 0;  // the builder's name for the plane
+// The plane a x + b y + c z + d = 0; the kept side is a x + b y + c z + d <= 0. The exact
+// coefficients may be given, or made on first use by `make` (most planes are only ever
+// evaluated by the interval filter). The enclosures may be taken in local coordinates
+// x - o about an origin o of the caller's choice (then d is enclosed as d + (a, b, c) . o),
+// which keeps them tight far from the global origin; the vertex enclosures of the cells
+// are then local too. Exact coefficients are always global.
+class CellPlane {
+ public:
+  using Coefficients = std::array<RadicalNumber, 4>;
+  CellPlane(Coefficients coef, std::uint64_t label);
+  CellPlane(std::function<Coefficients()> make, const std::array<Interval, 4>& approx, std::uint64_t label);
+  CellPlane(Coefficients coef, const std::array<Interval, 4>& approx, std::uint64_t label);
+  const Coefficients& coef() const;
+  const std::array<Interval, 4>& approx() const { return approx_; }
+  std::uint64_t label() const { return label_; }
+
+ private:
+  mutable std::shared_ptr<const Coefficients> coef_;
+  std::function<Coefficients()> make_;
+  std::array<Interval, 4> approx_;
+  std::uint64_t label_ = 0;  // the builder's name for the plane
 };
 CellPlane make_cell_plane(std::array<RadicalNumber, 4> coef, std::uint64_t label);
 // The plane a x + b y + c z + d = 0 with rational coefficients.
@@ -47,6 +64,29 @@ CellPlane rational_plane(const mpq_class& a, const mpq_class& b, const mpq_class
 struct HomogeneousPoint {
   std::array<RadicalNumber, 4> c;  // X, Y, Z, W: the point (X/W, Y/W, Z/W), W != 0
   int w_sign = 1;
+};
+
+// The point on three independent planes, by Cramer's rule (exact; W != 0 is checked).
+HomogeneousPoint point_on_planes(const std::array<RadicalNumber, 4>& a, const std::array<RadicalNumber, 4>& b,
+                                 const std::array<RadicalNumber, 4>& c, NumberStats* stats = nullptr);
+
+// A vertex kept beyond the life of its cell: an interval enclosure now, the exact
+// coordinates (from copies of its three planes) on first use. Not thread-safe.
+class LazyPoint3 {
+ public:
+  explicit LazyPoint3(const ExactPoint3& p);  // a rational point
+  LazyPoint3(std::array<std::array<RadicalNumber, 4>, 3> planes, const std::array<Interval, 3>& approx);
+  explicit LazyPoint3(std::shared_ptr<const HomogeneousPoint> exact, const std::array<Interval, 3>& approx);
+  const HomogeneousPoint& exact() const;
+  const std::array<Interval, 3>& approx() const { return approx_; }
+  const ExactPoint3* rational() const { return rational_ ? &point_ : nullptr; }
+
+ private:
+  std::array<std::array<RadicalNumber, 4>, 3> planes_;
+  std::array<Interval, 3> approx_;
+  bool rational_ = false;
+  ExactPoint3 point_;
+  mutable std::shared_ptr<const HomogeneousPoint> exact_;
 };
 
 struct CellVertex {
@@ -75,7 +115,7 @@ struct ClipStats {
 // The planes of one computation, the optional structural-zero oracle and the counters.
 class PlaneSet {
  public:
-  using StructuralZero = std::function<bool(const CellPlane& plane, const CellVertex& v)>;
+  using StructuralZero = std::function<bool(std::uint32_t plane, const CellVertex& v)>;
 
   std::uint32_t add(CellPlane p);
   const CellPlane& operator[](std::uint32_t id) const { return planes_[id]; }
@@ -96,8 +136,10 @@ class PlaneSet {
   StructuralZero structural_zero_;
 };
 
-// A vertex at a given rational point (a corner of the initial polytope).
-CellVertex rational_vertex(const ExactPoint3& p, std::vector<std::uint32_t> support);
+// A vertex at a given rational point (a corner of the initial polytope), enclosed in local
+// coordinates about `origin`.
+CellVertex rational_vertex(const ExactPoint3& p, std::vector<std::uint32_t> support,
+                           const std::array<double, 3>& origin = {0, 0, 0});
 
 class ConvexCell {
  public:

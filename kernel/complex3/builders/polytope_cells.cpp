@@ -57,7 +57,7 @@ PolytopeCell clip_box(const ExactPoint3& lo, const ExactPoint3& hi, const std::v
   std::map<std::uint32_t, std::uint32_t> index;
   for (const CellFace& f : cell.faces()) {
     PolytopeFace pf;
-    pf.label = planes[f.planes[0]].label;
+    pf.label = planes[f.planes[0]].label();
     out.touches_box |= pf.label < kFirstFreeLabel;
     for (std::uint32_t v : f.vertices) {
       auto [it, fresh] = index.emplace(v, static_cast<std::uint32_t>(out.points.size()));
@@ -80,7 +80,7 @@ PolytopeCell polytope_from_planes(const std::vector<CellPlane>& planes, const st
     std::array<mpq_class, 4> c;
     mpz_class l = 1;
     for (int k = 0; k < 4; ++k) {
-      c[k] = as_rational(p.coef[k]);
+      c[k] = as_rational(p.coef()[k]);
       mpz_lcm(l.get_mpz_t(), l.get_mpz_t(), c[k].get_den_mpz_t());
     }
     for (int k = 0; k < 4; ++k) {

@@ -1,0 +1,73 @@
+// bench_union_of_balls -- the exact medial axis of a union of balls against CGAL's
+// Regular_triangulation_3 construction alone on the same balls.
+//
+// usage: bench_union_of_balls [N1 N2 ...]   (default 100 1000 10000)
+// For each N: random_ball_set(N, seed 2024) (union_alpha_complex.h: dyadic centres in a cube
+// of side 2 N^(1/3), radii in [0.8, 1.2)); time CGAL Regular_triangulation_3 alone on the
+// weighted points, then the whole axis (triangulation, exact alpha complex, boundary
+// vertices, Voronoi cells in the tetrahedra, assembly with rational output). Each N runs
+// in its own child process, so peak memory (VmHWM) is that configuration's. CSV on stdout:
+//   balls,regular_triangulation_s,axis_s,ratio,axis_vertices,axis_triangles,peak_mem_mb
+// and, as comment lines, the structure and the filter/exact counters of each run.
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <vector>
+
+#include "complex3/builders/union_of_balls_axis.h"
+#include "peak_memory.h"
+
+using namespace grassfire;
+
+namespace {
+
+double seconds(std::chrono::steady_clock::time_point t) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
+}
+
+std::vector<double> measure(std::size_t n) {
+  const BallSet balls = random_ball_set(n, 2024);
+  auto t = std::chrono::steady_clock::now();
+  const std::size_t cells = cgal_regular_triangulation_cells(balls);
+  const double rt = seconds(t);
+  t = std::chrono::steady_clock::now();
+  const UnionOfBallsAxis a = union_of_balls_axis(balls);
+  const double axis = seconds(t);
+  const ClipStats& s = a.stats;
+  return {rt,
+          axis,
+          double(a.complex.vertices.size()),
+          double(a.complex.triangles.size()),
+          double(cells),
+          double(a.alpha_simplices[3]),
+          double(a.boundary.size()),
+          double(a.tet_polygons),
+          double(a.complex.segments.size()),
+          double(s.sign_tests),
+          double(s.by_filter),
+          double(s.by_structure),
+          double(s.by_exact),
+          a.coordinate_error,
+          a.triangulation_seconds,
+          double(a.tetrahedra_candidates),
+          double(a.voronoi_cells)};
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  std::vector<std::size_t> sizes;
+  for (int i = 1; i < argc; ++i) sizes.push_back(static_cast<std::size_t>(std::atoll(argv[i])));
+  if (sizes.empty()) sizes = {100, 1000, 10000};
+  std::printf("balls,regular_triangulation_s,axis_s,ratio,axis_vertices,axis_triangles,peak_mem_mb\n");
+  for (std::size_t n : sizes) {
+    const std::vector<double> v = bench::in_child([&] { return measure(n); });
+    std::printf("%zu,%.4f,%.4f,%.1f,%.0f,%.0f,%.1f\n", n, v[0], v[1], v[1] / v[0], v[2], v[3], v.back());
+    std::printf("# n=%zu: rt cells %.0f, alpha tetrahedra %.0f, boundary vertices %.0f, tet polygons %.0f, segments %.0f, "
+                "sign tests %.0f (filter %.0f, structural %.0f, exact %.0f), max coordinate error %.3g, "
+                "triangulation inside the axis %.3f s, candidates per tetrahedron %.1f, cells clipped per tetrahedron %.1f\n",
+                n, v[4], v[5], v[6], v[7], v[8], v[9], v[10], v[11], v[12], v[13], v[14], v[15] / v[5], v[16] / v[5]);
+    std::fflush(stdout);
+  }
+  return 0;
+}
