@@ -76,35 +76,53 @@ class SampledAxisBuilder {
     if (dt_.dimension() < 2) throw std::invalid_argument(shape_.name + ": boundary samples are collinear");
   }
 
+  // Copies the triangulation into flat arrays (triangles, neighbours, circumcircles) and
+  // releases it: everything after this reads only the arrays.
   void number_faces() {
+    std::uint32_t count = 0;
+    for (auto f = dt_.all_faces_begin(); f != dt_.all_faces_end(); ++f)
+      f->info() = dt_.is_infinite(f) ? kNone : count++;
+    faces_.reserve(count);
+    neighbours_.reserve(count);
+    centers_.reserve(count);
+    radii_.reserve(count);
     for (auto f = dt_.finite_faces_begin(); f != dt_.finite_faces_end(); ++f) {
-      f->info() = static_cast<std::uint32_t>(faces_.size());
       const std::array<std::uint32_t, 3> t{f->vertex(0)->info(), f->vertex(1)->info(), f->vertex(2)->info()};
       faces_.push_back(t);
+      neighbours_.push_back({f->neighbor(0)->info(), f->neighbor(1)->info(), f->neighbor(2)->info()});
       const Circle circle = interval_circle(points_[t[0]], points_[t[1]], points_[t[2]]);
       centers_.push_back(circle.center);
       radii_.push_back(circle.radius);
     }
-    for (auto f = dt_.all_faces_begin(); f != dt_.all_faces_end(); ++f)
-      if (dt_.is_infinite(f)) f->info() = kNone;
+    dt_.clear();
+  }
+
+  // Calls f(face, neighbour, i) once for every pair of adjacent finite triangles; i is the
+  // index in `face` of the vertex opposite the shared edge.
+  template <class F>
+  void for_each_adjacent_pair(F&& f) const {
+    for (std::uint32_t a = 0; a < faces_.size(); ++a)
+      for (int i = 0; i < 3; ++i) {
+        const std::uint32_t b = neighbours_[a][i];
+        if (b != kNone && a < b) f(a, b, i);
+      }
   }
 
   // Adjacent triangles with cocircular vertices share their circumcentre: one node.
   void merge_cocircular(SampledAxisReport& report) {
     groups_ = UnionFind(faces_.size());
-    const auto in_circle = dt_.geom_traits().side_of_oriented_circle_2_object();
-    for (auto e = dt_.finite_edges_begin(); e != dt_.finite_edges_end(); ++e) {
-      const auto f = e->first;
-      const auto g = f->neighbor(e->second);
-      if (f->info() == kNone || g->info() == kNone) continue;
-      if (!overlaps(centers_[f->info()], centers_[g->info()])) continue;
-      const auto opposite = g->vertex(g->index(f))->point();
-      if (in_circle(f->vertex(0)->point(), f->vertex(1)->point(), f->vertex(2)->point(), opposite) ==
-          CGAL::ON_ORIENTED_BOUNDARY) {
-        groups_.unite(f->info(), g->info());
+    const auto in_circle = K().side_of_oriented_circle_2_object();
+    const auto point = [&](std::uint32_t sample) { return K::Point_2(points_[sample].x, points_[sample].y); };
+    for_each_adjacent_pair([&](std::uint32_t a, std::uint32_t b, int) {
+      if (!overlaps(centers_[a], centers_[b])) return;
+      int j = 0;
+      while (neighbours_[b][j] != a) ++j;
+      const auto& t = faces_[a];
+      if (in_circle(point(t[0]), point(t[1]), point(t[2]), point(faces_[b][j])) == CGAL::ON_ORIENTED_BOUNDARY) {
+        groups_.unite(a, b);
         ++report.merged_triangles;
       }
-    }
+    });
   }
 
   bool consecutive_samples(std::uint32_t a, std::uint32_t b) const {
@@ -134,24 +152,20 @@ class SampledAxisBuilder {
     }
     std::vector<MedialEdge> edges;
     std::vector<std::pair<std::uint32_t, std::uint32_t>> ends;
-    for (auto e = dt_.finite_edges_begin(); e != dt_.finite_edges_end(); ++e) {
-      const auto f = e->first;
-      const auto g = f->neighbor(e->second);
-      if (f->info() == kNone || g->info() == kNone) continue;
-      const std::uint32_t rf = groups_.find(f->info()), rg = groups_.find(g->info());
-      if (rf == rg || node_of[rf] == kNone || node_of[rg] == kNone) continue;
-      const std::uint32_t s = f->vertex(f->cw(e->second))->info(), t = f->vertex(f->ccw(e->second))->info();
-      if (consecutive_samples(s, t)) {
+    for_each_adjacent_pair([&](std::uint32_t a, std::uint32_t b, int i) {
+      const std::uint32_t ra = groups_.find(a), rb = groups_.find(b);
+      if (ra == rb || node_of[ra] == kNone || node_of[rb] == kNone) return;
+      if (consecutive_samples(faces_[a][(i + 1) % 3], faces_[a][(i + 2) % 3])) {
         ++report.boundary_dual_edges;
-        continue;
+        return;
       }
-      if (locator.segment_meets_boundary(center_of(rf), center_of(rg))) {
+      if (locator.segment_meets_boundary(center_of(ra), center_of(rb))) {
         ++report.crossing_edges;
-        continue;
+        return;
       }
-      ends.emplace_back(node_of[rf], node_of[rg]);
-      edges.push_back({node_of[rf], node_of[rg], EdgeKind::Segment, interval_distance(centers_[rf], centers_[rg])});
-    }
+      ends.emplace_back(node_of[ra], node_of[rb]);
+      edges.push_back({node_of[ra], node_of[rb], EdgeKind::Segment, interval_distance(centers_[ra], centers_[rb])});
+    });
     report.inside_nodes = nodes.size();
     report.predicates = locator.counters();
     keep_largest_component(nodes, node_triangle, edges, ends, report);
@@ -205,7 +219,8 @@ class SampledAxisBuilder {
   std::vector<Point2> points_;
   std::vector<std::uint32_t> ring_of_, ring_start_;
   Delaunay dt_;
-  std::vector<std::array<std::uint32_t, 3>> faces_;
+  std::vector<std::array<std::uint32_t, 3>> faces_;       // sample ids per finite triangle
+  std::vector<std::array<std::uint32_t, 3>> neighbours_;  // triangle across the edge opposite vertex i
   std::vector<IntervalPoint2> centers_;
   std::vector<Interval> radii_;
   UnionFind groups_;

@@ -37,22 +37,23 @@ struct Interval {
   double radius() const {
     if (is_infinite()) return 0.0;
     const double r = 0.5 * (hi - lo);
-    return r + (std::fabs(r) * 0x1p-51 + 0x1p-1074);
+    return r + (std::fabs(r) * 0x1p-51 + 0x1p-1022);
   }
   bool contains(double x) const { return lo <= x && x <= hi; }
 };
 
 // Outward rounding of a round-to-nearest result r: the exact value lies within half an
-// ulp of r, and |r| * 2^-51 + 2^-1074 >= ulp(r), so r minus that amount rounds to at most
+// ulp of r, and |r| * 2^-51 + 2^-1022 >= ulp(r), so r minus that amount rounds to at most
 // r - ulp(r) (rounding is monotone). Cheaper than std::nextafter, one ulp or two looser.
+// 2^-1022 is the smallest normal double: a subnormal constant would cost a slow path.
 // Infinities pass through unchanged.
 inline double round_down(double r) {
   if (!(r - r == 0.0)) return r;
-  return r - (std::fabs(r) * 0x1p-51 + 0x1p-1074);
+  return r - (std::fabs(r) * 0x1p-51 + 0x1p-1022);
 }
 inline double round_up(double r) {
   if (!(r - r == 0.0)) return r;
-  return r + (std::fabs(r) * 0x1p-51 + 0x1p-1074);
+  return r + (std::fabs(r) * 0x1p-51 + 0x1p-1022);
 }
 
 inline Interval operator+(const Interval& a, const Interval& b) {
