@@ -4,6 +4,9 @@
 // Writes every registered figure, then DIR/index.html, which shows each figure (as PNG,
 // produced from the SVG by run.sh) with its caption, and inlines DIR/proof-checks.html
 // (the proof-check report) when it exists. Exit code 1 when a generator fails.
+#include <sys/wait.h>
+#include <unistd.h>
+
 #include <algorithm>
 #include <chrono>
 #include <filesystem>
@@ -54,6 +57,55 @@ void write_index(const std::string& dir, const std::vector<std::pair<FigureEntry
   }
   os << "</body></html>\n";
 }
+// Runs one generator in a child process, so that a crash in one figure cannot take the
+// others down; the files it wrote come back through a pipe as "file<TAB>caption" lines.
+std::vector<FigureFile> run_isolated(const FigureEntry& f, const FigureContext& ctx) {
+  int fd[2];
+  if (pipe(fd) != 0) throw std::runtime_error("pipe failed");
+  std::cout.flush();
+  std::cerr.flush();
+  const pid_t pid = fork();
+  if (pid < 0) throw std::runtime_error("fork failed");
+  if (pid == 0) {
+    close(fd[0]);
+    int code = 0;
+    std::string out;
+    try {
+      for (const FigureFile& file : f.fn(ctx)) {
+        std::string caption = file.caption;
+        std::replace(caption.begin(), caption.end(), '\n', ' ');
+        std::replace(caption.begin(), caption.end(), '\t', ' ');
+        out += file.file + "\t" + caption + "\n";
+      }
+    } catch (const std::exception& e) {
+      std::cerr << "paper_figures: " << f.id << ": " << e.what() << std::endl;
+      code = 1;
+    }
+    const ssize_t n = static_cast<ssize_t>(out.size());
+    if (write(fd[1], out.data(), out.size()) != n) code = 1;
+    _exit(code);
+  }
+  close(fd[1]);
+  std::string text;
+  char buf[4096];
+  ssize_t got;
+  while ((got = read(fd[0], buf, sizeof buf)) > 0) text.append(buf, static_cast<std::size_t>(got));
+  close(fd[0]);
+  int status = 0;
+  waitpid(pid, &status, 0);
+  if (!WIFEXITED(status) || WEXITSTATUS(status) != 0)
+    throw std::runtime_error(WIFSIGNALED(status) ? "crashed with signal " + std::to_string(WTERMSIG(status))
+                                                 : "failed");
+  std::vector<FigureFile> files;
+  std::istringstream lines(text);
+  std::string line;
+  while (std::getline(lines, line)) {
+    const std::size_t tab = line.find('\t');
+    if (tab != std::string::npos) files.push_back({line.substr(0, tab), line.substr(tab + 1)});
+  }
+  return files;
+}
+
 }  // namespace
 
 bool register_figure(std::string id, std::string title, FigureFn fn) {
@@ -110,7 +162,7 @@ int main(int argc, char** argv) {
     if (!only.empty() && f.id != only) continue;
     const auto start = std::chrono::steady_clock::now();
     try {
-      done.emplace_back(f, f.fn(ctx));
+      done.emplace_back(f, run_isolated(f, ctx));
       const double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
       std::cerr << "paper_figures: " << f.id << ": " << done.back().second.size() << " files in " << secs << " s"
                 << std::endl;
