@@ -2,6 +2,7 @@
 // the definition-level check, Betti numbers against the union's, degenerate inputs.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <map>
 #include <random>
 
@@ -59,14 +60,6 @@ UnionOfBallsAxis checked(const BallSet& b, bool definition = true) {
   return a;
 }
 
-std::map<std::size_t, std::size_t> edge_degrees(const RawComplex& r) {
-  std::map<std::pair<std::uint32_t, std::uint32_t>, std::size_t> degree;
-  for (const auto& t : r.triangles)
-    for (int k = 0; k < 3; ++k) ++degree[{std::min(t[k], t[(k + 1) % 3]), std::max(t[k], t[(k + 1) % 3])}];
-  std::map<std::size_t, std::size_t> h;
-  for (const auto& [e, d] : degree) ++h[d];
-  return h;
-}
 
 }  // namespace
 
@@ -154,7 +147,7 @@ TEST_CASE("four balls on a regular tetrahedron: six triangles from the centre", 
   CHECK(a.boundary.size() == 4);
   CHECK(a.complex.vertices.size() == 5);
   CHECK(a.complex.triangles.size() == 6);
-  CHECK(edge_degrees(a.complex) == std::map<std::size_t, std::size_t>{{1, 6}, {3, 4}});
+  CHECK(edge_degree_histogram(a.complex) == std::map<std::size_t, std::size_t>{{1, 6}, {3, 4}});
   bool origin = false;
   for (std::size_t v = 0; v < a.complex.vertices.size(); ++v)
     origin |= a.complex.vertices[v].x == 0 && a.complex.vertices[v].y == 0 && a.complex.vertices[v].z == 0;
@@ -177,10 +170,17 @@ TEST_CASE("random ball sets: definition check, Betti numbers, CGAL alpha shape",
   for (unsigned seed : {1u, 2u, 3u}) {
     const BallSet b = random_balls(12, seed, 6.0, 1.0, 1.0);
     const UnionOfBallsAxis a = checked(b);
+    // Generic input: the open dual complex equals the closed one, which is CGAL's alpha
+    // shape at alpha = 0 (Fixed_alpha_shape_3), simplex for simplex.
+    const AlphaComplex k(b, regular_triangulation(b));
+    REQUIRE(k.dimension() == 3);
     std::vector<std::array<std::uint32_t, 4>> closed;
-    // Generic input: the open and closed dual complexes agree with CGAL's alpha shape.
-    const auto cgal = cgal_alpha_complex(b);
-    if (a.triangulation_dimension == 3) CHECK(cgal.size() == a.alpha_simplices[0] + a.alpha_simplices[1] + a.alpha_simplices[2] + a.alpha_simplices[3]);
+    for (std::uint32_t s = 0; s < k.simplices().size(); ++s) {
+      CHECK(k.in_complex(s) == k.in_closed_complex(s));
+      if (k.in_closed_complex(s)) closed.push_back(k.simplices()[s].balls);
+    }
+    std::sort(closed.begin(), closed.end());
+    CHECK(closed == cgal_alpha_complex(b));
   }
   for (unsigned seed : {7u, 8u}) {
     const UnionOfBallsAxis a = checked(random_balls(150, seed, 12.0, 1.0, 1.0), false);

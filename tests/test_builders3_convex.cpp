@@ -46,14 +46,6 @@ const mpq_class* radius_squared_at(const RawComplex& r, const ExactPoint3& p) {
   return nullptr;
 }
 
-std::map<std::size_t, std::size_t> edge_degree_histogram(const RawComplex& r) {
-  std::map<std::pair<std::uint32_t, std::uint32_t>, std::size_t> degree;
-  for (const auto& t : r.triangles)
-    for (int k = 0; k < 3; ++k) ++degree[{std::min(t[k], t[(k + 1) % 3]), std::max(t[k], t[(k + 1) % 3])}];
-  std::map<std::size_t, std::size_t> h;
-  for (const auto& [e, d] : degree) ++h[d];
-  return h;
-}
 
 TriangleMesh3 data_mesh(const std::string& name) { return read_triangle_mesh(std::string(GF_PROJECT_DATA) + "/meshes/" + name); }
 
@@ -150,10 +142,16 @@ TEST_CASE("mixed square classes: certified approximate mode", "[builders3]") {
   const ConvexAxis a = checked_axis(p);
   CHECK_FALSE(a.exact);
   CHECK(a.distance_bound > 0);
-  CHECK(a.distance_bound < 1e-10);
+  CHECK(a.distance_bound < 1e-6);  // default: 24 bits
   CHECK(a.complex.vertices.size() == 5);
   CHECK(a.complex.triangles.size() == 6);
   for (const ExactPoint3& u : a.u) CHECK(dot(u, u) == 1);  // rational unit normals
+  ConvexAxisOptions fine;
+  fine.approximation_bits = 40;
+  const ConvexAxis b = convex_polyhedron_axis(p, fine);
+  CHECK(b.distance_bound < 1e-10);
+  CHECK(b.complex.triangles.size() == 6);
+  CHECK(check_convex_axis(b).failures == 0);
 }
 
 TEST_CASE("half-space file format", "[builders3]") {

@@ -16,12 +16,19 @@ namespace {
 
 nlohmann::json betti_json(const BettiNumbers& b) { return {b.b0, b.b1, b.b2}; }
 
+nlohmann::json edge_degrees_json(const RawComplex& c) {
+  nlohmann::json j = nlohmann::json::object();
+  for (const auto& [k, n] : edge_degree_histogram(c)) j[std::to_string(k)] = n;
+  return j;
+}
+
 nlohmann::json complex_json(const RawComplex& c) {
   return {{"vertices", c.vertices.size()},
           {"triangles", c.triangles.size()},
           {"segments", c.segments.size()},
           {"border_rules", c.border_rules.size()},
-          {"betti", betti_json(betti_numbers(c))}};
+          {"betti", betti_json(betti_numbers(c))},
+          {"edges_by_triangle_count", edge_degrees_json(c)}};
 }
 
 nlohmann::json clip_json(const ClipStats& s) {

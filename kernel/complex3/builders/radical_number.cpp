@@ -5,6 +5,8 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "number/mpfr_bounds.h"
+
 namespace grassfire {
 
 namespace {
@@ -31,20 +33,6 @@ RadicalKey multiply_keys(const RadicalKey& a, const RadicalKey& b, const Radical
   }
   return out;
 }
-
-struct MpfrPair {
-  mpfr_t lo, hi;
-  explicit MpfrPair(long bits) {
-    mpfr_init2(lo, bits);
-    mpfr_init2(hi, bits);
-  }
-  ~MpfrPair() {
-    mpfr_clear(lo);
-    mpfr_clear(hi);
-  }
-  MpfrPair(const MpfrPair&) = delete;
-  MpfrPair& operator=(const MpfrPair&) = delete;
-};
 
 }  // namespace
 
@@ -209,7 +197,7 @@ int sign_two_roots(const RadicalNumber& a, const RadicalNumber& c, const Radical
 
 mpq_class approximate_quotient(const RadicalNumber& x, const RadicalNumber& w, long bits, double* error) {
   for (long prec = bits + 64;; prec *= 2) {
-    MpfrPair xs(prec), ws(prec), q(prec);
+    MpfrBounds xs(prec), ws(prec), q(prec);
     x.enclose(xs.lo, xs.hi);
     w.enclose(ws.lo, ws.hi);
     if (mpfr_sgn(ws.lo) <= 0 && mpfr_sgn(ws.hi) >= 0) {

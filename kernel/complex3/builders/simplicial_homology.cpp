@@ -106,6 +106,15 @@ BettiNumbers betti_numbers(std::size_t vertex_count, const std::vector<std::arra
   return b;
 }
 
+std::map<std::size_t, std::size_t> edge_degree_histogram(const RawComplex& complex) {
+  std::map<std::array<std::uint32_t, 2>, std::size_t> degree;
+  for (const auto& t : complex.triangles)
+    for (int k = 0; k < 3; ++k) ++degree[sorted<2>({t[k], t[(k + 1) % 3]})];
+  std::map<std::size_t, std::size_t> h;
+  for (const auto& [e, d] : degree) ++h[d];
+  return h;
+}
+
 BettiNumbers betti_numbers(const RawComplex& complex) {
   return betti_numbers(complex.vertices.size(), complex.segments, complex.triangles, {});
 }

@@ -12,6 +12,7 @@
 
 #include <array>
 #include <cstdint>
+#include <map>
 #include <vector>
 
 #include "complex3/raw_complex.h"
@@ -31,5 +32,9 @@ BettiNumbers betti_numbers(std::size_t vertex_count, const std::vector<std::arra
 
 // Of a RawComplex: every vertex, the triangles, their edges and the segments.
 BettiNumbers betti_numbers(const RawComplex& complex);
+
+// How many triangle edges have k incident triangles, for each k (1: border, 2: manifold,
+// 3 or more: singular); segments are not counted.
+std::map<std::size_t, std::size_t> edge_degree_histogram(const RawComplex& complex);
 
 }  // namespace grassfire

@@ -98,7 +98,7 @@ class Builder {
  public:
   Builder(const BallSet& balls, const AlphaComplex& k, const std::vector<BoundaryVertex>& boundary,
           const RadicalTable& table)
-      : balls_(balls), k_(k), boundary_(boundary), table_(table), grid_(boundary) {
+      : balls_(balls), k_(k), boundary_(boundary), grid_(boundary) {
     for (const BoundaryVertex& v : boundary) {
       coords_.push_back(v.coordinates(table));
       // |v|^2 = |z|^2 + s |n|^2 + 2 side sqrt(s) z . n
@@ -378,7 +378,6 @@ class Builder {
   const BallSet& balls_;
   const AlphaComplex& k_;
   const std::vector<BoundaryVertex>& boundary_;
-  const RadicalTable& table_;
   PointGrid grid_;
   std::vector<std::array<RadicalNumber, 3>> coords_;
   std::vector<RadicalNumber> norm2_;
