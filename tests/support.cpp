@@ -4,6 +4,8 @@
 #include <catch2/catch.hpp>
 
 #include <algorithm>
+#include <cstdio>
+#include <sys/wait.h>
 
 namespace grassfire::testing {
 
@@ -92,6 +94,18 @@ void require_equal_to_definition(const MedialGraph& g, const GrassfireResult& r,
     if (e.point.from != o.from) offset = GraphSum().add_length(e.point.edge) - offset;
     REQUIRE(compare(offset, o.offset, g) == 0);
   }
+}
+
+CliRun run_cli(const std::string& args) {
+  const std::string command = std::string(GF_CLI) + " " + args + " 2>&1";
+  FILE* pipe = popen(command.c_str(), "r");
+  REQUIRE(pipe != nullptr);
+  CliRun run;
+  char buffer[4096];
+  while (std::size_t n = std::fread(buffer, 1, sizeof buffer, pipe)) run.output.append(buffer, n);
+  const int status = pclose(pipe);
+  run.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  return run;
 }
 
 }  // namespace grassfire::testing

@@ -4,6 +4,7 @@
 #include <gmpxx.h>
 
 #include <cstdint>
+#include <string>
 #include <tuple>
 #include <vector>
 
@@ -26,5 +27,12 @@ GraphSum ema_edf_sum(const GrassfireResult& r, const ExtendedMedialAxis& ema);
 
 // REQUIREs that the engine's EDF at every node and its EMA equal the oracle's exactly.
 void require_equal_to_definition(const MedialGraph& g, const GrassfireResult& r, const DefinitionalEdf& d);
+
+// Runs `grassfire ARGS` (the program under test); its exit code and stdout + stderr.
+struct CliRun {
+  int code = -1;
+  std::string output;
+};
+CliRun run_cli(const std::string& args);
 
 }  // namespace grassfire::testing

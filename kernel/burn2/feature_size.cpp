@@ -57,12 +57,17 @@ LocalFeatureMeasures local_feature_measures(const MedialGraph& g, const ClosestP
       out.feature_size.push_back(Interval(0.0));
       continue;
     }
-    BallPrecision guard(64);
-    Ball ratio = Ball::from_interval(chord) / (Ball(2.0) * Ball::from_interval(radius));
-    arb_min(ratio.get(), ratio.get(), Ball(1.0).get(), 64);  // |p - q| <= 2R up to rounding
-    Ball theta;
-    arb_asin(theta.get(), ratio.get(), 64);
-    out.separation_angle.push_back((Ball(2.0) * theta).to_interval());
+    // theta = 2 asin(c / 2R), asin increasing: enclose it from the ends of the ratio's
+    // enclosure clamped to [0, 1] (c <= 2R holds exactly; the enclosure may pass 1).
+    const Interval ratio = chord / (Interval(2.0) * radius);
+    auto angle = [](double x, bool upper) {
+      BallPrecision guard(64);
+      Ball theta;
+      arb_asin(theta.get(), Ball(std::fmin(1.0, std::fmax(0.0, x))).get(), 64);
+      const Interval t = (Ball(2.0) * theta).to_interval();
+      return upper ? t.hi : t.lo;
+    };
+    out.separation_angle.push_back({angle(ratio.lo, false), angle(ratio.hi, true)});
     const Interval half_chord = half(chord);
     const int inside = surrounds(dirs);
     out.feature_size.push_back(inside > 0 ? radius : inside < 0 ? half_chord : hull_of(radius, half_chord));

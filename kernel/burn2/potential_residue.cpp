@@ -3,8 +3,9 @@
 
 #include <algorithm>
 #include <cmath>
-#include <numeric>
 #include <stdexcept>
+
+#include "medial2/union_find.h"
 
 namespace grassfire {
 
@@ -128,19 +129,10 @@ const ResidueValue& limit(const MedialGraph& g, const PotentialResidue& pr, std:
   return g.edge(e).u == v ? pr.edge[e].at_u : pr.edge[e].at_v;
 }
 
-struct Plateaus {
-  std::vector<std::uint32_t> parent;
-  explicit Plateaus(std::size_t n) : parent(n) { std::iota(parent.begin(), parent.end(), 0u); }
-  std::uint32_t find(std::uint32_t x) {
-    while (parent[x] != x) x = parent[x] = parent[parent[x]];
-    return x;
-  }
-};
-
 // Peaks, plus plateaus (nodes joined by constant edges at their own value) next to no
 // higher point: a node is `raised` when an incident edge rises above it.
 std::uint32_t count_local_maxima(const MedialGraph& g, const PotentialResidue& pr, Residues& r) {
-  Plateaus plateau(g.node_count());
+  UnionFind plateau(g.node_count());
   std::vector<bool> raised(g.node_count(), false);
   std::uint32_t peaks = 0;
   for (std::uint32_t e = 0; e < g.edge_count(); ++e) {
@@ -155,7 +147,7 @@ std::uint32_t count_local_maxima(const MedialGraph& g, const PotentialResidue& p
     }
     const int c = r.compare(er.at_u, er.at_v);
     if (c == 0 && top_u && top_v) {
-      plateau.parent[plateau.find(u)] = plateau.find(v);
+      plateau.unite(u, v);
     } else {
       // Constant but lower than one end, or monotone: the lower end sees a rise.
       if (c <= 0 && top_u) raised[u] = true;

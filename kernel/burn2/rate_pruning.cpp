@@ -8,6 +8,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "number/mpfr_bounds.h"
+
 namespace grassfire {
 
 namespace {
@@ -15,21 +17,9 @@ namespace {
 constexpr std::uint32_t kNone = 0xffffffffu;
 constexpr long kRefinedBits = 128;
 
-// A 128-bit enclosure [lo, hi] of a pruning time, memoised per record (the second stage
-// of comparisons, between the double enclosure and the exact sum).
-struct Refined {
-  mpfr_t lo, hi;
-  Refined() {
-    mpfr_init2(lo, kRefinedBits);
-    mpfr_init2(hi, kRefinedBits);
-  }
-  ~Refined() {
-    mpfr_clear(lo);
-    mpfr_clear(hi);
-  }
-  Refined(const Refined&) = delete;
-  Refined& operator=(const Refined&) = delete;
-};
+// 128-bit enclosures of pruning times are memoised per record: the second stage of
+// comparisons, between the double enclosure and the exact sum.
+using Refined = MpfrBounds;
 
 class PruningFronts {
  public:
@@ -121,10 +111,10 @@ class PruningFronts {
       chain.push_back(k);
       if (records_[k].pred == kNone) break;
     }
-    Refined atom;
+    Refined atom(kRefinedBits);
     for (auto it = chain.rbegin(); it != chain.rend(); ++it) {
       const Record& r = records_[*it];
-      auto out = std::make_unique<Refined>();
+      auto out = std::make_unique<Refined>(kRefinedBits);
       if (r.pred == kNone) {
         mpfr_set_zero(out->lo, 1);
         mpfr_set_zero(out->hi, 1);

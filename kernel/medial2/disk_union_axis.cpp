@@ -5,13 +5,13 @@
 #include <chrono>
 #include <map>
 #include <memory>
-#include <numeric>
 #include <optional>
 #include <stdexcept>
 #include <string>
 
 #include "medial2/disk_union_geometry.h"
 #include "medial2/disk_union_triangulations.h"
+#include "medial2/union_find.h"
 #include "number/sqrt_field.h"
 
 namespace grassfire {
@@ -36,21 +36,12 @@ int corner_power_sign(const Disk& d, const UnionCorner& c, NumberStats* stats) {
   return sign(p, stats);
 }
 
-struct UnionFind {
-  std::vector<std::uint32_t> parent;
-  explicit UnionFind(std::size_t n) : parent(n) { std::iota(parent.begin(), parent.end(), 0u); }
-  std::uint32_t find(std::uint32_t x) {
-    while (parent[x] != x) x = parent[x] = parent[parent[x]];
-    return x;
-  }
-  bool unite(std::uint32_t a, std::uint32_t b) {
-    a = find(a);
-    b = find(b);
-    if (a == b) return false;
-    parent[std::max(a, b)] = std::min(a, b);
-    return true;
-  }
-};
+// Joins the sets of a and b; true when they were apart.
+bool join(UnionFind& sets, std::uint32_t a, std::uint32_t b) {
+  if (sets.find(a) == sets.find(b)) return false;
+  sets.unite(a, b);
+  return true;
+}
 
 // A Voronoi edge of the corners: the bisector of corners a and b between the Voronoi
 // vertices (merged groups) `left` and `right` of a -> b (kNoId: at infinity). Disk centres
@@ -126,7 +117,7 @@ class DiskUnionBuilder {
     report_.dual_edges = k_edges.size();
     UnionFind components(d_.size());
     std::uint64_t merges = 0;
-    for (const auto& [i, j] : k_edges) merges += components.unite(i, j);
+    for (const auto& [i, j] : k_edges) merges += join(components, i, j);
     report_.union_components = k_vertices - merges;
     // Euler: V - E + T = b0 - b1 (K is planar, b2 = 0).
     const std::int64_t holes = std::int64_t(report_.dual_edges + report_.union_components) -
@@ -291,7 +282,7 @@ class DiskUnionBuilder {
       if (e.left == kNoId || e.right == kNoId) continue;
       const std::array<std::uint32_t, 3>& f = dt.faces[e.left];
       if (predicates_.in_circle(f[0], f[1], f[2], opposite(dt.faces[e.right], e.a, e.b)) == 0)
-        report_.cocircular_merges += faces.unite(e.left, e.right);
+        report_.cocircular_merges += join(faces, e.left, e.right);
     }
     std::vector<std::uint32_t> group_of_face(dt.faces.size(), kNoId);
     for (std::uint32_t f = 0; f < dt.faces.size(); ++f) {

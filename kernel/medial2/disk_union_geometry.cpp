@@ -65,6 +65,10 @@ BallPoint corner_ball(const UnionCorner& c) {
 // The second filter for Voronoi vertices: the circumcentre at 128 bits.
 constexpr long kBallBits = 128;
 
+Interval ball_distance(const BallPoint& p, const BallPoint& q) {
+  return sqrt((p.x - q.x) * (p.x - q.x) + (p.y - q.y) * (p.y - q.y)).to_interval();
+}
+
 BallPoint ball_circumcenter(const BallPoint& a, const BallPoint& b, const BallPoint& c) {
   const Ball bx = b.x - a.x, by = b.y - a.y, cx = c.x - a.x, cy = c.y - a.y;
   const Ball d = Ball(2.0) * (bx * cy - by * cx);
@@ -321,8 +325,7 @@ Interval DiskUnionGeometry::radius_enclosure(std::uint32_t node) const {
   const Interval quick = sqrt(squared_distance(position_enclosure(node), corners_[n.corners[0]].approx));
   if (tight(quick)) return quick;
   BallPrecision guard(kBallBits);
-  const BallPoint a = corner_ball(corners_[n.corners[0]]), o = ball_position(node);
-  const Interval refined = sqrt((o.x - a.x) * (o.x - a.x) + (o.y - a.y) * (o.y - a.y)).to_interval();
+  const Interval refined = ball_distance(corner_ball(corners_[n.corners[0]]), ball_position(node));
   if (tight(refined)) return refined;
   return exact_radius(node).approx();
 }
@@ -332,8 +335,7 @@ Interval DiskUnionGeometry::length_enclosure(std::uint32_t edge) const {
       sqrt(squared_distance(position_enclosure(ends_[edge].first), position_enclosure(ends_[edge].second)));
   if (tight(quick)) return quick;
   BallPrecision guard(kBallBits);
-  const BallPoint p = ball_position(ends_[edge].first), q = ball_position(ends_[edge].second);
-  const Interval refined = sqrt((p.x - q.x) * (p.x - q.x) + (p.y - q.y) * (p.y - q.y)).to_interval();
+  const Interval refined = ball_distance(ball_position(ends_[edge].first), ball_position(ends_[edge].second));
   if (tight(refined)) return refined;
   return exact_length(edge).approx();
 }

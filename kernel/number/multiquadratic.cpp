@@ -28,16 +28,11 @@ class RootOfSum : public CertifiedConstant {
   std::string id_;
 };
 
-// Odd primes below 1000, and 2, for stripping square factors from radicands.
+// The primes below 1000, for stripping square factors from radicands.
 const std::vector<unsigned long>& small_primes() {
   static const std::vector<unsigned long> primes = [] {
-    std::vector<unsigned long> p{2};
-    for (unsigned long n = 3; n < 1000; n += 2) {
-      bool prime = true;
-      for (unsigned long d = 3; d * d <= n; d += 2)
-        if (n % d == 0) prime = false;
-      if (prime) p.push_back(n);
-    }
+    std::vector<unsigned long> p;
+    for (mpz_class q = 2; q < 1000; mpz_nextprime(q.get_mpz_t(), q.get_mpz_t())) p.push_back(q.get_ui());
     return p;
   }();
   return primes;

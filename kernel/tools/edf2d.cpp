@@ -103,8 +103,10 @@ int edf2d_main(int argc, char** argv) {
   else if (variant != "exact")
     throw std::invalid_argument("option --variant must be 'exact' or 'dissertation', got '" + variant + "'");
   const Medial2Field field = parse_medial2_field(opt.get("field"));
-  if (opt.has("disks") == opt.has_arg("SHAPE"))
-    throw std::invalid_argument("give either a SHAPE or --disks FILE");
+  if (opt.has("disks") == opt.has_arg("SHAPE")) {  // a malformed command line, like a missing argument
+    std::cerr << "grassfire edf2d: give either a SHAPE or --disks FILE\n\n" << opt.usage();
+    return 2;
+  }
   if (opt.has("disks") && opt.has("exact")) throw std::invalid_argument("--exact applies to a SHAPE, not to --disks");
   DiskList disks;
   Shape2 shape;
