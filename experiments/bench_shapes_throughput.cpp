@@ -3,15 +3,20 @@
 //
 // For each *.json / *.wkt file (sorted by name): load and validate (shapes/load_shape.h);
 // (1) exact: pipeline/edf2d.h with AxisMethod::ExactPolygon (axis, burning, ET and ST),
-// then the boundary signatures of apps2d (LFS at 200 boundary samples); (2) sampled:
-// pipeline/edf2d.h with 2000 samples. Each stage is timed with steady_clock; a failure in
-// either is recorded with its message and the next shape goes on.
+// then every measure of burn2/ on that axis: closest boundary points, potential residue
+// with its maximum, separation angle and feature size, E(x), rate pruning, topology-
+// preserving ET+ST pruning (T = 0.05 x the bounding box's larger side, S = 1 - 1/sqrt 2,
+// 3.5.1), and the LFS signature at 200 boundary samples (apps2d); (2) sampled:
+// pipeline/edf2d.h with 2000 samples, then closest points and boundary eccentricity BE
+// (defined on a sampled axis). Each stage is timed with steady_clock; a failure in either
+// is recorded with its message and the next shape goes on.
 // Output: OUT/shapes_throughput.csv (one row per shape), OUT/shapes_throughput_summary.csv
 // (shapes, failures per pipeline, total, median and max seconds per pipeline, with the
 // first failure messages), the summary also on stderr.
 // Usage: bench_shapes_throughput FOLDER [OUT]
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -20,6 +25,12 @@
 #include <vector>
 
 #include "apps2d/boundary_matching.h"
+#include "burn2/axis_pruning.h"
+#include "burn2/boundary_eccentricity.h"
+#include "burn2/closest_points.h"
+#include "burn2/feature_size.h"
+#include "burn2/potential_residue.h"
+#include "burn2/rate_pruning.h"
 #include "pipeline/edf2d.h"
 #include "shapes/load_shape.h"
 
@@ -30,12 +41,22 @@ namespace {
 using Clock = std::chrono::steady_clock;
 double since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
 
+// The larger side of the bounding box: the "dimension of the shape" of 3.5.1.
+double box_size(const Shape2& s) {
+  double x0 = INFINITY, y0 = INFINITY, x1 = -INFINITY, y1 = -INFINITY;
+  for (const Ring& r : s.rings)
+    for (const Point2& p : r.points) x0 = std::fmin(x0, p.x), x1 = std::fmax(x1, p.x), y0 = std::fmin(y0, p.y), y1 = std::fmax(y1, p.y);
+  return std::fmax(x1 - x0, y1 - y0);
+}
+
 struct Row {
   std::string file;
   std::size_t vertices = 0;
   std::size_t exact_nodes = 0, sampled_nodes = 0;
-  double exact_axis = 0, exact_burn = 0, exact_measures = 0, signatures = 0, exact_total = 0;
-  double sampled_delaunay = 0, sampled_axis = 0, sampled_burn = 0, sampled_total = 0;
+  double exact_axis = 0, exact_burn = 0, exact_measures = 0, burn2_measures = 0, signatures = 0, exact_total = 0;
+  double sampled_delaunay = 0, sampled_axis = 0, sampled_burn = 0, sampled_be = 0, sampled_total = 0;
+  std::uint32_t pr_maxima = 0;
+  std::size_t pruned_edges = 0;
   std::string exact_error, sampled_error, load_error;
 };
 
@@ -46,9 +67,24 @@ void run_exact(const Shape2& s, Row& r) {
     o.axis = AxisMethod::ExactPolygon;
     const Edf2dResult e = compute_edf2d(s, o);
     const auto t1 = Clock::now();
+    const MedialGraph& g = *e.graph;
+    const ClosestPoints cp = closest_points(g);
+    const PotentialResidue pr = potential_residue(g, cp);
+    const LocalFeatureMeasures lf = local_feature_measures(g, cp);
+    const AxisEccentricity ecc = distance_to_ema(g, *e.burning);
+    const RatePruning rp = rate_pruning(g);
+    PruningThresholds t;
+    t.erosion = mpq_class(0.05 * box_size(s));
+    t.tubularity = 1 - 1 / std::sqrt(2.0);
+    t.topology = true;
+    const PrunedAxis pruned = prune_axis(g, *e.burning, t);
+    r.burn2_measures = since(t1);
+    r.pr_maxima = pr.local_maxima;
+    r.pruned_edges = pruned.edges.size();
+    const auto t2 = Clock::now();
     const BoundarySignature b = boundary_samples(s, 200);
-    const std::vector<double> lfs = local_feature_size(b.points, *e.graph);
-    r.signatures = since(t1);
+    const std::vector<double> lfs = local_feature_size(b.points, g);
+    r.signatures = since(t2);
     r.exact_nodes = e.graph->node_count();
     r.exact_axis = e.timings.axis;
     r.exact_burn = e.timings.burn;
@@ -65,11 +101,16 @@ void run_sampled(const Shape2& s, Row& r) {
     Edf2dOptions o;
     o.samples = 2000;
     const Edf2dResult e = compute_edf2d(s, o);
-    r.sampled_total = since(t0);
     r.sampled_nodes = e.graph->node_count();
     r.sampled_delaunay = e.timings.delaunay;
     r.sampled_axis = e.timings.axis;
     r.sampled_burn = e.timings.burn;
+    const auto t1 = Clock::now();
+    const ClosestPoints cp = closest_points(*e.graph, &s, &e.samples);
+    const BoundaryEccentricity be =
+        boundary_eccentricity(*e.graph, *e.burning, distance_to_ema(*e.graph, *e.burning), cp);
+    r.sampled_be = since(t1);
+    r.sampled_total = since(t0);
   } catch (const std::exception& ex) {
     r.sampled_error = ex.what();
   }
@@ -138,13 +179,15 @@ int main(int argc, char** argv) {
     rows.push_back(r);
   }
   std::ofstream os(out + "/shapes_throughput.csv");
-  os << "file,vertices,exact_nodes,exact_axis_s,exact_burn_s,exact_measures_s,signatures_s,exact_total_s,"
-        "sampled_nodes,sampled_delaunay_s,sampled_axis_s,sampled_burn_s,sampled_total_s,error\n";
+  os << "file,vertices,exact_nodes,exact_axis_s,exact_burn_s,exact_measures_s,burn2_measures_s,signatures_s,"
+        "exact_total_s,pr_local_maxima,pruned_edges,sampled_nodes,sampled_delaunay_s,sampled_axis_s,sampled_burn_s,"
+        "sampled_be_s,sampled_total_s,error\n";
   for (const Row& r : rows) {
     char buf[512];
-    std::snprintf(buf, sizeof buf, "%s,%zu,%zu,%.5f,%.5f,%.5f,%.5f,%.5f,%zu,%.5f,%.5f,%.5f,%.5f,", csv(r.file).c_str(),
-                  r.vertices, r.exact_nodes, r.exact_axis, r.exact_burn, r.exact_measures, r.signatures, r.exact_total,
-                  r.sampled_nodes, r.sampled_delaunay, r.sampled_axis, r.sampled_burn, r.sampled_total);
+    std::snprintf(buf, sizeof buf, "%s,%zu,%zu,%.5f,%.5f,%.5f,%.5f,%.5f,%.5f,%u,%zu,%zu,%.5f,%.5f,%.5f,%.5f,%.5f,",
+                  csv(r.file).c_str(), r.vertices, r.exact_nodes, r.exact_axis, r.exact_burn, r.exact_measures,
+                  r.burn2_measures, r.signatures, r.exact_total, r.pr_maxima, r.pruned_edges, r.sampled_nodes,
+                  r.sampled_delaunay, r.sampled_axis, r.sampled_burn, r.sampled_be, r.sampled_total);
     std::string err = r.load_error;
     if (!r.exact_error.empty()) err += "exact: " + r.exact_error + " ";
     if (!r.sampled_error.empty()) err += "sampled: " + r.sampled_error;
@@ -156,8 +199,8 @@ int main(int argc, char** argv) {
     const char* name;
     double Row::*time;
     std::string Row::*error;
-  } pipelines[] = {{"exact axis + EDF + measures + LFS", &Row::exact_total, &Row::exact_error},
-                   {"sampled 2000 + EDF + measures", &Row::sampled_total, &Row::sampled_error}};
+  } pipelines[] = {{"exact axis + EDF + all measures + LFS", &Row::exact_total, &Row::exact_error},
+                   {"sampled 2000 + EDF + ET/ST + BE", &Row::sampled_total, &Row::sampled_error}};
   for (const auto& p : pipelines) {
     const Stats s = stats(rows, p.time, p.error);
     std::string reasons;

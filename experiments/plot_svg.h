@@ -38,7 +38,7 @@ struct ReferenceSlope {
 struct Plot {
   std::string title, x_label, y_label;
   bool log_x = false, log_y = false;
-  double width = 680, height = 460;
+  double width = 860, height = 460;  // the legend takes the rightmost 230 px
   std::vector<Series> series;
   std::vector<ReferenceSlope> slopes;  // drawn only on log-log plots
 };
@@ -71,16 +71,20 @@ inline double nice_step(double span) {
   return 10 * p;
 }
 
-// The range of the shown values, widened to decades (log) or nice steps (linear).
+// The range of the shown values, widened by a margin (log: a factor 1.25) or to nice
+// steps (linear).
 inline void fit(Axis& ax, const std::vector<double>& values) {
   double lo = std::numeric_limits<double>::infinity(), hi = -lo;
   for (double v : values)
     if (ax.shows(v)) lo = std::min(lo, v), hi = std::max(hi, v);
   if (!(lo <= hi)) lo = ax.log ? 1 : 0, hi = ax.log ? 10 : 1;
   if (ax.log) {
-    ax.lo = std::pow(10.0, std::floor(std::log10(lo)));
-    ax.hi = std::pow(10.0, std::ceil(std::log10(hi)));
-    if (ax.hi <= ax.lo) ax.hi = ax.lo * 10;
+    ax.lo = lo / 1.25;
+    ax.hi = hi * 1.25;
+    if (ax.hi / ax.lo < 10) {  // at least one decade, centred on the data
+      const double widen = std::sqrt(10 / (ax.hi / ax.lo));
+      ax.lo /= widen, ax.hi *= widen;
+    }
   } else {
     if (hi == lo) lo -= 0.5, hi += 0.5;
     const double step = nice_step(hi - lo);
@@ -89,10 +93,14 @@ inline void fit(Axis& ax, const std::vector<double>& values) {
   }
 }
 
+// Log axes: powers of ten, plus 2 and 5 times them when the range spans few decades.
 inline std::vector<double> ticks(const Axis& ax) {
   std::vector<double> t;
   if (ax.log) {
-    for (double d = ax.lo; d <= ax.hi * 1.0001; d *= 10) t.push_back(d);
+    const bool fine = std::log10(ax.hi / ax.lo) < 3.5;
+    for (double d = std::pow(10.0, std::floor(std::log10(ax.lo))); d <= ax.hi; d *= 10)
+      for (double m : {1.0, 2.0, 5.0})
+        if ((m == 1.0 || fine) && m * d >= ax.lo && m * d <= ax.hi) t.push_back(m * d);
   } else {
     const double step = nice_step(ax.hi - ax.lo);
     for (double v = ax.lo; v <= ax.hi + step * 1e-6; v += step) t.push_back(std::abs(v) < step * 1e-9 ? 0 : v);
@@ -102,17 +110,25 @@ inline std::vector<double> ticks(const Axis& ax) {
 
 inline std::string tick_label(const Axis& ax, double v) {
   char buf[32];
-  if (ax.log)
-    std::snprintf(buf, sizeof buf, "1e%d", static_cast<int>(std::lround(std::log10(v))));
-  else
+  const double a = std::abs(v);
+  if (ax.log && (a >= 1e5 || a < 1e-2)) {
+    const int e = static_cast<int>(std::floor(std::log10(a) + 1e-9));
+    const long m = std::lround(a / std::pow(10.0, e));
+    if (m == 1)
+      std::snprintf(buf, sizeof buf, "1e%d", e);
+    else
+      std::snprintf(buf, sizeof buf, "%lde%d", m, e);
+  } else {
     std::snprintf(buf, sizeof buf, "%g", v);
+  }
   return buf;
 }
 
 }  // namespace detail
 
 inline void draw(SvgCanvas& c, const Plot& p, double left, double top) {
-  const double x0 = left + 78, x1 = left + p.width - 24, y0 = top + p.height - 58, y1 = top + 40;
+  const double x0 = left + 78, x1 = left + p.width - 250, y0 = top + p.height - 58, y1 = top + 40;
+  const double lx = x1 + 16;  // legend column
   detail::Axis ax{p.log_x}, ay{p.log_y};
   std::vector<double> xs, ys;
   for (const Series& s : p.series) xs.insert(xs.end(), s.x.begin(), s.x.end()), ys.insert(ys.end(), s.y.begin(), s.y.end());
@@ -155,8 +171,8 @@ inline void draw(SvgCanvas& c, const Plot& p, double left, double top) {
     flush();
     std::string name = s.name;
     if (hidden > 0) name += " (" + std::to_string(hidden) + " not shown)";
-    c.polyline({{x1 - 190, y1 + 10 + 16.0 * legend}, {x1 - 170, y1 + 10 + 16.0 * legend}}, s.colour, 2, s.dash);
-    c.text({x1 - 165, y1 + 14 + 16.0 * legend}, name, 11, "start", s.colour);
+    c.polyline({{lx, y1 + 10 + 16.0 * legend}, {lx + 20, y1 + 10 + 16.0 * legend}}, s.colour, 2, s.dash);
+    c.text({lx + 25, y1 + 14 + 16.0 * legend}, name, 11, "start", s.colour);
     ++legend;
   }
   if (!(p.log_x && p.log_y)) return;
@@ -175,7 +191,8 @@ inline void draw(SvgCanvas& c, const Plot& p, double left, double top) {
     clip(pa, qa, pb, qb);
     clip(pb, qb, pa0, qa0);
     if (qa >= y1 && qa <= y0 && qb >= y1 && qb <= y0) c.polyline({{pa, qa}, {pb, qb}}, {0.5, 0.5, 0.5}, 1, "2,3");
-    c.text({x1 - 165, y1 + 14 + 16.0 * legend}, r.label, 11, "start", {0.4, 0.4, 0.4});
+    c.polyline({{lx, y1 + 10 + 16.0 * legend}, {lx + 20, y1 + 10 + 16.0 * legend}}, {0.5, 0.5, 0.5}, 1, "2,3");
+    c.text({lx + 25, y1 + 14 + 16.0 * legend}, r.label, 11, "start", {0.4, 0.4, 0.4});
     ++legend;
   }
 }

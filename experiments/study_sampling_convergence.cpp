@@ -6,9 +6,11 @@
 // samples) against the exact polygon axis (ExactPolygon), compared by
 // apps2d/axis_correspondence.h: each node of the sampled axis is mapped to the nearest
 // point of the exact axis, and the EDFs there are compared (the exact EDF inside an edge
-// by edf_along). Reported, all divided by the shape's diameter D: max and mean absolute
-// EDF error, the distance between the two EMA points, the Hausdorff distance between the
-// axes (evaluated at points D/2000 apart). The comparison is measurement in double
+// by edf_along). Reported, all divided by the shape's diameter D: max, mean and 95th /
+// 99th percentile of the absolute EDF error, the max error when a node may match any
+// exact point within 3 sample spacings more than its nearest (junction-tolerant, see
+// axis_correspondence.h), the distance between the two EMA points, the Hausdorff
+// distance between the axes (evaluated at points D/2000 apart). The comparison is measurement in double
 // precision (see axis_correspondence.h); both axes and both burnings are certified.
 // Output: OUT/sampling_convergence.csv (one row per shape and N), OUT/sampling_convergence
 // _summary.csv (per N: mean and median over shapes, slope of the mean against the previous
@@ -30,6 +32,7 @@
 #include "plot_svg.h"
 #include "shapes/builtin_shapes.h"
 #include "shapes/load_shape.h"
+#include "shapes/resample.h"
 
 using namespace grassfire;
 
@@ -72,7 +75,14 @@ std::vector<Row> run_shape(const std::string& arg, const std::string& label, con
         const Edf2dResult sampled = compute_edf2d(shape, opt);
         r.seconds = seconds_since(t0);
         r.nodes = sampled.graph->node_count();
-        r.cmp = compare_axes(*sampled.graph, *sampled.burning, *exact.graph, *exact.burning, diameter, diameter / 2000);
+        // Junction-tolerant error: any point of the exact axis within three sample spacings
+        // more than the nearest one (axis_correspondence.h); a sampled junction sits up to
+        // about two spacings along the axis from the exact one where branches meet at
+        // shallow angles (seen on apple-3 at N = 2000).
+        double perimeter = 0;
+        for (const Ring& ring : shape.rings) perimeter += ring_length(ring);
+        r.cmp = compare_axes(*sampled.graph, *sampled.burning, *exact.graph, *exact.burning, diameter, diameter / 2000,
+                             3 * perimeter / double(n));
       } catch (const std::exception& e) {
         r.error = e.what();
       }
@@ -115,6 +125,7 @@ struct Metric {
 };
 const Metric kMetrics[] = {
     {"max_edf_error", [](const AxisComparison& c) { return c.max_edf_error; }},
+    {"max_edf_error_near", [](const AxisComparison& c) { return c.max_edf_error_near; }},
     {"mean_edf_error", [](const AxisComparison& c) { return c.mean_edf_error; }},
     {"p95_edf_error", [](const AxisComparison& c) { return c.p95_edf_error; }},
     {"ema_distance", [](const AxisComparison& c) { return c.ema_distance; }},
@@ -145,7 +156,8 @@ void write_summary(const std::vector<Row>& rows, const std::string& path) {
   for (const auto& [n, values] : by_level) {
     for (std::size_t m = 0; m < std::size(kMetrics); ++m) {
       const double mu = mean(values[m]);
-      const double slope = prev_n ? std::log(mu / prev_mean[m]) / std::log(double(n) / double(prev_n)) : std::nan("");
+      const bool both = prev_n && mu > 0 && prev_mean[m] > 0;  // no slope through a zero
+      const double slope = both ? std::log(mu / prev_mean[m]) / std::log(double(n) / double(prev_n)) : std::nan("");
       const double mx = values[m].empty() ? std::nan("") : *std::max_element(values[m].begin(), values[m].end());
       char buf[256];
       std::snprintf(buf, sizeof buf, "%zu,%s,%zu,%.4g,%.4g,%.4g,%.3f\n", n, kMetrics[m].name, values[m].size(), mu,
@@ -171,8 +183,9 @@ void write_plot(const std::vector<Row>& rows, const std::string& path) {
     for (const auto& [n, values] : by_level) s.x.push_back(double(n)), s.y.push_back(mean(values[m]));
     p.series.push_back(s);
   }
-  if (!by_level.empty() && !p.series[0].y.empty())
-    p.slopes.push_back({-1, p.series[0].x.front(), p.series[0].y.front() * 1.5, "slope -1 (dotted)"});
+  const plot::Series& mean_error = p.series[2];  // kMetrics[2], mean_edf_error
+  if (!mean_error.y.empty())
+    p.slopes.push_back({-1, mean_error.x.front(), mean_error.y.front() * 2, "slope -1"});
   plot::save(p, path);
 }
 
@@ -207,13 +220,14 @@ int main(int argc, char** argv) {
     rows.insert(rows.end(), r.begin(), r.end());
   }
   std::ofstream os(out + "/sampling_convergence.csv");
-  os << "shape,samples,nodes,compared,infinite,max_edf_error,mean_edf_error,p95_edf_error,p99_edf_error,"
+  os << "shape,samples,nodes,compared,infinite,max_edf_error,max_edf_error_near,mean_edf_error,p95_edf_error,p99_edf_error,"
         "max_node_offset,ema_distance,hausdorff,seconds,error\n";
   std::size_t failures = 0;
   for (const Row& r : rows) {
     char buf[512];
-    std::snprintf(buf, sizeof buf, "%s,%zu,%zu,%zu,%zu,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.4f,", r.shape.c_str(),
-                  r.samples, r.nodes, r.cmp.nodes, r.cmp.infinite, r.cmp.max_edf_error, r.cmp.mean_edf_error,
+    std::snprintf(buf, sizeof buf, "%s,%zu,%zu,%zu,%zu,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.4f,", r.shape.c_str(),
+                  r.samples, r.nodes, r.cmp.nodes, r.cmp.infinite, r.cmp.max_edf_error, r.cmp.max_edf_error_near,
+                  r.cmp.mean_edf_error,
                   r.cmp.p95_edf_error, r.cmp.p99_edf_error, r.cmp.max_node_offset, r.cmp.ema_distance, r.cmp.hausdorff,
                   r.seconds);
     os << buf << csv_text(r.error) << "\n";

@@ -2,8 +2,14 @@
 // boundaries guided by a signature (3.5.3), against its definition.
 #include <catch2/catch.hpp>
 
+#include <nlohmann/json.hpp>
+
 #include <algorithm>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
 #include <random>
+#include <sstream>
 
 #include "apps2d/boundary_matching.h"
 #include "pipeline/edf2d.h"
@@ -105,4 +111,87 @@ TEST_CASE("curvature of a regular polygon is its turning angle over its side", "
   for (double k : curvature_signature(hexagon)) CHECK(k == Approx(M_PI / 3).epsilon(1e-12));
   std::reverse(hexagon.begin(), hexagon.end());
   for (double k : curvature_signature(hexagon)) CHECK(k == Approx(-M_PI / 3).epsilon(1e-12));
+}
+
+TEST_CASE("boundary eccentricity signature: BE(p) >= |p - EMA| and self-matching", "[apps2d]") {
+  const Shape2 s = load_shape(std::string(GF_PROJECT_DATA) + "/shapes2d/children-1.json");
+  const std::size_t n = 100, refine = 5;
+  const BoundarySignature be = eccentricity_signature(s, n, refine);
+  REQUIRE(be.values.size() == n);
+  // The same sampled axis as the signature's (n * refine samples): its EMA point.
+  Edf2dOptions o;
+  o.samples = n * refine;
+  const Edf2dResult r = compute_edf2d(s, o);
+  REQUIRE(r.burning->ema.size() == 1);
+  const Point2 ema = position_of(*r.graph, r.burning->ema[0].point);
+  // BE(p) = E(x) + R(x) >= |x - ema| + |x - p| >= |p - ema| (3.5.3; triangle inequality).
+  for (std::size_t i = 0; i < n; ++i) {
+    CHECK(be.points[i] == r.samples[0][i * refine]);
+    CHECK(be.values[i] >= std::hypot(be.points[i].x - ema.x, be.points[i].y - ema.y) - 1e-9);
+  }
+  const BoundaryMatch m = match_signatures(be.values, be.values);
+  CHECK(m.offset == 0);
+  CHECK(m.cost == 0);
+  CHECK_THROWS_WITH(eccentricity_signature(load_shape("hole"), 50), Catch::Contains("simply connected"));
+}
+
+TEST_CASE("signature maxima of a cyclic signal", "[apps2d]") {
+  const std::vector<double> v{0, 1, 3, 1, 0, 2, 2, 0, 5, 4};
+  CHECK(signature_maxima(v, 1) == std::vector<std::uint32_t>{2, 5, 8});
+  CHECK(signature_maxima(v, 3) == std::vector<std::uint32_t>{8});
+  CHECK(signature_maxima(std::vector<double>(6, 1.0), 2).empty());
+}
+
+namespace {
+
+struct CliRun {
+  int code;
+  std::string output;
+};
+
+CliRun run_cli(const std::string& args) {
+  const std::string log = std::filesystem::temp_directory_path() / "gf_apps2d_cli.log";
+  const int status = std::system((std::string(GF_CLI) + " " + args + " > " + log + " 2>&1").c_str());
+  std::ifstream in(log);
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, ss.str()};
+}
+
+}  // namespace
+
+TEST_CASE("match2d: documented JSON, identity on a shape with itself, clear errors", "[apps2d][cli]") {
+  const std::string a = std::string(GF_PROJECT_DATA) + "/shapes2d/key-1.json";
+  const std::string out = std::filesystem::temp_directory_path() / "gf_apps2d_match.json";
+  const std::string svg = std::filesystem::temp_directory_path() / "gf_apps2d_match.svg";
+  std::filesystem::remove(out);
+  std::filesystem::remove(svg);
+  const CliRun r = run_cli("match2d " + a + " " + a + " --samples 60 --json " + out + " --svg " + svg);
+  REQUIRE(r.code == 0);
+  CHECK(r.output.find("offset 0") != std::string::npos);
+  std::ifstream in(out);
+  const nlohmann::json j = nlohmann::json::parse(in);
+  CHECK(j["format"] == "grassfire-match2d");
+  CHECK(j["version"] == 1);
+  CHECK(j["signature"] == "be");
+  CHECK(j["samples"] == 60);
+  CHECK(j["offset"] == 0);
+  CHECK(j["cost"] == 0.0);
+  REQUIRE(j["correspondence"].size() == 60);
+  for (std::size_t i = 0; i < 60; ++i) CHECK(j["correspondence"][i] == i);
+  CHECK(j["a_samples"].size() == 60);
+  CHECK(std::filesystem::file_size(svg) > 1000);
+
+  const std::string missing = std::filesystem::temp_directory_path() / "gf_apps2d_no_such_shape.json";
+  std::filesystem::remove(out);
+  const CliRun bad = run_cli("match2d " + a + " " + missing + " --json " + out);
+  CHECK(bad.code != 0);
+  CHECK(bad.output.find("gf_apps2d_no_such_shape.json") != std::string::npos);
+  CHECK(!std::filesystem::exists(out));
+  const CliRun kind = run_cli("match2d " + a + " " + a + " --signature area");
+  CHECK(kind.code != 0);
+  CHECK(kind.output.find("--signature") != std::string::npos);
+  const CliRun holes = run_cli("match2d hole branches");
+  CHECK(holes.code != 0);
+  CHECK(holes.output.find("simply connected") != std::string::npos);
 }

@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "apps2d/axis_correspondence.h"
+#include "burn2/potential_residue.h"
 
 namespace grassfire {
 
@@ -61,12 +62,15 @@ Point2 bounding_box_centre(const Shape2& shape) {
   return {0.5 * (xmin->x + xmax->x), 0.5 * (ymin->y + ymax->y)};
 }
 
-ShapeCentres shape_centres(const Shape2& shape, const MedialGraph& axis, const GrassfireResult& burning) {
+ShapeCentres shape_centres(const Shape2& shape, const MedialGraph& axis, const GrassfireResult& burning,
+                           const BoundarySamples* samples) {
   ShapeCentres c;
   c.centroid = area_centroid(shape);
   c.bounding_box = bounding_box_centre(shape);
   Point2 e;
   if (ema_position(axis, burning, &e)) c.ema = e;
+  const PotentialResidue pr = potential_residue(axis, closest_points(axis, &shape, samples));
+  if (!pr.maximum.value.value.is_infinite()) c.pr_maximum = pr.maximum.position;
   return c;
 }
 

@@ -5,18 +5,20 @@
 //  - the candidate centres of a shape: the area centroid (the usual first step of
 //    alignment), the centre of its bounding box (what a [0,1]^2 normalisation aligns), the
 //    EMA point of the exact polygon axis (3.5.2: stable under isometric deformations), and
-//    the local maximum of the potential residue PR (3.4.2, Fig. 3.8 blue dots) when given;
+//    the maximum of the potential residue PR (3.4.2, Fig. 3.8 blue dots; burn2/potential_
+//    residue.h on the same axis);
 //  - the shift that moves a shape's centre onto another's;
 //  - polygon_overlap: areas of intersection and union of two shapes, the second translated
 //    by a shift, and their ratio IoU. This is exact: CGAL's Boolean set operations on
 //    polygons with holes over exact constructions (Epeck), the shift applied exactly to the
 //    double coordinates; only the final areas and ratio are rounded to double.
 // Exactness: the overlap is exact (above). The centroid is the shoelace formula in double
-// precision, the EMA point is the double position of the certified EMA (its enclosure is
-// exact to the graph's position_error): centres are measurements, not decisions.
+// precision; the EMA point and the PR maximum are the double positions of certified
+// points (inside a parabolic arc placed by MedialGeometry::point_along, a double drawing
+// routine): centres are measurements, not decisions.
 // Contract: validated shapes (shapes/shape2.h); the burning was computed on the exact
 // polygon axis of the same shape. A shape with holes has an EMA made of cycles and no EMA
-// point: alignment by EMA then reports has_ema = false.
+// point, and PR is infinite between rings: those centres are then absent.
 // Complexity: centres O(n) after the axis; overlap O((n + k) log n) for n vertices and k
 // intersections (CGAL sweep).
 #pragma once
@@ -26,6 +28,7 @@
 #include <vector>
 
 #include "burn2/extended_grassfire.h"
+#include "shapes/resample.h"
 #include "shapes/shape2.h"
 
 namespace grassfire {
@@ -38,7 +41,7 @@ struct ShapeCentres {
   Point2 centroid;
   Point2 bounding_box;
   std::optional<Point2> ema;          // absent when the EMA is a set of cycles
-  std::optional<Point2> pr_maximum;   // absent unless supplied
+  std::optional<Point2> pr_maximum;   // absent when PR is infinite (holes)
   std::optional<Point2> get(AlignmentMethod m) const;
 };
 
@@ -46,8 +49,11 @@ struct ShapeCentres {
 Point2 area_centroid(const Shape2& shape);
 Point2 bounding_box_centre(const Shape2& shape);
 
-// Centroid, bounding box and EMA point (the EMA of the largest component of the axis).
-ShapeCentres shape_centres(const Shape2& shape, const MedialGraph& axis, const GrassfireResult& burning);
+// Centroid, bounding box, EMA point (the EMA of the largest component of the axis) and PR
+// maximum. The axis is an exact polygon axis or a sampled axis (then `samples` are its
+// boundary samples, needed for the closest points).
+ShapeCentres shape_centres(const Shape2& shape, const MedialGraph& axis, const GrassfireResult& burning,
+                           const BoundarySamples* samples = nullptr);
 
 struct Overlap {
   double area_a = 0, area_b = 0;

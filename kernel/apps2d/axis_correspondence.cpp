@@ -89,6 +89,22 @@ void AxisLocator::scan_cell(long ix, long iy, const Point2& q, AxisPoint& best) 
   }
 }
 
+bool AxisLocator::clip_to_disk(const Piece& p, const Point2& q, double r, double* t0, double* t1) {
+  // |a + t (b - a) - q|^2 <= r^2: a quadratic in t, clipped to [0, 1].
+  const double dx = p.b.x - p.a.x, dy = p.b.y - p.a.y, ex = p.a.x - q.x, ey = p.a.y - q.y;
+  const double A = dx * dx + dy * dy, B = 2 * (dx * ex + dy * ey), C = ex * ex + ey * ey - r * r;
+  if (A == 0) {
+    *t0 = 0, *t1 = 1;
+    return C <= 0;
+  }
+  const double disc = B * B - 4 * A * C;
+  if (disc < 0) return false;
+  const double root = std::sqrt(disc);
+  *t0 = std::max(0.0, (-B - root) / (2 * A));
+  *t1 = std::min(1.0, (-B + root) / (2 * A));
+  return *t0 <= *t1;
+}
+
 AxisPoint AxisLocator::nearest(const Point2& q) const {
   AxisPoint best;
   if (pieces_.empty()) return best;
@@ -149,6 +165,33 @@ bool ema_position(const MedialGraph& g, const GrassfireResult& burning, Point2* 
 
 namespace {
 
+// The range of the EDF of B over [s0, s1] on an edge: min(Tu + s, Tv + w - s) over the
+// ends that sent fire into the edge is concave, so its range is spanned by the values at
+// s0, s1 and, when inside, the kink (the quench point).
+void edf_range(const GrassfireResult& burning, std::uint32_t edge, double s0, double s1, double* lo, double* hi) {
+  const MedialGraph& g = burning.times.graph();
+  const std::uint32_t u = g.edge(edge).u;
+  const double f0 = burning.edf_along(edge, u, s0).mid(), f1 = burning.edf_along(edge, u, s1).mid();
+  *lo = std::min(f0, f1), *hi = std::max(f0, f1);
+  const EdgeFire& fire = burning.fire[edge];
+  if (fire.from_u == kNoTime || fire.from_v == kNoTime) return;
+  const double w = g.edge(edge).length.mid();
+  const double kink = 0.5 * (w + burning.times.approx(fire.from_v).mid() - burning.times.approx(fire.from_u).mid());
+  if (kink > s0 && kink < s1) *hi = std::max(*hi, burning.edf_along(edge, u, kink).mid());
+}
+
+// min |v - EDF_B(y)| over the points y of B within r of q.
+double nearest_value_error(const AxisLocator& on_b, const GrassfireResult& burning_b, const Point2& q, double r,
+                           double v) {
+  double best = std::numeric_limits<double>::infinity();
+  on_b.for_each_within(q, r, [&](std::uint32_t edge, double s0, double s1) {
+    double lo, hi;
+    edf_range(burning_b, edge, s0, s1, &lo, &hi);
+    best = std::min(best, std::max({0.0, lo - v, v - hi}));
+  });
+  return best;
+}
+
 double directed_hausdorff(const std::vector<Point2>& from, const AxisLocator& to) {
   double h = 0;
   for (const Point2& p : from) h = std::max(h, to.nearest(p).distance);
@@ -158,7 +201,7 @@ double directed_hausdorff(const std::vector<Point2>& from, const AxisLocator& to
 }  // namespace
 
 AxisComparison compare_axes(const MedialGraph& a, const GrassfireResult& burning_a, const MedialGraph& b,
-                            const GrassfireResult& burning_b, double diameter, double step) {
+                            const GrassfireResult& burning_b, double diameter, double step, double match_radius) {
   if (!(diameter > 0)) throw std::invalid_argument("compare_axes: the diameter must be positive");
   const AxisLocator on_b(b, step), on_a(a, step);
   AxisComparison c;
@@ -174,6 +217,10 @@ AxisComparison compare_axes(const MedialGraph& a, const GrassfireResult& burning
     }
     const double err = std::abs(ea - eb) / diameter;
     c.max_edf_error = std::max(c.max_edf_error, err);
+    // Widened by 1e-12 of the diameter so that y(x) itself is always within the radius.
+    const double near =
+        nearest_value_error(on_b, burning_b, a.node(v).position, y.distance + match_radius + 1e-12 * diameter, ea);
+    c.max_edf_error_near = std::max(c.max_edf_error_near, std::min(near, std::abs(ea - eb)) / diameter);
     errors.push_back(err);
     sum += err;
     ++c.nodes;

@@ -25,6 +25,8 @@
 // below the ring's distance: O(1) expected for query points near the axis.
 #pragma once
 
+#include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <limits>
 #include <vector>
@@ -47,6 +49,10 @@ class AxisLocator {
   AxisLocator(const MedialGraph& g, double step);
   // The nearest point of the graph to q (distance infinity for a graph without edges).
   AxisPoint nearest(const Point2& q) const;
+  // Calls f(edge, s0, s1) for every chord piece with a point within distance r of q, with
+  // [s0, s1] the arc lengths (from the edge's u) of the part of the piece within r.
+  template <class F>
+  void for_each_within(const Point2& q, double r, F&& f) const;
   // Points along every edge at arc-length spacing <= step, both ends included.
   std::vector<Point2> dense_points() const;
   const MedialGraph& graph() const { return g_; }
@@ -59,6 +65,8 @@ class AxisLocator {
   };
   void build_grid();
   void scan_cell(long ix, long iy, const Point2& q, AxisPoint& best) const;
+  // The part of the piece within distance r of q as parameters [t0, t1] of a..b; false if none.
+  static bool clip_to_disk(const Piece& p, const Point2& q, double r, double* t0, double* t1);
 
   const MedialGraph& g_;
   double step_;
@@ -67,6 +75,27 @@ class AxisLocator {
   long nx_ = 1, ny_ = 1;
   std::vector<std::uint32_t> cell_start_, cell_items_;  // CSR lists of pieces per cell
 };
+
+template <class F>
+void AxisLocator::for_each_within(const Point2& q, double r, F&& f) const {
+  if (pieces_.empty()) return;
+  const auto cell = [&](double v, double o, long n) { return std::clamp(static_cast<long>(std::floor((v - o) / cell_)), 0L, n - 1); };
+  const long ax = cell(q.x - r, x0_, nx_), bx = cell(q.x + r, x0_, nx_);
+  const long ay = cell(q.y - r, y0_, ny_), by = cell(q.y + r, y0_, ny_);
+  std::vector<std::uint32_t> seen;
+  for (long ix = ax; ix <= bx; ++ix)
+    for (long iy = ay; iy <= by; ++iy) {
+      const auto c = static_cast<std::size_t>(iy * nx_ + ix);
+      for (std::uint32_t k = cell_start_[c]; k < cell_start_[c + 1]; ++k) seen.push_back(cell_items_[k]);
+    }
+  std::sort(seen.begin(), seen.end());
+  seen.erase(std::unique(seen.begin(), seen.end()), seen.end());
+  for (std::uint32_t i : seen) {
+    const Piece& p = pieces_[i];
+    double t0, t1;
+    if (clip_to_disk(p, q, r, &t0, &t1)) f(p.edge, p.sa + t0 * (p.sb - p.sa), p.sa + t1 * (p.sb - p.sa));
+  }
+}
 
 // The EDF at a point of the graph (midpoint of the certified enclosure; infinity on the 2-core).
 double edf_at(const GrassfireResult& burning, const AxisPoint& p);
@@ -82,13 +111,16 @@ struct AxisComparison {
   double mean_edf_error = 0;      // mean of the same
   double p95_edf_error = 0;       // 95th and 99th percentiles of the same (nearest rank)
   double p99_edf_error = 0;
+  // max over x of min |EDF_A(x) - EDF_B(y)| over the points y of B within |x - y(x)| +
+  // match_radius of x: the error once a node may match any branch near a junction.
+  double max_edf_error_near = 0;
   double max_node_offset = 0;     // max |x - y(x)| / diameter
   double ema_distance = std::numeric_limits<double>::quiet_NaN();  // NaN: an EMA is cycles
   double hausdorff = 0;           // between the axes, / diameter
 };
 
 AxisComparison compare_axes(const MedialGraph& a, const GrassfireResult& burning_a, const MedialGraph& b,
-                            const GrassfireResult& burning_b, double diameter, double step);
+                            const GrassfireResult& burning_b, double diameter, double step, double match_radius = 0);
 
 // Largest distance between two vertices of the shape's outer ring (double precision,
 // convex hull then all pairs of hull vertices).

@@ -7,6 +7,9 @@
 #include <stdexcept>
 
 #include "apps2d/axis_correspondence.h"
+#include "burn2/boundary_eccentricity.h"
+#include "burn2/closest_points.h"
+#include "pipeline/edf2d.h"
 #include "shapes/resample.h"
 
 namespace grassfire {
@@ -40,6 +43,59 @@ std::vector<double> local_feature_size(const std::vector<Point2>& points, const 
   lfs.reserve(points.size());
   for (const Point2& p : points) lfs.push_back(locator.nearest(p).distance);
   return lfs;
+}
+
+BoundarySignature eccentricity_signature(const Shape2& shape, std::size_t samples, std::size_t refine) {
+  if (shape.rings.size() != 1)
+    throw std::invalid_argument("eccentricity_signature: '" + shape.name +
+                                "' has holes; boundary eccentricity is defined for simply connected shapes (3.5.3)");
+  if (samples < kMinSamplesPerRing || refine < 1)
+    throw std::invalid_argument("eccentricity_signature: at least 8 samples and refine >= 1 are needed");
+  Edf2dOptions o;
+  o.samples = samples * refine;
+  const Edf2dResult r = compute_edf2d(shape, o);
+  const AxisEccentricity e = distance_to_ema(*r.graph, *r.burning);
+  const ClosestPoints cp = closest_points(*r.graph, &shape, &r.samples);
+  const BoundaryEccentricity be = boundary_eccentricity(*r.graph, *r.burning, e, cp);
+  BoundarySignature sig;
+  std::vector<bool> known;
+  for (std::size_t i = 0; i < samples; ++i) {
+    sig.points.push_back(r.samples[0][i * refine]);
+    const Interval v = be.value[0][i * refine];
+    known.push_back(!v.is_infinite());
+    sig.values.push_back(v.is_infinite() ? 0.0 : v.mid());
+  }
+  if (std::find(known.begin(), known.end(), true) == known.end())
+    throw std::runtime_error("eccentricity_signature: no boundary sample of '" + shape.name + "' has a medial point");
+  for (std::size_t i = 0; i < samples; ++i) {
+    if (known[i]) continue;
+    for (std::size_t d = 1;; ++d) {  // the nearest known sample, forwards first
+      if (known[(i + d) % samples]) {
+        sig.values[i] = sig.values[(i + d) % samples];
+        break;
+      }
+      if (known[(i + samples - d) % samples]) {
+        sig.values[i] = sig.values[(i + samples - d) % samples];
+        break;
+      }
+    }
+    ++sig.filled;
+  }
+  return sig;
+}
+
+std::vector<std::uint32_t> signature_maxima(const std::vector<double>& v, std::size_t window) {
+  const std::size_t n = v.size();
+  std::vector<std::uint32_t> out;
+  for (std::size_t i = 0; i < n; ++i) {
+    bool top = true;
+    for (std::size_t d = 1; d <= window && d < n && top; ++d) {
+      const double before = v[(i + n - d) % n], after = v[(i + d) % n];
+      top = v[i] >= after && v[i] > before;  // a plateau counts once, at its first sample
+    }
+    if (top) out.push_back(static_cast<std::uint32_t>(i));
+  }
+  return out;
 }
 
 namespace {

@@ -7,7 +7,11 @@
 //    (turning angle at the sample over the mean length of its two chords; Fig. 3.9a), the
 //    local feature size LFS (distance from the sample to the nearest point of the medial
 //    axis, apps2d/axis_correspondence.h; Fig. 3.9b), and boundary eccentricity BE (3.5.3;
-//    Fig. 3.9c,d) from the measures of burn2/.
+//    Fig. 3.9c,d) from burn2/boundary_eccentricity.h: BE is defined per sample of a
+//    sampled axis, so the axis is built from `refine` times more samples than the
+//    signature keeps (every refine-th, the same points as boundary_samples); a sample
+//    closest to no medial node takes the value of the nearest sample that has one, in
+//    ring order (counted in `filled`).
 //  - match_signatures: a correspondence between samples a_0..a_{n-1} of one closed curve
 //    and b_0..b_{m-1} of another, both in the same orientation. For every start offset o
 //    of b (cyclic alignment: a_0 is matched to b_o), a monotone lattice path from (0, o)
@@ -39,6 +43,7 @@ namespace grassfire {
 struct BoundarySignature {
   std::vector<Point2> points;  // samples of the outer ring in order (counter-clockwise)
   std::vector<double> values;  // one per sample
+  std::size_t filled = 0;      // values taken from a neighbour (BE: no medial point)
 };
 
 // `samples` uniform arc-length samples of the outer ring, with empty values.
@@ -47,6 +52,12 @@ BoundarySignature boundary_samples(const Shape2& shape, std::size_t samples);
 std::vector<double> curvature_signature(const std::vector<Point2>& closed_curve);
 // Distance from every point to the nearest point of the medial graph (the axis of the shape).
 std::vector<double> local_feature_size(const std::vector<Point2>& points, const MedialGraph& axis);
+// Boundary eccentricity at `samples` boundary samples (see above). The shape must be simply
+// connected (3.5.3); std::invalid_argument otherwise, naming the shape.
+BoundarySignature eccentricity_signature(const Shape2& shape, std::size_t samples, std::size_t refine = 5);
+// Indices of the local maxima of a cyclic signature: values at least as large as every
+// other within `window` samples on either side (the first of equal neighbours only).
+std::vector<std::uint32_t> signature_maxima(const std::vector<double>& values, std::size_t window);
 
 struct MatchOptions {
   double stretch = 0.05;  // cost of one non-diagonal step, in normalised signature units
