@@ -6,6 +6,9 @@
 #include <algorithm>
 #include <cstdio>
 #include <sys/wait.h>
+#include <unistd.h>
+
+#include <filesystem>
 
 namespace grassfire::testing {
 
@@ -106,6 +109,10 @@ CliRun run_cli(const std::string& args) {
   const int status = pclose(pipe);
   run.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
   return run;
+}
+
+std::string temp_path(const std::string& name) {
+  return (std::filesystem::temp_directory_path() / (std::to_string(getpid()) + "_" + name)).string();
 }
 
 }  // namespace grassfire::testing

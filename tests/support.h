@@ -35,4 +35,8 @@ struct CliRun {
 };
 CliRun run_cli(const std::string& args);
 
+// A path in the temporary folder that no other test process uses at the same time
+// (CTest runs test cases in parallel): <tmp>/<pid>_<name>.
+std::string temp_path(const std::string& name);
+
 }  // namespace grassfire::testing

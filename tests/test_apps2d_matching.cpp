@@ -14,6 +14,7 @@
 #include "apps2d/boundary_matching.h"
 #include "pipeline/edf2d.h"
 #include "shapes/load_shape.h"
+#include "support.h"
 
 using namespace grassfire;
 
@@ -142,28 +143,14 @@ TEST_CASE("signature maxima of a cyclic signal", "[apps2d]") {
   CHECK(signature_maxima(std::vector<double>(6, 1.0), 2).empty());
 }
 
-namespace {
-
-struct CliRun {
-  int code;
-  std::string output;
-};
-
-CliRun run_cli(const std::string& args) {
-  const std::string log = std::filesystem::temp_directory_path() / "gf_apps2d_cli.log";
-  const int status = std::system((std::string(GF_CLI) + " " + args + " > " + log + " 2>&1").c_str());
-  std::ifstream in(log);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, ss.str()};
-}
-
-}  // namespace
+using grassfire::testing::CliRun;
+using grassfire::testing::run_cli;
+using grassfire::testing::temp_path;
 
 TEST_CASE("match2d: documented JSON, identity on a shape with itself, clear errors", "[apps2d][cli]") {
   const std::string a = std::string(GF_PROJECT_DATA) + "/shapes2d/key-1.json";
-  const std::string out = std::filesystem::temp_directory_path() / "gf_apps2d_match.json";
-  const std::string svg = std::filesystem::temp_directory_path() / "gf_apps2d_match.svg";
+  const std::string out = temp_path("gf_apps2d_match.json");
+  const std::string svg = temp_path("gf_apps2d_match.svg");
   std::filesystem::remove(out);
   std::filesystem::remove(svg);
   const CliRun r = run_cli("match2d " + a + " " + a + " --samples 60 --json " + out + " --svg " + svg);
@@ -182,7 +169,7 @@ TEST_CASE("match2d: documented JSON, identity on a shape with itself, clear erro
   CHECK(j["a_samples"].size() == 60);
   CHECK(std::filesystem::file_size(svg) > 1000);
 
-  const std::string missing = std::filesystem::temp_directory_path() / "gf_apps2d_no_such_shape.json";
+  const std::string missing = temp_path("gf_apps2d_no_such_shape.json");
   std::filesystem::remove(out);
   const CliRun bad = run_cli("match2d " + a + " " + missing + " --json " + out);
   CHECK(bad.code != 0);

@@ -10,31 +10,22 @@
 #include <sstream>
 #include <string>
 
+#include "support.h"
+
 namespace {
 
-struct Run {
-  int code;
-  std::string output;  // stdout and stderr together
-};
+using grassfire::testing::CliRun;
+using grassfire::testing::temp_path;
 
-Run run(const std::string& args) {
-  const std::string log = std::filesystem::temp_directory_path() / "gf_cli_test.log";
-  const std::string cmd = std::string(GF_CLI) + " " + args + " > " + log + " 2>&1";
-  const int status = std::system(cmd.c_str());
-  std::ifstream in(log);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, ss.str()};
-}
-
-std::string temp(const std::string& name) { return std::filesystem::temp_directory_path() / name; }
+CliRun run(const std::string& args) { return grassfire::testing::run_cli(args); }
+std::string temp(const std::string& name) { return temp_path(name); }
 
 }  // namespace
 
 TEST_CASE("edf2d writes the documented JSON for a built-in shape", "[cli]") {
   const std::string out = temp("gf_cli_branches.json");
   std::filesystem::remove(out);
-  const Run r = run("edf2d branches --samples 1500 --json " + out);
+  const CliRun r = run("edf2d branches --samples 1500 --json " + out);
   REQUIRE(r.code == 0);
   CHECK(r.output.find("EMA        point") != std::string::npos);
   std::ifstream in(out);
@@ -81,7 +72,7 @@ TEST_CASE("edf2d rejects malformed input: message names the file, exit code 1, n
     }
     INFO(path);
     ++rejected;
-    const Run r = run("edf2d " + path + " --json " + out);
+    const CliRun r = run("edf2d " + path + " --json " + out);
     CHECK(r.code == 1);
     CHECK(r.output.find(entry.path().filename().string()) != std::string::npos);
     CHECK_FALSE(std::filesystem::exists(out));
@@ -96,7 +87,7 @@ TEST_CASE("edf2d command-line errors and help", "[cli]") {
   CHECK(run("edf2d branches --samples many").code == 1);
   CHECK(run("edf2d branches --bogus").code == 2);
   CHECK(run("edf2d branches --variant fast").code == 1);
-  const Run missing = run("edf2d no-such-shape");
+  const CliRun missing = run("edf2d no-such-shape");
   CHECK(missing.code == 1);
   CHECK(missing.output.find("no-such-shape") != std::string::npos);
   CHECK(run("frobnicate").code == 2);
@@ -104,7 +95,7 @@ TEST_CASE("edf2d command-line errors and help", "[cli]") {
 
 TEST_CASE("edf2d variants and the exact polygon axis run from the command line", "[cli]") {
   CHECK(run("edf2d rectangle --variant dissertation --quiet").code == 0);
-  const Run exact = run("edf2d rectangle --exact");
+  const CliRun exact = run("edf2d rectangle --exact");
   CHECK(exact.code == 0);
   CHECK(exact.output.find("exact polygon axis") != std::string::npos);
 }

@@ -218,7 +218,7 @@ TEST_CASE("the pipeline and grassfire edf2d --disks", "[measures2d]") {
   CHECK(r.disk_report.union_holes == 1);
   CHECK(r.graph->cycle_rank() == 1);
 
-  const std::string out = (std::filesystem::temp_directory_path() / "gf_measures2d_disks.json").string();
+  const std::string out = grassfire::testing::temp_path("gf_measures2d_disks.json");
   std::filesystem::remove(out);
   const CliRun ok = run_cli("edf2d --disks " + kDisks + "three.txt --json " + out);
   REQUIRE(ok.code == 0);

@@ -146,7 +146,7 @@ TEST_CASE("topology-preserving pruning keeps the hole's cycle and a tree's EMA",
 }
 
 TEST_CASE("grassfire prune2d", "[measures2d]") {
-  const std::string out = (std::filesystem::temp_directory_path() / "gf_measures2d_prune.json").string();
+  const std::string out = grassfire::testing::temp_path("gf_measures2d_prune.json");
   std::filesystem::remove(out);
   const CliRun run = run_cli("prune2d blunt-sharp --exact --et 0.05 --relative --st 0.3 --topology --json " + out);
   REQUIRE(run.code == 0);

@@ -148,7 +148,7 @@ TEST_CASE("PR is infinite where the closest points lie on different rings", "[me
 }
 
 TEST_CASE("edf2d writes PR per node and the PR maximum", "[measures2d]") {
-  const std::string out = (std::filesystem::temp_directory_path() / "gf_measures2d_pr.json").string();
+  const std::string out = grassfire::testing::temp_path("gf_measures2d_pr.json");
   std::filesystem::remove(out);
   const CliRun run = run_cli("edf2d rectangle --exact --quiet --json " + out);
   REQUIRE(run.code == 0);
