@@ -32,6 +32,32 @@ mpq_class power(const BallSet& b, std::uint32_t i, const ExactPoint3& x) {
   return squared_distance(x, b.centers[i]) - b.squared_radii[i];
 }
 
+bool interior_of_union(const BallSet& b, const ExactPoint3& p) {
+  std::vector<ExactPoint3> q;
+  for (std::uint32_t i = 0; i < b.centers.size(); ++i)
+    if (sgn(power(b, i, p)) == 0) q.push_back(b.centers[i] - p);
+  bool full_rank = false;
+  for (std::size_t i = 0; i < q.size() && !full_rank; ++i)
+    for (std::size_t j = i + 1; j < q.size() && !full_rank; ++j)
+      for (std::size_t k = j + 1; k < q.size() && !full_rank; ++k) full_rank = sgn(dot(cross(q[i], q[j]), q[k])) != 0;
+  if (!full_rank) return false;
+  // Not surrounded iff the polar cone {d : d . q <= 0 for all q} has an extreme ray, which
+  // is orthogonal to two of the q (the cone is pointed since the q span R^3).
+  for (std::size_t i = 0; i < q.size(); ++i)
+    for (std::size_t j = i + 1; j < q.size(); ++j) {
+      const ExactPoint3 d = cross(q[i], q[j]);
+      if (is_zero(d)) continue;
+      bool all_nonpositive = true, all_nonnegative = true;
+      for (const ExactPoint3& x : q) {
+        const int s = sgn(dot(d, x));
+        all_nonpositive &= s <= 0;
+        all_nonnegative &= s >= 0;
+      }
+      if (all_nonpositive || all_nonnegative) return false;
+    }
+  return true;
+}
+
 int sign_with_root(const mpq_class& a, int side, const mpq_class& b, const mpq_class& s) {
   const int sa = sgn(a), sb = side * sgn(b);
   if (sgn(s) == 0 || sb == 0) return sa;
@@ -221,6 +247,20 @@ void AlphaComplex::compute_rho() {
       }
       rho_sign_[s] = power_sign(p.rho_simplex);
     }
+  // rho = 0: the dual face touches the zero set of min pow at one point (pow is strictly
+  // convex on it), the centre of rho_simplex; it counts when that point is interior.
+  in_complex_.assign(simplices_.size(), false);
+  std::map<std::uint32_t, bool> interior;
+  for (std::uint32_t s = 0; s < simplices_.size(); ++s) {
+    if (rho_sign_[s] != 0) {
+      in_complex_[s] = rho_sign_[s] < 0;
+      continue;
+    }
+    const std::uint32_t r = simplices_[s].rho_simplex;
+    auto it = interior.find(r);
+    if (it == interior.end()) it = interior.emplace(r, interior_of_union(*balls_, exact(r).centre)).first;
+    in_complex_[s] = it->second;
+  }
 }
 
 bool AlphaComplex::is_singular(std::uint32_t s) const {
@@ -253,10 +293,21 @@ BallSet random_ball_set(std::size_t n, unsigned seed) {
   return s;
 }
 
+std::array<ExactPoint3, 3> boundary_vertex_key(const BoundaryVertex& v) {
+  if (v.rational) return {v.point, {-1, 0, 0}, {0, 0, 0}};
+  const mpq_class& lead = sgn(v.n.x) != 0 ? v.n.x : sgn(v.n.y) != 0 ? v.n.y : v.n.z;
+  return {v.z, {v.s * dot(v.n, v.n), 0, 0}, mpq_class(v.side / abs(lead)) * v.n};
+}
+
 std::vector<BoundaryVertex> boundary_vertices(const BallSet& b, const AlphaComplex& k, RadicalTable* table) {
   std::vector<BoundaryVertex> out;
-  std::map<ExactPoint3, std::size_t, bool (*)(const ExactPoint3&, const ExactPoint3&)> rational_points(
-      [](const ExactPoint3& x, const ExactPoint3& y) { return compare_lex(x, y) < 0; });
+  // A point on four or more spheres comes from several triangles.
+  auto key_less = [](const std::array<ExactPoint3, 3>& x, const std::array<ExactPoint3, 3>& y) {
+    for (int i = 0; i < 3; ++i)
+      if (int c = compare_lex(x[i], y[i])) return c < 0;
+    return false;
+  };
+  std::map<std::array<ExactPoint3, 3>, bool, decltype(key_less)> seen(key_less);
   for (std::uint32_t t : k.of_dimension(2)) {
     if (k.power_sign(t) > 0) continue;  // the three spheres do not meet
     const PowerSimplex& p = k.exact(t);
@@ -286,9 +337,11 @@ std::vector<BoundaryVertex> boundary_vertices(const BallSet& b, const AlphaCompl
       if (root) {
         v.rational = true;
         v.point = v.z + mpq_class(side * *root) * v.n;
-        if (!rational_points.emplace(v.point, out.size()).second) continue;  // on four spheres
+        if (!seen.emplace(boundary_vertex_key(v), true).second) continue;
+        if (interior_of_union(b, v.point)) continue;  // surrounded by the balls through it
         v.approx = {enclose(v.point.x), enclose(v.point.y), enclose(v.point.z)};
       } else {
+        if (!seen.emplace(boundary_vertex_key(v), true).second) continue;
         if (!registered) v.radical = table->add(v.s);
         registered = true;
         const Interval r = table->root(v.radical);

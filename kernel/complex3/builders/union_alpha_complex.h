@@ -9,14 +9,17 @@
 //    w when z lies in F_sigma and else the minimum of rho over the cofaces (the
 //    alpha-shape recursion of Edelsbrunner 1995, with F_sigma bounded by the half-spaces of
 //    its link vertices). The dual complex K = {sigma : rho < 0} collects the simplices whose
-//    dual face meets the OPEN union: with strict inequality, balls that touch the union's
-//    boundary only at tangency points (a ball inside another, internally tangent; two
-//    balls touching from outside) add nothing, as the medial axis requires. K is homotopy
-//    equivalent to the union (Edelsbrunner 1995).
+//    dual face meets the interior of the union, which is {min pow < 0} plus the points
+//    with min pow = 0 whose balls surround them (interior_of_union below: eight balls of
+//    radius sqrt 3 on the cube corners cover the centre although none contains it in its
+//    interior). So balls that touch only at tangency points (a ball internally tangent to
+//    another, two balls touching from outside) add nothing, as the medial axis requires,
+//    and K is homotopy equivalent to the interior of the union (Edelsbrunner 1995).
 //  - the vertices of the boundary of the union: for each triangle t = (i, j, k) the points
 //    z_t +- sqrt(s) n_t (n_t = (c_j - c_i) x (c_k - c_i), s = -w_t / |n_t|^2) where the three
 //    spheres meet, kept when they lie on the dual power edge of t (no other ball contains
-//    them). Tangency points (s = 0) and points on four spheres are rational and merged.
+//    them) and the balls through them do not surround them; a point found from several
+//    triangles (on four or more spheres) is kept once.
 // Contract: balls with positive squared radii (std::invalid_argument otherwise), at least
 // one ball. Complexity: O(n log n) for the triangulation (expected), then O(1) exact
 // rational work per simplex.
@@ -81,7 +84,7 @@ class AlphaComplex {
   // The simplex with its exact power centre and power (computed on first use).
   const PowerSimplex& exact(std::uint32_t s) const;
   const std::vector<std::uint32_t>& of_dimension(int d) const { return by_dim_[d]; }
-  bool in_complex(std::uint32_t s) const { return rho_sign_[s] < 0; }
+  bool in_complex(std::uint32_t s) const { return in_complex_[s]; }
   bool in_closed_complex(std::uint32_t s) const { return rho_sign_[s] <= 0; }
   int power_sign(std::uint32_t s) const;  // exact sign of w
   std::size_t exact_simplices() const { return exact_count_; }  // filter failures
@@ -103,6 +106,7 @@ class AlphaComplex {
   std::vector<Interval> approx_weight_;
   mutable std::size_t exact_count_ = 0;
   std::vector<int> rho_sign_;
+  std::vector<bool> in_complex_;
   std::size_t ball_count_ = 0, hidden_ = 0;
   int dimension_ = -1;
   mutable std::vector<PowerSimplex> simplices_;
@@ -112,6 +116,12 @@ class AlphaComplex {
 
 // pow_i(x) = |x - c_i|^2 - r_i^2.
 mpq_class power(const BallSet& b, std::uint32_t i, const ExactPoint3& x);
+
+// For p with min_i pow_i(p) = 0 (on some spheres, in no open ball): whether p is an
+// interior point of the union, i.e. the centres c_i of the balls through p surround it
+// (0 in the interior of conv{c_i - p}; otherwise a direction d with d . (c_i - p) <= 0 for
+// all of them leaves every ball). Exact; O(k^3) for k spheres through p.
+bool interior_of_union(const BallSet& b, const ExactPoint3& p);
 
 struct BoundaryVertex {
   std::array<std::uint32_t, 3> balls{};  // the triangle whose spheres meet here
@@ -125,6 +135,11 @@ struct BoundaryVertex {
   // Exact coordinates in the field of the table.
   std::array<RadicalNumber, 3> coordinates(const RadicalTable& t) const;
 };
+
+// The exact identity of a boundary vertex, whichever triangle it was found from: the point
+// when rational; else (z, (s |n|^2, 0, 0), side n / |first nonzero coordinate of n|), since
+// the point is z + sqrt(s |n|^2) times the unit direction of side n.
+std::array<ExactPoint3, 3> boundary_vertex_key(const BoundaryVertex& v);
 
 std::vector<BoundaryVertex> boundary_vertices(const BallSet& b, const AlphaComplex& k, RadicalTable* table);
 

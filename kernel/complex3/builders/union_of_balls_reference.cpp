@@ -16,10 +16,7 @@ using Coords = std::array<RadicalNumber, 3>;
 using Box = std::array<Interval, 3>;
 
 struct RefVertex {
-  std::array<std::uint32_t, 3> balls;
-  int side;
-  bool rational;
-  ExactPoint3 point;  // when rational
+  BoundaryVertex v;  // as the builder describes its vertices (balls, side, z, n, s, point)
   Coords exact;
   Box approx;
 };
@@ -101,68 +98,77 @@ class Reference {
     return (x.c[0] - x.c[3] * origin.x) * d.x + (x.c[1] - x.c[3] * origin.y) * d.y + (x.c[2] - x.c[3] * origin.z) * d.z;
   }
 
-  bool outside_others(const ExactPoint3& p, std::initializer_list<std::uint32_t> except) const {
-    for (std::uint32_t l = 0; l < b_.centers.size(); ++l)
-      if (std::find(except.begin(), except.end(), l) == except.end() && power(b_, l, p) < 0) return false;
-    return true;
-  }
-
   void find_vertices() {
-    std::map<ExactPoint3, bool, bool (*)(const ExactPoint3&, const ExactPoint3&)> seen(
-        [](const ExactPoint3& a, const ExactPoint3& c) { return compare_lex(a, c) < 0; });
+    auto key_less = [](const std::array<ExactPoint3, 3>& x, const std::array<ExactPoint3, 3>& y) {
+      for (int i = 0; i < 3; ++i)
+        if (int c = compare_lex(x[i], y[i])) return c < 0;
+      return false;
+    };
+    std::map<std::array<ExactPoint3, 3>, bool, decltype(key_less)> seen(key_less);
     const auto n = static_cast<std::uint32_t>(b_.centers.size());
     for (std::uint32_t i = 0; i < n; ++i)
       for (std::uint32_t j = i + 1; j < n; ++j)
-        for (std::uint32_t k = j + 1; k < n; ++k) add_triple_vertices(i, j, k, &seen);
+        for (std::uint32_t k = j + 1; k < n; ++k)
+          for (RefVertex& v : triple_vertices(i, j, k))
+            if (seen.emplace(boundary_vertex_key(v.v), true).second) vertices_.push_back(std::move(v));
   }
 
-  template <class Seen>
-  void add_triple_vertices(std::uint32_t i, std::uint32_t j, std::uint32_t k, Seen* seen) {
+  // pow_l at z + side sqrt(s) n is pow_l(z) + s |n|^2 + side sqrt(s) 2 n . (z - c_l).
+  int power_sign_at(const BoundaryVertex& v, std::uint32_t l) const {
+    return sign_with_root(power(b_, l, v.z) + v.s * dot(v.n, v.n), v.side, 2 * dot(v.n, v.z - b_.centers[l]), v.s);
+  }
+
+  // The points on the spheres of balls i, j, k outside every other ball and not surrounded
+  // by the balls through them.
+  std::vector<RefVertex> triple_vertices(std::uint32_t i, std::uint32_t j, std::uint32_t k) {
+    std::vector<RefVertex> out;
     const ExactPoint3 &ci = b_.centers[i], &cj = b_.centers[j], &ck = b_.centers[k];
     const ExactPoint3 d1 = cj - ci, d2 = ck - ci, n = cross(d1, d2);
-    if (is_zero(n)) return;
+    if (is_zero(n)) return out;
     // Power centre in the plane: 2 (z - c_i) . d_m = |d_m|^2 + w_i - w_m, z - c_i = l1 d1 + l2 d2.
     const mpq_class a11 = 2 * dot(d1, d1), a12 = 2 * dot(d1, d2), a22 = 2 * dot(d2, d2);
     const mpq_class r1 = dot(d1, d1) + b_.squared_radii[i] - b_.squared_radii[j];
     const mpq_class r2 = dot(d2, d2) + b_.squared_radii[i] - b_.squared_radii[k];
     const mpq_class det = a11 * a22 - a12 * a12;
     const mpq_class l1 = (r1 * a22 - r2 * a12) / det, l2 = (a11 * r2 - a12 * r1) / det;
-    const ExactPoint3 z = ci + l1 * d1 + l2 * d2;
-    const mpq_class w = power(b_, i, z);
-    if (sgn(w) > 0) return;
-    const mpq_class s = -w / dot(n, n);
-    mpz_class sn = s.get_num(), sd = s.get_den();
-    const bool square = mpz_perfect_square_p(sn.get_mpz_t()) && mpz_perfect_square_p(sd.get_mpz_t());
-    std::uint32_t radical = 0;
-    bool registered = false;
+    RefVertex r;
+    BoundaryVertex& v = r.v;
+    v.balls = {i, j, k};
+    v.z = ci + l1 * d1 + l2 * d2;
+    v.n = n;
+    const mpq_class w = power(b_, i, v.z);
+    if (sgn(w) > 0) return out;
+    v.s = -w / dot(n, n);
+    mpz_class sn = v.s.get_num(), sd = v.s.get_den();
+    v.rational = mpz_perfect_square_p(sn.get_mpz_t()) && mpz_perfect_square_p(sd.get_mpz_t());
+    if (v.rational) {
+      mpz_sqrt(sn.get_mpz_t(), sn.get_mpz_t());
+      mpz_sqrt(sd.get_mpz_t(), sd.get_mpz_t());
+    } else {
+      v.radical = table_->add(v.s);
+    }
     for (int side : {1, -1}) {
-      if (side < 0 && sgn(s) == 0) break;
+      if (side < 0 && sgn(v.s) == 0) break;
+      v.side = side;
       bool valid = true;
       for (std::uint32_t l = 0; l < b_.centers.size() && valid; ++l)
-        if (l != i && l != j && l != k)
-          valid = sign_with_root(power(b_, l, z) + s * dot(n, n), side, 2 * dot(n, z - b_.centers[l]), s) >= 0;
+        if (l != i && l != j && l != k) valid = power_sign_at(v, l) >= 0;
       if (!valid) continue;
-      RefVertex v{{i, j, k}, side, square, {}, {}, {}};
-      if (square) {
-        mpz_sqrt(sn.get_mpz_t(), sn.get_mpz_t());
-        mpz_sqrt(sd.get_mpz_t(), sd.get_mpz_t());
-        v.point = z + mpq_class(side * make_rational(sn, sd)) * n;
-        if (!seen->emplace(v.point, true).second) continue;
-        v.exact = {RadicalNumber(v.point.x), RadicalNumber(v.point.y), RadicalNumber(v.point.z)};
-      } else {
-        if (!registered) radical = table_->add(s);
-        registered = true;
-        const mpq_class* zc[3] = {&z.x, &z.y, &z.z};
-        const mpq_class* nc[3] = {&n.x, &n.y, &n.z};
-        for (int m = 0; m < 3; ++m) v.exact[m] = RadicalNumber(*zc[m]) + RadicalNumber::root(*table_, radical, side * *nc[m]);
+      if (v.rational) {
+        v.point = v.z + mpq_class(side * make_rational(sn, sd)) * n;
+        if (interior_of_union(b_, v.point)) continue;
       }
-      for (int m = 0; m < 3; ++m) v.approx[m] = v.exact[m].approx();
-      vertices_.push_back(std::move(v));
+      r.exact = v.coordinates(*table_);
+      for (int m = 0; m < 3; ++m) r.approx[m] = r.exact[m].approx();
+      out.push_back(r);
     }
+    return out;
   }
 
-  bool on_sphere(const RefVertex& v, std::uint32_t i) const {
-    return std::find(v.balls.begin(), v.balls.end(), i) != v.balls.end() || (v.rational && sgn(power(b_, i, v.point)) == 0);
+  bool on_sphere(const RefVertex& r, std::uint32_t i) const {
+    const BoundaryVertex& v = r.v;
+    if (std::find(v.balls.begin(), v.balls.end(), i) != v.balls.end()) return true;
+    return v.rational ? sgn(power(b_, i, v.point)) == 0 : power_sign_at(v, i) == 0;
   }
 
   // Circles of intersecting spheres; `nonempty`: some point of the circle is on the boundary.
@@ -183,16 +189,21 @@ class Reference {
       }
   }
 
-  // A point of a circle without boundary vertices: the whole circle is free or covered.
+  // A circle without boundary vertices is wholly free or wholly covered, except for
+  // degenerate points on further spheres; so test points in a few directions and call the
+  // circle free when one lies strictly outside every other ball.
   bool circle_point_free(const Circle& c) const {
-    ExactPoint3 e = cross(c.m, {1, 0, 0});
-    if (is_zero(e)) e = cross(c.m, {0, 1, 0});
-    const mpq_class s = c.alpha / dot(e, e);  // y = o + sqrt(s) e
-    for (std::uint32_t l = 0; l < b_.centers.size(); ++l)
-      if (l != c.i && l != c.j &&
-          sign_with_root(power(b_, l, c.o) + s * dot(e, e), 1, 2 * dot(e, c.o - b_.centers[l]), s) < 0)
-        return false;
-    return true;
+    for (const ExactPoint3& d : {ExactPoint3{1, 0, 0}, ExactPoint3{0, 1, 0}, ExactPoint3{1, 2, 3}, ExactPoint3{3, -1, 2}}) {
+      const ExactPoint3 e = cross(c.m, d);
+      if (is_zero(e)) continue;
+      const mpq_class s = c.alpha / dot(e, e);  // y = o + sqrt(s) e
+      bool outside = true;
+      for (std::uint32_t l = 0; l < b_.centers.size() && outside; ++l)
+        outside = l == c.i || l == c.j ||
+                  sign_with_root(power(b_, l, c.o) + s * dot(e, e), 1, 2 * dot(e, c.o - b_.centers[l]), s) > 0;
+      if (outside) return true;
+    }
+    return false;
   }
 
   void find_patches() {
@@ -200,13 +211,14 @@ class Reference {
       bool free = false;
       for (const RefVertex& v : vertices_) free |= on_sphere(v, i);
       for (const Circle& c : circles_) free |= c.nonempty && (c.i == i || c.j == i);
-      if (!free) {  // no vertex, no circle: test the point c_i + r_i (1, 0, 0)
+      // No vertex, no free circle: a whole free sphere (up to tangency points) or none.
+      const mpq_class& w = b_.squared_radii[i];
+      for (const ExactPoint3& d : {ExactPoint3{1, 0, 0}, ExactPoint3{0, 1, 0}, ExactPoint3{1, 2, 3}, ExactPoint3{3, -1, 2}}) {
+        if (free) break;
+        const mpq_class s = w / dot(d, d);  // y = c_i + sqrt(s) d
         free = true;
-        const ExactPoint3 e{1, 0, 0};
-        const mpq_class& w = b_.squared_radii[i];
-        for (std::uint32_t l = 0; l < b_.centers.size(); ++l)
-          if (l != i && sign_with_root(power(b_, l, b_.centers[i]) + w, 1, 2 * dot(e, b_.centers[i] - b_.centers[l]), w) < 0)
-            free = false;
+        for (std::uint32_t l = 0; l < b_.centers.size() && free; ++l)
+          free = l == i || sign_with_root(power(b_, l, b_.centers[i]) + w, 1, 2 * dot(d, b_.centers[i] - b_.centers[l]), s) > 0;
       }
       patch_.push_back(free);
     }
@@ -246,9 +258,12 @@ class Reference {
       if (s < 0) return "";  // the nearest point of the circle is inside another ball
       on_vertex |= s == 0;
     }
+    // On a third sphere the point is a vertex candidate, decided there (it may also be an
+    // interior point that the balls through it surround).
+    if (on_vertex) return "";
     const int s = sign_plus_root(g, RadicalNumber(-2), P * c.alpha, &stats_);
     if (s < 0) return "a boundary arc is closer than R";
-    if (s == 0 && !on_vertex) ++nearest_;
+    if (s == 0) ++nearest_;
     return "";
   }
 
@@ -277,9 +292,10 @@ class Reference {
       if (s < 0) return "";  // the radial point is inside another ball
       on_circle |= s == 0;
     }
+    if (on_circle) return "";  // a circle or vertex candidate, decided there
     const int s = sign_plus_root(wi + E - d2, RadicalNumber(-2), wi * E, &stats_);
     if (s < 0) return "a boundary sphere point is closer than R";
-    if (s == 0 && !on_circle) ++nearest_;
+    if (s == 0) ++nearest_;
     return "";
   }
 
@@ -293,6 +309,20 @@ class Reference {
   int nearest_ = 0;
 };
 
+// The balls without exact repetitions (a repeated ball changes nothing in the union, but
+// its sphere would hide every point of the original's from "outside every other ball").
+BallSet distinct_balls(const BallSet& b) {
+  BallSet out;
+  out.source = b.source;
+  std::set<std::array<mpq_class, 4>> seen;
+  for (std::size_t i = 0; i < b.centers.size(); ++i)
+    if (seen.insert({b.centers[i].x, b.centers[i].y, b.centers[i].z, b.squared_radii[i]}).second) {
+      out.centers.push_back(b.centers[i]);
+      out.squared_radii.push_back(b.squared_radii[i]);
+    }
+  return out;
+}
+
 void fail(DefinitionCheck* c, const std::string& what) {
   if (c->failures++ == 0) c->first_failure = what;
 }
@@ -300,16 +330,20 @@ void fail(DefinitionCheck* c, const std::string& what) {
 }  // namespace
 
 bool same_boundary_vertices(const BallSet& balls, const UnionOfBallsAxis& axis, std::string* why) {
-  Reference ref(balls, axis.radicals.get());
-  std::set<std::pair<std::array<std::uint32_t, 3>, int>> mine, theirs;
-  std::set<std::array<mpq_class, 3>> mine_q, theirs_q;
-  for (const RefVertex& v : ref.vertices())
-    v.rational ? (void)mine_q.insert({v.point.x, v.point.y, v.point.z}) : (void)mine.insert({v.balls, v.side});
-  for (const BoundaryVertex& v : axis.boundary)
-    v.rational ? (void)theirs_q.insert({v.point.x, v.point.y, v.point.z}) : (void)theirs.insert({v.balls, v.side});
-  if (mine == theirs && mine_q == theirs_q) return true;
-  *why = "brute force finds " + std::to_string(mine.size() + mine_q.size()) + " boundary vertices, the builder " +
-         std::to_string(theirs.size() + theirs_q.size());
+  const BallSet distinct = distinct_balls(balls);
+  Reference ref(distinct, axis.radicals.get());
+  auto key_less = [](const std::array<ExactPoint3, 3>& x, const std::array<ExactPoint3, 3>& y) {
+    for (int i = 0; i < 3; ++i)
+      if (int c = compare_lex(x[i], y[i])) return c < 0;
+    return false;
+  };
+  std::set<std::array<ExactPoint3, 3>, decltype(key_less)> mine(key_less), theirs(key_less);
+  for (const RefVertex& v : ref.vertices()) mine.insert(boundary_vertex_key(v.v));
+  for (const BoundaryVertex& v : axis.boundary) theirs.insert(boundary_vertex_key(v));
+  if (mine.size() == theirs.size() && std::equal(mine.begin(), mine.end(), theirs.begin(),
+                                                 [&](const auto& x, const auto& y) { return !key_less(x, y) && !key_less(y, x); }))
+    return true;
+  *why = "brute force finds " + std::to_string(mine.size()) + " boundary vertices, the builder " + std::to_string(theirs.size());
   return false;
 }
 
@@ -317,7 +351,8 @@ DefinitionCheck check_union_axis(const BallSet& balls, const UnionOfBallsAxis& a
   DefinitionCheck c;
   std::string why;
   if (!same_boundary_vertices(balls, axis, &why)) fail(&c, why);
-  Reference ref(balls, axis.radicals.get());
+  const BallSet distinct = distinct_balls(balls);
+  Reference ref(distinct, axis.radicals.get());
   auto claimed_by_vertex = [&](const HomogeneousPoint& x, std::size_t v) {
     const auto p = axis.boundary[v].coordinates(*axis.radicals);
     RadicalNumber s;
