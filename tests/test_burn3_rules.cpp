@@ -16,6 +16,7 @@
 #include "complex3/closed_subcomplex.h"
 #include "complex3/complex_builder.h"
 #include "complex3/synthetic_complexes.h"
+#include "support.h"
 #include "test_complex3_support.h"
 
 using namespace grassfire;
@@ -181,7 +182,7 @@ TEST_CASE("box medial axis: strata, radius and ET = BT - R", "[burn3]") {
 }
 
 TEST_CASE("grassfire burn3d: JSON report, and clear errors with a non-zero exit", "[burn3]") {
-  const std::string json = "/tmp/grassfire_burn3_test.json";
+  const std::string json = grassfire::testing::temp_path("gf_burn3_report.json");
   const std::string cmd = std::string(GF_CLI) + " burn3d book:3 --spacing 0.25 --json " + json + " > /dev/null";
   REQUIRE(std::system(cmd.c_str()) == 0);
   std::ifstream in(json);
@@ -204,8 +205,35 @@ TEST_CASE("grassfire burn3d: JSON report, and clear errors with a non-zero exit"
   for (const std::string& bad : {std::string(" burn3d no-such-thing"), std::string(" burn3d board-fin --spacing -1"),
                                  " burn3d " + std::string(GF_TEST_DATA) + "/3d/bad_index.ma",
                                  std::string(" burn3d board-fin --method exact"),
-                                 " burn3d " + std::string(GF_PROJECT_DATA) + "/meshes/tripod.off"}) {
+                                 " burn3d " + std::string(GF_TEST_DATA) + "/builders3/open_cube.off",
+                                 " burn3d " + std::string(GF_TEST_DATA) + "/builders3/empty.balls",
+                                 " burn3d " + std::string(GF_TEST_DATA) + "/builders3/nan.balls",
+                                 " burn3d " + std::string(GF_TEST_DATA) + "/3d/three_balls.cin --mesh-is-complex"}) {
     CAPTURE(bad);
     CHECK(std::system((std::string(GF_CLI) + bad + " > /dev/null 2>&1").c_str()) != 0);
   }
+}
+
+TEST_CASE("grassfire burn3d builds the axis of a non-convex mesh and of a union of balls", "[burn3]") {
+  const std::string json = grassfire::testing::temp_path("gf_burn3_built.json");
+  const auto burn = [&](const std::string& input) {
+    std::remove(json.c_str());
+    const grassfire::testing::CliRun r = grassfire::testing::run_cli("burn3d " + input + " --json " + json);
+    REQUIRE(r.code == 0);
+    std::ifstream in(json);
+    return nlohmann::json::parse(in);
+  };
+  // The tripod's axis from its inner polar balls (as `grassfire medial3d` builds it): 13
+  // sheets meeting along 12 singular edges; everything burns (the axis is contractible).
+  const nlohmann::json tripod = burn(std::string(GF_PROJECT_DATA) + "/meshes/tripod.off");
+  CHECK(tripod["complex"]["sheets"] == 13);
+  CHECK(tripod["complex"]["singular_edges"] == 12);
+  CHECK(tripod["summary"]["unburned_vertices"] == 0);
+  // Caffeine's 23 atoms: the axis is a graph of 24 segments with two rings (b1 = 2), which
+  // never burn (Prop 7: the maximal closed subcomplex of a graph is its 2-core).
+  const nlohmann::json caffeine = burn(std::string(GF_PROJECT_DATA) + "/balls/caffeine.cin");
+  CHECK(caffeine["complex"]["segments"] == 24);
+  CHECK(caffeine["summary"]["unburned_vertices"].get<int>() > 0);
+  CHECK(caffeine["summary"]["burned_vertices"].get<int>() > 0);
+  std::remove(json.c_str());
 }

@@ -5,7 +5,7 @@
 #include <nlohmann/json.hpp>
 
 #include "burn3/discrete_burning.h"
-#include "complex3/builders/convex_polyhedron_axis.h"
+#include "complex3/builders/medial_axis_input.h"
 #include "complex3/medial_complex.h"
 #include "complex3/synthetic_complexes.h"
 #include "io/complex_export.h"
@@ -25,38 +25,29 @@ bool is_synthetic(const std::string& input) {
   return false;
 }
 
+// The complex to burn: a synthetic complex, a .ma medial axis, a mesh burned as itself
+// (--mesh-is-complex), or the medial axis of a shape built as `grassfire medial3d` builds
+// it (complex3/builders/medial_axis_input.h: convex meshes and half-spaces exactly, ball
+// lists exactly, other closed meshes through their inner polar balls).
 RawComplex load_complex(const std::string& input, bool mesh_is_complex) {
   if (is_synthetic(input)) return synthetic_complex(input);
   const std::string ext = file_extension(input);
   if (ext == "ma") return read_ma(input);
-  if (ext == "off" || ext == "ply" || ext == "obj") {
-    const TriangleMesh3 mesh = read_triangle_mesh(input);
-    if (mesh_is_complex) return mesh_as_complex(mesh);
-    ConvexPolyhedron p;
-    try {
-      p = convex_polyhedron_from_mesh(mesh);  // the exact medial axis of a convex polyhedron
-    } catch (const std::invalid_argument& e) {
-      throw std::runtime_error(std::string(e.what()) +
-                               "; the medial axis of a non-convex mesh needs the mesh -> approximate medial axis "
-                               "builder, which is not in this build (pass --mesh-is-complex to burn the mesh itself "
-                               "as a 2-complex with R = 0, or give a .ma file)");
-    }
-    const ConvexAxis axis = convex_polyhedron_axis(p);
-    if (!axis.exact)
-      std::cerr << "burn3d: " << input << ": facet normals in several square classes; the axis is that of a "
-                << "polyhedron within " << axis.distance_bound << " (approximate mode)\n";
-    return axis.complex;
+  if (mesh_is_complex) {
+    if (ext != "off" && ext != "ply" && ext != "obj")
+      throw std::runtime_error(input + ": --mesh-is-complex needs a mesh (.off, .ply or .obj)");
+    return mesh_as_complex(read_triangle_mesh(input));
   }
-  if (ext == "cin" || ext == "balls" || ext == "txt") {
-    const BallSet balls = read_ball_list(input);
-    throw std::runtime_error(input + ": read " + std::to_string(balls.centers.size()) +
-                             " balls, but the union-of-balls medial axis builder (kernel/complex3/builders) is not in "
-                             "this build; give a .ma file or a synthetic complex");
+  if (ext == "off" || ext == "ply" || ext == "obj" || ext == "hs" || ext == "halfspaces" || ext == "cin" ||
+      ext == "balls") {
+    MedialAxisBuild axis = build_medial_axis(input, MedialInputKind::Auto);
+    std::cerr << "burn3d: " << input << ": medial axis by the " << axis.kind << " builder\n";
+    return std::move(axis.complex);
   }
   std::string names;
   for (const std::string& n : synthetic_complex_names()) names += " " + n;
   throw std::runtime_error("'" + input + "' is neither a synthetic complex (" + names.substr(1) +
-                           ") nor a file with extension .ma, .off, .ply, .obj, .cin or .balls");
+                           ") nor a file with extension .ma, .off, .ply, .obj, .hs, .halfspaces, .cin or .balls");
 }
 
 nlohmann::json finite_or_null(const std::vector<double>& values) {
@@ -107,15 +98,15 @@ nlohmann::json report(const std::string& input, const MedialComplex& mc, const D
 
 int run_burn3d(int argc, char** argv) {
   Options opt("burn3d", "Burning time BT (Definitions 9-10) and ET = BT - R on the medial axis of a 3D shape.");
-  opt.positional("INPUT", "a .ma medial axis, a convex mesh (.off/.ply/.obj: its exact medial axis), a ball list "
-                          "(.cin/.balls), or a synthetic "
+  opt.positional("INPUT", "a .ma medial axis; a shape whose medial axis is built as by `grassfire medial3d`: a "
+                          "closed mesh (.off/.ply/.obj: exact for convex meshes, else from its inner polar balls), "
+                          "a half-space list (.hs) or a ball list (.cin/.balls, exact); or a synthetic "
                           "complex: board-fin, board-cylinder, book:K, y-junction, tetrahedron, octahedron, "
                           "double-cone, tetrahedron-flap")
       .option("method", "NAME", "discrete (Dijkstra over vertices and Steiner points with the link rule)", "discrete")
       .option("spacing", "H", "Steiner point spacing h (default: 1/100 of the bounding box diagonal)")
       .option("max-points", "N", "refuse to place more than N graph points", "50000000")
-      .flag("mesh-is-complex", "burn a mesh itself as a 2-complex (R = 0) instead of its medial axis (needed for "
-                               "non-convex meshes until the mesh -> medial axis builder is in)")
+      .flag("mesh-is-complex", "burn a mesh itself as a 2-complex (R = 0) instead of its medial axis")
       .option("ply", "OUT", "write the complex with per-vertex R, BT, ET as PLY")
       .option("vtk", "OUT", "write the complex with per-vertex R, BT, ET as legacy VTK")
       .option("json", "OUT", "write a JSON report (counts, timings, per-vertex x y z R BT ET; null = never burns)")
