@@ -5,7 +5,6 @@
 // axis] (the dissertation's normalisation); inserts under the squares zoom into the
 // middle of the axis, where perturbation changes its connectivity.
 #include <cmath>
-#include <cstdio>
 #include <fstream>
 #include <functional>
 #include <stdexcept>

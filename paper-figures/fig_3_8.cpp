@@ -6,7 +6,7 @@
 // (apps2d/alignment.h: alignment_shift, polygon_overlap, exact).
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
+#include <iterator>
 #include <limits>
 #include <stdexcept>
 
@@ -22,7 +22,7 @@ namespace grassfire::figures {
 namespace {
 
 const Rgb kCentroidPink{1.0, 0.35, 0.7}, kPrBlue{0.1, 0.3, 0.95}, kEmaRed{0.9, 0.05, 0.05};
-const Rgb kAxisGrey{0.45, 0.45, 0.45}, kBlack{0, 0, 0}, kWhite{1, 1, 1};
+const Rgb kAxisGrey{0.45, 0.45, 0.45}, kBlack{0, 0, 0};
 // One colour per pose (dark enough for outlines, fills are translucent).
 const Rgb kPose[] = {{0.12, 0.47, 0.71}, {1.0, 0.5, 0.05},   {0.17, 0.63, 0.17}, {0.84, 0.15, 0.16},
                      {0.58, 0.4, 0.74},  {0.55, 0.34, 0.29}, {0.89, 0.47, 0.76}, {0.09, 0.75, 0.81}};
