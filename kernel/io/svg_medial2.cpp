@@ -141,11 +141,11 @@ void bar(SvgCanvas& c, double x, double y, double w, double lo, double hi, const
   }
 }
 
-void draw_colour_bars(SvgCanvas& c, double x, double y, double w, const Medial2FieldRange& range,
-                      const Medial2SvgOptions& o, double r_max) {
+void draw_colour_bars(SvgCanvas& c, double x, double y, double w, const std::string& name,
+                      const Medial2FieldRange& range, const Medial2SvgOptions& o, double r_max) {
   const double fs = font_size(w);
   const double heat_w = o.distance_background ? 0.56 * w : 0.8 * w;
-  bar(c, x, y, heat_w, range.lo, range.hi, to_string(o.field), fs, 4, heat_color);
+  bar(c, x, y, heat_w, range.lo, range.hi, name, fs, 4, heat_color);
   if (range.has_infinite) {
     const double sx = x + heat_w + 0.6 * fs;
     c.rect(sx, y, 1.6 * fs, 14, kInfiniteColour);
@@ -292,13 +292,15 @@ double medial2_panel_height(const Shape2& shape, const Medial2SvgOptions& o, dou
   return plot + 2 * kMargin + (o.title.empty() ? 0 : kTitleStrip) + (o.colour_bar ? kBarStrip : 0);
 }
 
-std::size_t draw_medial2(SvgCanvas& c, double x, double y, double w, double h, const Shape2& shape,
-                         const MedialGraph& g, const GrassfireResult& r, const NodeMeasures& m,
-                         const Medial2SvgOptions& o) {
-  const double top = o.title.empty() ? 0 : kTitleStrip, bottom = o.colour_bar ? kBarStrip : 0;
-  const Medial2Frame f(shape, x + kMargin, y + top + kMargin, w - 2 * kMargin, h - top - bottom - 2 * kMargin);
+namespace {
+
+// A panel coloured by the scalar on the given colour range (the body of draw_medial2 and
+// draw_medial2_scalar).
+std::size_t draw_panel(SvgCanvas& c, double x, double y, double w, double h, const Shape2& shape, const MedialGraph& g,
+                       const GrassfireResult& r, const Medial2Scalar& scalar, Medial2FieldRange range,
+                       const Medial2SvgOptions& o) {
+  const Medial2Frame f = medial2_panel_frame(shape, o, x, y, w, h);
   const double axis_width = o.axis_width > 0 ? o.axis_width : w / 320;
-  Medial2FieldRange range = medial2_field_range(g, r, m, o.field);
   if (o.range_lo < o.range_hi) range.lo = o.range_lo, range.hi = o.range_hi;
 
   if (o.distance_background)
@@ -313,14 +315,14 @@ std::size_t draw_medial2(SvgCanvas& c, double x, double y, double w, double h, c
 
   std::size_t pieces = 0;
   for (std::uint32_t e = 0; e < g.edge_count(); ++e) {
-    const std::vector<double> cuts = field_breakpoints(g, r, e);
+    const std::vector<double> cuts = scalar.breakpoints(e);
     const int min_pieces = g.edge(e).kind == EdgeKind::ParabolicArc ? 4 : 1;
     for (std::size_t k = 0; k + 1 < cuts.size(); ++k) {
       const double a = cuts[k], b = cuts[k + 1];
       const int n = std::max(min_pieces, static_cast<int>(std::ceil((b - a) * f.scale() / o.max_piece)));
       for (int i = 0; i < n; ++i) {
         const double s0 = a + (b - a) * i / n, s1 = a + (b - a) * (i + 1) / n;
-        const double v = medial2_field_along(g, r, o.field, e, g.edge(e).u, 0.5 * (s0 + s1));
+        const double v = scalar.along(e, 0.5 * (s0 + s1));
         const Rgb col = std::isinf(v) ? kInfiniteColour
                                       : heat_color(range.hi > range.lo ? (v - range.lo) / (range.hi - range.lo) : 0.5);
         c.polyline(edge_points(f, g, e, {s0, s1}), col, axis_width);
@@ -329,9 +331,80 @@ std::size_t draw_medial2(SvgCanvas& c, double x, double y, double w, double h, c
     }
   }
   if (o.show_ema) draw_ema(c, f, g, r, axis_width, false);
-  if (o.colour_bar) draw_colour_bars(c, x + kMargin, y + h - bottom + 14, w - 2 * kMargin, range, o, max_radius(g));
+  const double bottom = o.colour_bar ? kBarStrip : 0;
+  if (o.colour_bar)
+    draw_colour_bars(c, x + kMargin, y + h - bottom + 14, w - 2 * kMargin, scalar.name, range, o, max_radius(g));
   if (!o.title.empty()) c.text({x + w / 2, y + 21}, o.title, 1.1 * font_size(w), "middle");
   return pieces;
+}
+
+}  // namespace
+
+Medial2Scalar medial2_field_scalar(const MedialGraph& g, const GrassfireResult& r, Medial2Field field) {
+  Medial2Scalar s;
+  s.name = to_string(field);
+  s.breakpoints = [&g, &r](std::uint32_t e) { return field_breakpoints(g, r, e); };
+  s.along = [&g, &r, field](std::uint32_t e, double at) {
+    return medial2_field_along(g, r, field, e, g.edge(e).u, at);
+  };
+  return s;
+}
+
+Medial2Scalar potential_residue_scalar(const MedialGraph& g, const ClosestPoints& cp, const PotentialResidue& pr) {
+  if (pr.edge.size() != g.edge_count()) throw std::invalid_argument("svg: the potential residue is of another graph");
+  Medial2Scalar s;
+  s.name = "PR";
+  s.breakpoints = [&g, &pr](std::uint32_t e) {
+    const double w = g.edge(e).length.mid();
+    if (!pr.edge[e].peak) return std::vector<double>{0.0, w};
+    return std::vector<double>{0.0, std::clamp(pr.edge[e].peak_fraction.mid(), 0.0, 1.0) * w, w};
+  };
+  s.along = [&g, &cp, &pr](std::uint32_t e, double at) {
+    const EdgeResidue& er = pr.edge[e];
+    const double a = er.at_u.value.mid(), b = er.at_v.value.mid(), w = g.edge(e).length.mid();
+    if (std::isinf(a) || std::isinf(b)) return kInf;
+    const double t = w > 0 ? std::clamp(at / w, 0.0, 1.0) : 0.0;
+    if (!er.peak) return a + (b - a) * t;
+    // Up to half the perimeter at the peak, then down.
+    const double top = 0.5 * cp.ring_length.at(er.at_u.ring).mid(), p = std::clamp(er.peak_fraction.mid(), 0.0, 1.0);
+    if (t <= p) return p > 0 ? a + (top - a) * t / p : top;
+    return p < 1 ? top + (b - top) * (t - p) / (1 - p) : top;
+  };
+  return s;
+}
+
+Medial2FieldRange medial2_scalar_range(const MedialGraph& g, const Medial2Scalar& scalar) {
+  Medial2FieldRange range;
+  double lo = kInf, hi = -kInf;
+  for (std::uint32_t e = 0; e < g.edge_count(); ++e)
+    for (double s : scalar.breakpoints(e)) {
+      const double v = scalar.along(e, s);
+      if (std::isinf(v))
+        range.has_infinite = true;
+      else
+        lo = std::min(lo, v), hi = std::max(hi, v);
+    }
+  if (lo <= hi) range.lo = lo, range.hi = hi;
+  return range;
+}
+
+Medial2Frame medial2_panel_frame(const Shape2& shape, const Medial2SvgOptions& o, double x, double y, double w,
+                                 double h) {
+  const double top = o.title.empty() ? 0 : kTitleStrip, bottom = o.colour_bar ? kBarStrip : 0;
+  return Medial2Frame(shape, x + kMargin, y + top + kMargin, w - 2 * kMargin, h - top - bottom - 2 * kMargin);
+}
+
+std::size_t draw_medial2(SvgCanvas& c, double x, double y, double w, double h, const Shape2& shape,
+                         const MedialGraph& g, const GrassfireResult& r, const NodeMeasures& m,
+                         const Medial2SvgOptions& o) {
+  return draw_panel(c, x, y, w, h, shape, g, r, medial2_field_scalar(g, r, o.field),
+                    medial2_field_range(g, r, m, o.field), o);
+}
+
+std::size_t draw_medial2_scalar(SvgCanvas& c, double x, double y, double w, double h, const Shape2& shape,
+                                const MedialGraph& g, const GrassfireResult& r, const Medial2Scalar& scalar,
+                                const Medial2SvgOptions& o) {
+  return draw_panel(c, x, y, w, h, shape, g, r, scalar, medial2_scalar_range(g, scalar), o);
 }
 
 std::string medial2_svg(const Shape2& shape, const MedialGraph& g, const GrassfireResult& r, const NodeMeasures& m,

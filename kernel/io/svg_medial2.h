@@ -1,6 +1,7 @@
 // svg_medial2.h -- pictures of 2D results: a shape, its medial axis coloured by EDF, ET,
-// ST or R, the EMA, optionally the distance function R as a grey background (Figs. 1.2,
-// 3.3, 3.4 of the dissertation).
+// ST or R -- or by a scalar the burning does not carry, such as the potential residue PR
+// (3.4.2) -- the EMA, optionally the distance function R as a grey background (Figs. 1.2,
+// 3.3, 3.4, 3.5 of the dissertation).
 //
 // Computes: SVG text (io/render3d.h's SvgCanvas underneath). What a panel shows, bottom
 // to top:
@@ -26,6 +27,11 @@
 // segments); ET = EDF - R; ST = 1 - R / EDF. On each piece between breakpoints (the ends
 // and the quench point) EDF and R are linear, so ET is linear and ST monotone, and the
 // range of every field over an edge is attained at its breakpoints.
+// Other scalars (Medial2Scalar) bring their own breakpoints and values, and are drawn the
+// same way. PR (potential_residue_scalar): the limits at the two ends of every edge (the
+// generators' boundary distance), rising to L / 2 at a peak, linear in between -- the
+// linear model of burn2/potential_residue.h (exact on straight edges of a polygon axis,
+// where both feet move linearly; PR is constant on the edges of a sampled axis).
 // Coordinates: y points up (flipped for SVG); the shape's bounding box is fitted into the
 // panel with its aspect ratio kept.
 // Contract: `burning` and `measures` were computed on `g`, which approximates the medial
@@ -35,11 +41,13 @@
 #pragma once
 
 #include <cstddef>
+#include <functional>
 #include <string>
 #include <vector>
 
 #include "burn2/extended_grassfire.h"
 #include "burn2/measures.h"
+#include "burn2/potential_residue.h"
 #include "io/render3d.h"
 #include "shapes/shape2.h"
 
@@ -88,6 +96,23 @@ std::vector<double> field_breakpoints(const MedialGraph& g, const GrassfireResul
 double medial2_field_along(const MedialGraph& g, const GrassfireResult& burning, Medial2Field field, std::uint32_t edge,
                            std::uint32_t from, double s);
 
+// A scalar on the medial axis, drawn like a field: its value at arc length s from the
+// edge's end u, linear between the edge's breakpoints (0, ..., the edge's length,
+// increasing), infinity allowed. The functions may refer to the graph and whatever the
+// scalar was computed from: those must outlive the scalar.
+struct Medial2Scalar {
+  std::string name;  // the colour bar's label
+  std::function<std::vector<double>(std::uint32_t edge)> breakpoints;
+  std::function<double(std::uint32_t edge, double s)> along;
+};
+// The field as a scalar (breakpoints field_breakpoints, values medial2_field_along).
+Medial2Scalar medial2_field_scalar(const MedialGraph& g, const GrassfireResult& burning, Medial2Field field);
+// PR as a scalar (see the header comment); infinite on edges whose generators lie on two
+// rings. Contract: pr = potential_residue(g, cp).
+Medial2Scalar potential_residue_scalar(const MedialGraph& g, const ClosestPoints& cp, const PotentialResidue& pr);
+// The finite range of the scalar over the breakpoints of every edge.
+Medial2FieldRange medial2_scalar_range(const MedialGraph& g, const Medial2Scalar& scalar);
+
 // World (y up) to canvas (y down) for a shape fitted into a box of the canvas.
 class Medial2Frame {
  public:
@@ -115,6 +140,15 @@ std::vector<Point2d> edge_points(const Medial2Frame& f, const MedialGraph& g, st
 std::size_t draw_medial2(SvgCanvas& c, double x, double y, double w, double h, const Shape2& shape,
                          const MedialGraph& g, const GrassfireResult& burning, const NodeMeasures& measures,
                          const Medial2SvgOptions& options);
+// A panel as draw_medial2, coloured by the scalar (options.field unused, the colour bar
+// labelled scalar.name, its range medial2_scalar_range unless options give one).
+std::size_t draw_medial2_scalar(SvgCanvas& c, double x, double y, double w, double h, const Shape2& shape,
+                                const MedialGraph& g, const GrassfireResult& burning, const Medial2Scalar& scalar,
+                                const Medial2SvgOptions& options);
+// The frame in which draw_medial2 and draw_medial2_scalar place the shape in the box
+// (x, y, w, h): for drawing more on top of a panel.
+Medial2Frame medial2_panel_frame(const Shape2& shape, const Medial2SvgOptions& options, double x, double y, double w,
+                                 double h);
 // The panel height that fits the shape at the given width (title and colour bar included).
 double medial2_panel_height(const Shape2& shape, const Medial2SvgOptions& options, double width);
 
