@@ -154,6 +154,12 @@ int BurnTimes::compare(TimeId a, TimeId b) const {
     ++stats_.filter_decided;
     return 1;
   }
+  // Point enclosures are the exact values: ignitions at R = 0 leaves (convex vertices) tie
+  // here without building their exact forms.
+  if (x.lo == x.hi && y.lo == y.hi && x.lo == y.lo) {
+    ++stats_.exact_zero;
+    return 0;
+  }
   const int l = long_sign(a, b);
   if (l != kUndecided) {
     ++stats_.extended_decided;
@@ -173,6 +179,32 @@ int BurnTimes::compare_quench(TimeId a, TimeId b, std::uint32_t edge, TimeId c) 
   if (quick != kUndecided) {
     ++stats_.filter_decided;
     return quick;
+  }
+  // The same stages as compare(), on 2 (q - c) = a + b + length - 2 c.
+  const LongInterval& la = long_value(a);
+  const LongInterval& lb = long_value(b);
+  const LongInterval& lc = long_value(c);
+  const LongInterval twice = (la + lb + graph_->geometry().enclose_length_long(edge)) - (lc + lc);
+  if (twice.lo > 0 || twice.hi < 0) {
+    ++stats_.extended_decided;
+    return twice.lo > 0 ? 1 : -1;
+  }
+  const Refined& ra = refined(a);
+  const Refined& rb = refined(b);
+  const Refined& rc = refined(c);
+  MpfrBounds d2(kRefinedBits);
+  graph_->geometry().enclose_length(edge, d2.lo, d2.hi);
+  mpfr_add(d2.lo, d2.lo, ra.lo, MPFR_RNDD);
+  mpfr_add(d2.lo, d2.lo, rb.lo, MPFR_RNDD);
+  mpfr_sub(d2.lo, d2.lo, rc.hi, MPFR_RNDD);
+  mpfr_sub(d2.lo, d2.lo, rc.hi, MPFR_RNDD);
+  mpfr_add(d2.hi, d2.hi, ra.hi, MPFR_RNDU);
+  mpfr_add(d2.hi, d2.hi, rb.hi, MPFR_RNDU);
+  mpfr_sub(d2.hi, d2.hi, rc.lo, MPFR_RNDU);
+  mpfr_sub(d2.hi, d2.hi, rc.lo, MPFR_RNDU);
+  if (mpfr_sgn(d2.lo) > 0 || mpfr_sgn(d2.hi) < 0) {
+    ++stats_.mpfr_decided;
+    return mpfr_sgn(d2.lo) > 0 ? 1 : -1;
   }
   ExactSum d = exact(a) + exact(b) + graph_->geometry().exact_length(edge);
   d.scale(mpq_class(1, 2));

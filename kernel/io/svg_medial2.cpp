@@ -210,7 +210,8 @@ double medial2_field_along(const MedialGraph& g, const GrassfireResult& r, Media
     case Medial2Field::Et:
       return edf - radius;  // infinite with the EDF
     case Medial2Field::St:
-      return std::isinf(edf) ? 1.0 : edf > 0 ? 1.0 - radius / edf : 0.0;
+      // ST = 0 at an R = 0 leaf (3.5.1), where the display EDF may be rounding noise above 0.
+      return std::isinf(edf) ? 1.0 : edf > 0 && radius > 0 ? 1.0 - radius / edf : 0.0;
     case Medial2Field::R:
       break;
   }

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "number/mpfr_bounds.h"
 #include "number/parabolic_arc.h"
 #include "number/sqrt_field.h"
 
@@ -98,17 +99,19 @@ class EdgeLength : public CertifiedConstant {
 // sqrt(x) for an exact sum x >= 0 that does not denest.
 class SqrtOfSum : public CertifiedConstant {
  public:
-  explicit SqrtOfSum(ExactSum x) : x_(std::move(x)) {}
+  // The identity is built once: ExactSum::simplify asks for it on every merge.
+  explicit SqrtOfSum(ExactSum x) : x_(std::move(x)), id_("sqrt[" + to_string(x_) + "]") {}
   void enclose(mpfr_ptr lo, mpfr_ptr hi) const override {
     x_.enclose(lo, hi);
     if (mpfr_sgn(lo) < 0) mpfr_set_zero(lo, 1);
     mpfr_sqrt(lo, lo, MPFR_RNDD);
     mpfr_sqrt(hi, hi, MPFR_RNDU);
   }
-  std::string identity() const override { return "sqrt[" + to_string(x_) + "]"; }
+  std::string identity() const override { return id_; }
 
  private:
   ExactSum x_;
+  std::string id_;
 };
 
 }  // namespace
@@ -130,7 +133,50 @@ PolygonAxisGeometry::PolygonAxisGeometry(std::shared_ptr<const PolygonSites> sit
       edges_(std::move(edges)),
       circle_done_(nodes_.size(), 0),
       circles_(nodes_.size()),
-      lengths_(edges_.size()) {}
+      lengths_(edges_.size()),
+      ball_circles_(nodes_.size()) {}
+
+const CircleValue<Ball>& PolygonAxisGeometry::ball_circle(std::uint32_t i) const {
+  if (!ball_circles_[i]) {
+    BallPrecision guard(kBallBits);
+    ball_circles_[i] = solve_ball(*sites_, nodes_[i].circle);
+  }
+  return *ball_circles_[i];
+}
+
+Ball PolygonAxisGeometry::ball_length(std::uint32_t edge) const {
+  const AxisEdgeData& e = edges_[edge];
+  BallPrecision guard(kBallBits);
+  return edge_length(*sites_, e, ball_circle(e.u), ball_circle(e.v));
+}
+
+void PolygonAxisGeometry::scaled_to_input(const Ball& frame_value, mpfr_ptr lo, mpfr_ptr hi) const {
+  frame_value.to_mpfr(lo, hi);  // to_input > 0: multiplying keeps the order
+  mpfr_mul_q(lo, lo, to_input_.get_mpq_t(), MPFR_RNDD);
+  mpfr_mul_q(hi, hi, to_input_.get_mpq_t(), MPFR_RNDU);
+}
+
+void PolygonAxisGeometry::enclose_radius(std::uint32_t node, mpfr_ptr lo, mpfr_ptr hi) const {
+  if (mpfr_get_prec(lo) > 128 || mpfr_get_prec(hi) > 128) return MedialGeometry::enclose_radius(node, lo, hi);
+  scaled_to_input(ball_circle(node).r, lo, hi);
+}
+
+void PolygonAxisGeometry::enclose_length(std::uint32_t edge, mpfr_ptr lo, mpfr_ptr hi) const {
+  if (mpfr_get_prec(lo) > 128 || mpfr_get_prec(hi) > 128) return MedialGeometry::enclose_length(edge, lo, hi);
+  scaled_to_input(ball_length(edge), lo, hi);
+}
+
+LongInterval PolygonAxisGeometry::enclose_radius_long(std::uint32_t node) const {
+  MpfrBounds b(80);
+  enclose_radius(node, b.lo, b.hi);
+  return {mpfr_get_ld(b.lo, MPFR_RNDD), mpfr_get_ld(b.hi, MPFR_RNDU)};
+}
+
+LongInterval PolygonAxisGeometry::enclose_length_long(std::uint32_t edge) const {
+  MpfrBounds b(80);
+  enclose_length(edge, b.lo, b.hi);
+  return {mpfr_get_ld(b.lo, MPFR_RNDD), mpfr_get_ld(b.hi, MPFR_RNDU)};
+}
 
 std::string PolygonAxisGeometry::node_identity(std::uint32_t i) const {
   std::string id = "vertex{";

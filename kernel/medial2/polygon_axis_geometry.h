@@ -49,6 +49,14 @@ class PolygonAxisGeometry : public MedialGeometry {
 
   ExactSum exact_radius(std::uint32_t node) const override;
   ExactSum exact_length(std::uint32_t edge) const override;
+  // The burning engine's extended-precision and 128-bit stages (burn2/burn_times.h):
+  // enclosures from the node circles evaluated once in Arb at kBallBits, not from the exact
+  // forms (which are built only when a comparison reaches the exact stage). Requests above
+  // 128 bits go to the exact forms.
+  void enclose_radius(std::uint32_t node, mpfr_ptr lo, mpfr_ptr hi) const override;
+  void enclose_length(std::uint32_t edge, mpfr_ptr lo, mpfr_ptr hi) const override;
+  LongInterval enclose_radius_long(std::uint32_t node) const override;
+  LongInterval enclose_length_long(std::uint32_t edge) const override;
   Point2 point_along(const MedialGraph& g, std::uint32_t edge, std::uint32_t from, double s) const override;
   std::vector<Point2> polyline(const MedialGraph& g, std::uint32_t edge) const override;
   std::string description() const override { return "exact polygon medial axis"; }
@@ -64,6 +72,11 @@ class PolygonAxisGeometry : public MedialGeometry {
  private:
   ExactSum frame_length(std::uint32_t edge) const;
   std::string arc_identity(const AxisEdgeData& e, const std::string& ends) const;
+  static constexpr long kBallBits = 192;
+  const CircleValue<Ball>& ball_circle(std::uint32_t i) const;  // kBallBits, memoised
+  Ball ball_length(std::uint32_t edge) const;
+  // lo <= frame_value * to_input <= hi, rounded outwards at the precision of lo and hi.
+  void scaled_to_input(const Ball& frame_value, mpfr_ptr lo, mpfr_ptr hi) const;
 
   std::shared_ptr<const PolygonSites> sites_;
   mpq_class to_input_;
@@ -72,6 +85,7 @@ class PolygonAxisGeometry : public MedialGeometry {
   mutable std::vector<std::uint8_t> circle_done_;
   mutable std::vector<std::optional<CircleValue<ExactSum>>> circles_;
   mutable std::vector<std::optional<ExactSum>> lengths_;
+  mutable std::vector<std::optional<CircleValue<Ball>>> ball_circles_;
 };
 
 }  // namespace grassfire

@@ -78,10 +78,14 @@ std::vector<std::uint64_t> fingerprints(const std::vector<IntegerRootTerm>& term
 
 }  // namespace
 
-Interval CertifiedConstant::approx() const {
-  MpfrBounds b(53);
-  enclose(b.lo, b.hi);
-  return {mpfr_get_d(b.lo, MPFR_RNDD), mpfr_get_d(b.hi, MPFR_RNDU)};
+const Interval& CertifiedConstant::approx() const {
+  if (!has_approx_) {
+    MpfrBounds b(53);
+    enclose(b.lo, b.hi);
+    approx_ = {mpfr_get_d(b.lo, MPFR_RNDD), mpfr_get_d(b.hi, MPFR_RNDU)};
+    has_approx_ = true;
+  }
+  return approx_;
 }
 
 Interval enclose(const mpq_class& q) {

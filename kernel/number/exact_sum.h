@@ -36,7 +36,12 @@ class CertifiedConstant {
   virtual void enclose(mpfr_ptr lo, mpfr_ptr hi) const = 0;
   // Constants with equal identity strings are equal; distinct strings say nothing.
   virtual std::string identity() const = 0;
-  Interval approx() const;
+  // The 53-bit enclosure, computed once (sign() of a sum asks for it on every filter pass).
+  const Interval& approx() const;
+
+ private:
+  mutable Interval approx_;
+  mutable bool has_approx_ = false;
 };
 
 struct SqrtTerm {
