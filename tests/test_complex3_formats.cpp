@@ -125,6 +125,26 @@ TEST_CASE("meshes: OFF, OBJ, ASCII and binary PLY read the same tetrahedron", "[
   CHECK(mc.count(VertexKind::Interior) == 4);
 }
 
+TEST_CASE("meshes: polygonal faces become fans, OFF family headers are read", "[complex3]") {
+  // A unit square as one quad in each format: two triangles (0 1 2) and (0 2 3).
+  const std::vector<std::array<std::uint32_t, 3>> fan{{0, 1, 2}, {0, 2, 3}};
+  for (const char* f : {"quad.off", "quad.obj", "quad.ply"}) {
+    CAPTURE(f);
+    const TriangleMesh3 m = read_triangle_mesh(data(f));
+    CHECK(m.vertices.size() == 4);
+    CHECK(m.triangles == fan);
+  }
+  // COFF (per-vertex colours, as CGAL's cactus.off): a pentagon with colours after its indices.
+  const TriangleMesh3 c = read_triangle_mesh(data("pentagon_colours.off"));
+  CHECK(c.vertices.size() == 5);
+  CHECK(c.vertices[1] == std::array<double, 3>{1, 0, 0});
+  CHECK(c.triangles == std::vector<std::array<std::uint32_t, 3>>{{0, 1, 2}, {0, 2, 3}, {0, 3, 4}});
+  TriangleMesh3 m;
+  CHECK_FALSE(append_polygon_face(m, {0, 1}));
+  CHECK_FALSE(append_polygon_face(m, {0, 1, 2, 1}));
+  CHECK(m.triangles.empty());
+}
+
 TEST_CASE("meshes: write then read is the identity", "[complex3]") {
   TriangleMesh3 m;
   m.source = "generated";
@@ -144,14 +164,16 @@ TEST_CASE("meshes: write then read is the identity", "[complex3]") {
 
 TEST_CASE("meshes: malformed files are rejected", "[complex3]") {
   const std::vector<std::pair<std::string, std::string>> cases = {
-      {"bad_quad.off", "bad_quad.off:7: face with 4 vertices; triangles are required"},
+      {"bad_two.off", "bad_two.off:6: face with 2 vertices; at least 3 are required"},
+      {"bad_repeat.off", "bad_repeat.off:7: face repeats a vertex"},
+      {"bad_4d.off", "bad_4d.off:1: not an OFF file"},
       {"bad_nan.off", "bad_nan.off:4: 'NaN' is not a finite number"},
       {"bad_index.off", "bad_index.off:6: vertex index '5' out of range"},
       {"bad_short.off", "file ends early"},
       {"bad_empty.off", "empty mesh"},
-      {"bad_quad.obj", "bad_quad.obj:5: face with 4 vertices"},
+      {"bad_two.obj", "bad_two.obj:4: face with 2 vertices"},
       {"bad_index.obj", "bad_index.obj:4: vertex reference out of range"},
-      {"bad_quad.ply", "face 0: face with 4 vertices"},
+      {"bad_repeat.ply", "face 0: face repeats a vertex"},
       {"bad_inf.ply", "vertex 1: coordinate is NaN or infinite"},
       {"bad_no_z.ply", "vertex element lacks x, y or z"},
       {"bad_big_endian.ply", "unsupported PLY format 'binary_big_endian'"},

@@ -5,6 +5,7 @@
 #include <cctype>
 #include <cmath>
 #include <fstream>
+#include <regex>
 
 #include "io/complex_text.h"
 
@@ -22,8 +23,11 @@ std::array<double, 3> xyz(const TextLine& l, std::size_t first, const std::strin
   return p;
 }
 
-void check_triangle(const std::array<std::uint32_t, 3>& t, std::size_t line, const std::string& source) {
-  if (t[0] == t[1] || t[1] == t[2] || t[0] == t[2]) format_error(source, line, "face repeats a vertex");
+// Geomview's OFF family: [ST][C][N][4][n]OFF. The prefixes add per-vertex numbers (texture
+// coordinates, colours, normals), which the reader skips; 4 and n change the dimension.
+bool is_off_keyword(const std::string& w) {
+  static const std::regex family("(ST)?C?N?OFF");
+  return std::regex_match(w, family);
 }
 
 void check_not_empty(const TriangleMesh3& m) {
@@ -43,6 +47,15 @@ void finish(std::ofstream& out, const std::string& path) {
 
 }  // namespace
 
+bool append_polygon_face(TriangleMesh3& mesh, const std::vector<std::uint32_t>& face) {
+  if (face.size() < 3) return false;
+  std::vector<std::uint32_t> sorted = face;
+  std::sort(sorted.begin(), sorted.end());
+  if (std::adjacent_find(sorted.begin(), sorted.end()) != sorted.end()) return false;
+  for (std::size_t i = 1; i + 1 < face.size(); ++i) mesh.triangles.push_back({face[0], face[i], face[i + 1]});
+  return true;
+}
+
 std::string file_extension(const std::string& path) {
   const std::size_t slash = path.find_last_of('/');
   const std::size_t dot = path.find_last_of('.');
@@ -56,7 +69,9 @@ TriangleMesh3 parse_off(const std::string& text, const std::string& source) {
   const std::vector<TextLine> lines = tokenize_lines(text);
   TriangleMesh3 m;
   m.source = source;
-  if (lines.empty() || lines[0].tokens[0] != "OFF") format_error(source, lines.empty() ? 0 : lines[0].number, "not an OFF file (first word must be OFF)");
+  if (lines.empty() || !is_off_keyword(lines[0].tokens[0]))
+    format_error(source, lines.empty() ? 0 : lines[0].number,
+                 "not an OFF file (first word must be OFF, or COFF, NOFF, STOFF, ... of Geomview's OFF family)");
   std::vector<std::string> count_tokens(lines[0].tokens.begin() + 1, lines[0].tokens.end());
   std::size_t next = 1, count_line = lines[0].number;
   if (count_tokens.empty()) {
@@ -82,16 +97,15 @@ TriangleMesh3 parse_off(const std::string& text, const std::string& source) {
     const TextLine& l = lines[next + nv + i];
     const auto n = parse_index(l.tokens[0]);
     if (!n) format_error(source, l.number, "face must start with its vertex count");
-    if (*n != 3) format_error(source, l.number, "face with " + l.tokens[0] + " vertices; triangles are required");
-    if (l.tokens.size() < 4) format_error(source, l.number, "face lists fewer than 3 vertices");
-    std::array<std::uint32_t, 3> t{};
-    for (int k = 0; k < 3; ++k) {
+    if (*n < 3) format_error(source, l.number, "face with " + l.tokens[0] + " vertices; at least 3 are required");
+    if (l.tokens.size() < 1 + *n) format_error(source, l.number, "face lists fewer than " + l.tokens[0] + " vertices");
+    std::vector<std::uint32_t> face;
+    for (std::uint64_t k = 0; k < *n; ++k) {  // numbers after the indices (colours) are ignored
       const auto idx = parse_index(l.tokens[1 + k]);
       if (!idx || *idx >= nv) format_error(source, l.number, "vertex index '" + l.tokens[1 + k] + "' out of range (" + std::to_string(nv) + " vertices)");
-      t[k] = static_cast<std::uint32_t>(*idx);
+      face.push_back(static_cast<std::uint32_t>(*idx));
     }
-    check_triangle(t, l.number, source);
-    m.triangles.push_back(t);
+    if (!append_polygon_face(m, face)) format_error(source, l.number, "face repeats a vertex");
   }
   check_not_empty(m);
   return m;
@@ -101,7 +115,7 @@ TriangleMesh3 parse_obj(const std::string& text, const std::string& source) {
   TriangleMesh3 m;
   m.source = source;
   struct Face {
-    std::array<long long, 3> ref;
+    std::vector<long long> ref;
     std::size_t line;
   };
   std::vector<Face> faces;
@@ -110,10 +124,10 @@ TriangleMesh3 parse_obj(const std::string& text, const std::string& source) {
       if (l.tokens.size() < 4 || l.tokens.size() > 5) format_error(source, l.number, "vertex must be 'v x y z [w]'");
       m.vertices.push_back(xyz(l, 1, source));
     } else if (l.tokens[0] == "f") {
-      if (l.tokens.size() != 4)
-        format_error(source, l.number, "face with " + std::to_string(l.tokens.size() - 1) + " vertices; triangles are required");
-      Face f{{0, 0, 0}, l.number};
-      for (int k = 0; k < 3; ++k) {
+      if (l.tokens.size() < 4)
+        format_error(source, l.number, "face with " + std::to_string(l.tokens.size() - 1) + " vertices; at least 3 are required");
+      Face f{std::vector<long long>(l.tokens.size() - 1), l.number};
+      for (std::size_t k = 0; k + 1 < l.tokens.size(); ++k) {
         const std::string idx = l.tokens[1 + k].substr(0, l.tokens[1 + k].find('/'));
         const bool negative = !idx.empty() && idx[0] == '-';
         const auto v = parse_index(negative ? idx.substr(1) : idx);
@@ -126,14 +140,13 @@ TriangleMesh3 parse_obj(const std::string& text, const std::string& source) {
     }
   }
   for (const Face& f : faces) {
-    std::array<std::uint32_t, 3> t{};
-    for (int k = 0; k < 3; ++k) {
-      if (f.ref[k] < 1 || f.ref[k] > static_cast<long long>(m.vertices.size()))
+    std::vector<std::uint32_t> face;
+    for (long long r : f.ref) {
+      if (r < 1 || r > static_cast<long long>(m.vertices.size()))
         format_error(source, f.line, "vertex reference out of range (" + std::to_string(m.vertices.size()) + " vertices)");
-      t[k] = static_cast<std::uint32_t>(f.ref[k] - 1);
+      face.push_back(static_cast<std::uint32_t>(r - 1));
     }
-    check_triangle(t, f.line, source);
-    m.triangles.push_back(t);
+    if (!append_polygon_face(m, face)) format_error(source, f.line, "face repeats a vertex");
   }
   check_not_empty(m);
   return m;

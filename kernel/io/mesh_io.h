@@ -2,21 +2,25 @@
 //
 // Accepted (reading; errors are ComplexFormatError "<file>:<line>: <problem>", or
 // "<file>: <element> <index>: <problem>" inside binary PLY):
-//  - OFF: a first line `OFF` (optionally followed on the same line by the counts), then
-//    `nv nf ne`, nv vertex lines `x y z` (further numbers, e.g. colours, are ignored),
-//    nf face lines `3 i j k` (further numbers ignored); `#` comments and blank lines
-//    anywhere. Faces must be triangles.
+//  - OFF: a first line `OFF`, or `COFF`, `NOFF`, `CNOFF`, `STOFF`, ... of Geomview's OFF
+//    family (optionally followed on the same line by the counts), then `nv nf ne`, nv
+//    vertex lines `x y z` (further numbers -- colours, normals, texture coordinates -- are
+//    ignored), nf face lines `k i_1 ... i_k` (further numbers ignored); `#` comments and
+//    blank lines anywhere. 4OFF and nOFF (other dimensions) are rejected.
 //  - PLY 1.0: `format ascii` or `format binary_little_endian` (big endian is rejected); a
 //    `vertex` element with float/double/integer properties x, y, z, and a `face` element
 //    with a list property `vertex_indices` or `vertex_index`; other properties and
 //    elements are skipped (any PLY scalar type: char, uchar, short, ushort, int, uint,
 //    float, double and their int8..float64 names).
-//  - OBJ: `v x y z [w]` and `f a b c` with a, b, c of the forms i, i/t, i/t/n, i//n,
+//  - OBJ: `v x y z [w]` and `f a b c ...` with references of the forms i, i/t, i/t/n, i//n,
 //    1-based, negative = relative to the end; other statements are ignored.
 //  - ball lists: one ball a line, `x y z w` with w > 0 the squared radius (CGAL weighted
 //    points, /work/shared/data/balls); values are exact decimals.
 // Every mesh reader rejects: NaN or infinite or non-numeric values, wrong counts, indices
-// out of range, a face repeating a vertex, non-triangular faces, and empty meshes.
+// out of range, a face with fewer than 3 vertices or repeating a vertex, and empty meshes.
+// A face with k > 3 vertices becomes the fan of k - 2 triangles from its first vertex
+// (append_polygon_face), the triangulation of a convex face; non-convex faces are the
+// caller's risk (the mesh builders check closedness, not face convexity).
 // Writing: OFF, OBJ and ASCII PLY with the shortest round-tripping decimals, so a mesh
 // written and read back is identical.
 #pragma once
@@ -45,6 +49,11 @@ BallSet read_ball_list(const std::string& path);
 // The mesh itself as a complex: vertex coordinates are the doubles read (exactly, as
 // rationals), R = 0 and Linear ignition; for burning on a given surface or 2-complex.
 RawComplex mesh_as_complex(const TriangleMesh3& mesh);
+
+// Appends a polygonal face (v_0, ..., v_{k-1}), k >= 3, as the fan of triangles
+// (v_0, v_i, v_{i+1}), 0 < i < k - 1 (the triangulation of a convex face). Returns false,
+// appending nothing, when k < 3 or the face repeats a vertex.
+bool append_polygon_face(TriangleMesh3& mesh, const std::vector<std::uint32_t>& face);
 
 // Lower-case extension of a path without the dot ("" if none).
 std::string file_extension(const std::string& path);

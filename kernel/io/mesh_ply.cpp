@@ -236,16 +236,14 @@ TriangleMesh3 parse_ply(const std::string& bytes, const std::string& source) {
       } else if (e.name == "face") {
         const auto& idx = values[list];
         const std::string where = source + ": face " + std::to_string(i) + ": ";
-        if (idx.size() != 3)
-          throw ComplexFormatError(where + "face with " + std::to_string(idx.size()) + " vertices; triangles are required");
-        std::array<std::uint32_t, 3> t{};
-        for (int k = 0; k < 3; ++k) {
-          if (idx[k] < 0 || idx[k] != std::floor(idx[k]) || idx[k] >= vertex_count)
-            throw ComplexFormatError(where + "vertex index out of range");
-          t[k] = static_cast<std::uint32_t>(idx[k]);
+        if (idx.size() < 3)
+          throw ComplexFormatError(where + "face with " + std::to_string(idx.size()) + " vertices; at least 3 are required");
+        std::vector<std::uint32_t> face;
+        for (double k : idx) {
+          if (k < 0 || k != std::floor(k) || k >= vertex_count) throw ComplexFormatError(where + "vertex index out of range");
+          face.push_back(static_cast<std::uint32_t>(k));
         }
-        if (t[0] == t[1] || t[1] == t[2] || t[0] == t[2]) throw ComplexFormatError(where + "face repeats a vertex");
-        m.triangles.push_back(t);
+        if (!append_polygon_face(m, face)) throw ComplexFormatError(where + "face repeats a vertex");
       }
     }
     have_vertices = have_vertices || e.name == "vertex";
