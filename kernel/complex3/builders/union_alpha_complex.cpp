@@ -11,6 +11,8 @@
 #include <type_traits>
 
 #include "complex3/exact_predicates3.h"
+#include "number/exact_sum.h"
+#include "number/interval.h"
 
 namespace grassfire {
 
@@ -32,10 +34,36 @@ mpq_class power(const BallSet& b, std::uint32_t i, const ExactPoint3& x) {
   return squared_distance(x, b.centers[i]) - b.squared_radii[i];
 }
 
+namespace {
+// An enclosure of a value whose double x came from get_d() (truncation, < 1 ulp) or from
+// std::sqrt of such a double (< 2 ulps): x widened by 2^-50 |x| (8 ulps) and the
+// smallest normal double.
+Interval around(double x) {
+  const double r = std::fabs(x) * 0x1p-50 + std::numeric_limits<double>::min();
+  const double inf = std::numeric_limits<double>::infinity();
+  Interval i;  // one ulp outwards covers the rounding of x -+ r
+  i.lo = std::nextafter(x - r, -inf);
+  i.hi = std::nextafter(x + r, inf);
+  return i;
+}
+}  // namespace
+
 bool interior_of_union(const BallSet& b, const ExactPoint3& p) {
+  const Interval px = enclose(p.x), py = enclose(p.y), pz = enclose(p.z);
+  const bool approximated = b.approx_centers.size() == b.centers.size() && b.approx_radii.size() == b.centers.size();
   std::vector<ExactPoint3> q;
-  for (std::uint32_t i = 0; i < b.centers.size(); ++i)
+  for (std::uint32_t i = 0; i < b.centers.size(); ++i) {
+    if (!approximated) {
+      if (sgn(power(b, i, p)) == 0) q.push_back(b.centers[i] - p);
+      continue;
+    }
+    // Filter: balls whose sphere certainly misses p need no exact power.
+    const auto& c = b.approx_centers[i];
+    const Interval r = around(b.approx_radii[i]);
+    const Interval pow = square(px - around(c[0])) + square(py - around(c[1])) + square(pz - around(c[2])) - square(r);
+    if (pow.lo > 0 || pow.hi < 0) continue;
     if (sgn(power(b, i, p)) == 0) q.push_back(b.centers[i] - p);
+  }
   bool full_rank = false;
   for (std::size_t i = 0; i < q.size() && !full_rank; ++i)
     for (std::size_t j = i + 1; j < q.size() && !full_rank; ++j)

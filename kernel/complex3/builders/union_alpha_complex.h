@@ -120,7 +120,9 @@ mpq_class power(const BallSet& b, std::uint32_t i, const ExactPoint3& x);
 // For p with min_i pow_i(p) = 0 (on some spheres, in no open ball): whether p is an
 // interior point of the union, i.e. the centres c_i of the balls through p surround it
 // (0 in the interior of conv{c_i - p}; otherwise a direction d with d . (c_i - p) <= 0 for
-// all of them leaves every ball). Exact; O(k^3) for k spheres through p.
+// all of them leaves every ball). Exact; O(n) interval powers from the BallSet's approx_*
+// (when present) pick the spheres that may pass through p, exact powers decide; then
+// O(k^3) for the k spheres through p.
 bool interior_of_union(const BallSet& b, const ExactPoint3& p);
 
 struct BoundaryVertex {
