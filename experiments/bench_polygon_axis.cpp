@@ -28,6 +28,8 @@
 
 #include "burn2/extended_grassfire.h"
 #include "medial2/polygon_axis.h"
+#include "medial2/polygon_axis_geometry.h"
+#include "medial2/polygon_axis_symmetry.h"
 
 using namespace grassfire;
 
@@ -120,6 +122,12 @@ int main(int argc, char** argv) {
                  n, (unsigned long long)st.filter_decided, (unsigned long long)st.mpfr_decided,
                  (unsigned long long)st.exact_zero, (unsigned long long)st.uncertified_zero,
                  (unsigned long long)st.max_bits_used);
+    if (const auto* geo = dynamic_cast<const PolygonAxisGeometry*>(&g2.geometry())) {
+      const AxisValueClasses& vc = geo->value_classes();
+      std::fprintf(stderr, "  symmetries %u, nodes in shared classes %llu / %u, edges %llu / %u, class ties %llu\n",
+                   vc.symmetries, (unsigned long long)vc.nodes_in_shared_classes, g2.node_count(),
+                   (unsigned long long)vc.edges_in_shared_classes, g2.edge_count(), (unsigned long long)st.class_zero);
+    }
     (void)g;
   }
   return 0;

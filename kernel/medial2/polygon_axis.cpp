@@ -109,38 +109,63 @@ class Builder {
     }
   }
 
+  enum class Same { No, Certified, Uncertified };
+
   // Exact test that two Voronoi vertices are the same point.
-  bool same_point(std::uint32_t i, std::uint32_t j) {
+  Same same_point(std::uint32_t i, std::uint32_t j) {
     const CircleValue<Interval>& a = values_[i];
     const CircleValue<Interval>& b = values_[j];
-    if (!overlap(a.x, b.x) || !overlap(a.y, b.y) || !overlap(a.r, b.r)) return false;
+    if (!overlap(a.x, b.x) || !overlap(a.y, b.y) || !overlap(a.r, b.r)) return Same::No;
     const auto ea = solve_exact(*sites_, circles_[i]);
     const auto eb = solve_exact(*sites_, circles_[j]);
-    if (ea && eb) return sign(ea->x - eb->x) == 0 && sign(ea->y - eb->y) == 0;
+    if (ea && eb) return sign(ea->x - eb->x) == 0 && sign(ea->y - eb->y) == 0 ? Same::Certified : Same::No;
     for (long bits : {256L, 1024L}) {
       BallPrecision guard(bits);
       const CircleValue<Ball> ba = solve_ball(*sites_, circles_[i]), bb = solve_ball(*sites_, circles_[j]);
-      if ((ba.x - bb.x).sign() != 0 && (ba.x - bb.x).sign() != kUndecided) return false;
-      if ((ba.y - bb.y).sign() != 0 && (ba.y - bb.y).sign() != kUndecided) return false;
+      if ((ba.x - bb.x).sign() != 0 && (ba.x - bb.x).sign() != kUndecided) return Same::No;
+      if ((ba.y - bb.y).sign() != 0 && (ba.y - bb.y).sign() != kUndecided) return Same::No;
     }
     ++report_.uncertified_contractions;
-    return true;
+    return Same::Uncertified;
   }
 
+  bool has_site(std::uint32_t vertex, std::uint32_t site) const {
+    const auto& s = circles_[vertex].sites;
+    return std::find(s.begin(), s.end(), site) != s.end();
+  }
+
+  // A group's circles are aliases of its representative (same centre and R, exactly) when
+  // every contraction in it is certified and each contracted edge's two sites are sites of
+  // the circles at both of its ends: two circles with one centre X and a common segment
+  // site have R = the signed distance from X to that site's line; with a common point
+  // site, R = |X - P| for both, as both R are positive (their enclosures say so).
   void contract() {
     UnionFind uf(topo_.vertices.size());
     contracted_.assign(topo_.edges.size(), false);
+    std::vector<std::size_t> contracted;
+    std::vector<bool> uncertified(topo_.edges.size(), false);
     for (std::size_t e = 0; e < topo_.edges.size(); ++e) {
       const auto& ed = topo_.edges[e];
       if (topo_.vertices[ed.u].apex || topo_.vertices[ed.v].apex) continue;  // R = 0 against R > 0
-      if (same_point(ed.u, ed.v)) {
+      const Same same = same_point(ed.u, ed.v);
+      if (same != Same::No) {
         contracted_[e] = true;
+        uncertified[e] = same == Same::Uncertified;
+        contracted.push_back(e);
         uf.unite(ed.u, ed.v);
         ++report_.contracted_edges;
       }
     }
     group_.resize(topo_.vertices.size());
     for (std::uint32_t i = 0; i < topo_.vertices.size(); ++i) group_[i] = uf.find(i);
+    aliasable_.assign(topo_.vertices.size(), true);
+    for (std::size_t e : contracted) {
+      const auto& ed = topo_.edges[e];
+      const bool shares = has_site(ed.u, ed.site_a) && has_site(ed.u, ed.site_b) && has_site(ed.v, ed.site_a) &&
+                          has_site(ed.v, ed.site_b);
+      const bool positive = values_[ed.u].r.lo > 0 && values_[ed.v].r.lo > 0;
+      if (uncertified[e] || !shares || !positive) aliasable_[group_[ed.u]] = false;
+    }
   }
 
   MedialGraph assemble() {
@@ -159,6 +184,12 @@ class Builder {
         if (topo_.vertices[root].apex) nodes.back().radius = 0.0;
       }
       node_of[i] = node_of[root];
+      if (i != root) {
+        if (aliasable_[root])
+          data[node_of[i]].aliases.push_back(circles_[i]);
+        else
+          data[node_of[i]].all_aliased = false;
+      }
       auto& s = data[node_of[i]].sites;
       s.insert(s.end(), topo_.vertices[i].sites.begin(), topo_.vertices[i].sites.end());
     }
@@ -207,6 +238,7 @@ class Builder {
   std::vector<CircleValue<Interval>> values_;
   std::vector<bool> contracted_;
   std::vector<std::uint32_t> group_;
+  std::vector<bool> aliasable_;  // by group root
 };
 
 }  // namespace

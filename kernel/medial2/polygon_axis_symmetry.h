@@ -1,0 +1,78 @@
+// polygon_axis_symmetry.h -- exact symmetries of a polygon and the value classes they
+// induce on its exact medial axis: nodes with provably equal R, edges with provably
+// equal lengths (burn2/burn_times.h cancels them without building exact forms).
+//
+// Computes: (1) the isometries phi(X) = A X + t, A one of the seven non-identity signed
+// permutation matrices (the lattice symmetries: reflections in axis-parallel and
+// diagonal lines, rotations by 90, 180, 270 degrees), that map the polygon onto itself:
+// every vertex to a vertex (phi fixes the centroid, so t = c - A c), every segment site
+// to a segment site. (2) The image of every node's circle and every edge under each
+// such phi, and the classes of the atoms joined by these maps (union-find, the smallest
+// id represents a class).
+// Why equal classes are equal values: R at a node and the length of an edge are values
+// of the formulas of voronoi_circle.cpp at the node's representative circle (kind,
+// sites in roles, root) and, for an edge, its two end circles and its two sites
+// (polygon_axis_geometry.cpp). Those formulas are equivariant: solving the circle of the
+// mapped configuration gives phi of the solved circle, as real numbers, once the roles
+// and the root are mapped as follows (A reverses orientation when det A = -1, and then
+// the left normal of a mapped segment is A n, the direction along it -A d):
+//   PPP, SSS: any order (the circumcircle, the unique solution of a linear system);
+//   PSS: the formula is symmetric in L1, L2 and the root (+1 the larger R) is a choice
+//        between the two radii, which phi preserves;
+//   PPS (P, Q, L, root): kept when det A = 1; (Q, P, L, root) when det A = -1 (the
+//        bisector direction d = rot90(Q - P) maps to -A d, which flips the root's sign,
+//        and swapping P and Q flips it back); PPS-linear: P and Q in any order;
+//   PSS-parallel (P, L1, L2): kept when det A = 1; (P, L2, L1) when det A = -1.
+// An edge's length (|X_u - X_v|, or the parabolic arc |S(xi_v) - S(xi_u)| with S odd and
+// xi -> -xi when det A = -1) is invariant once its end circles and sites are mapped. So a
+// node w whose circle is, under these rules, the image of node u's has R(w) = R(u), and
+// an edge between the images of an edge's ends, separating the images of its two sites,
+// has the same length. w is found by the canonical key of the image circle (a key names
+// a value: it only applies swaps the formulas are symmetric under) among the
+// representative circles and their aliases (circles of a contracted group proved to
+// have the same centre and R, polygon_axis.cpp). A degenerate vertex that phi maps onto
+// itself is often split by Boost into triples whose images are other triples of the
+// same sites; then w is the node whose site set is the image of u's, and its circle is
+// proved to be the image circle c by uniqueness: w's circle touches all of w's sites,
+// so it is one of the circles tangent to c's three sites, of which there is one (PPP,
+// SSS, PPS-linear, or a point site on a segment site's line) or two, c and the other
+// root, whose centre enclosure must then be disjoint from w's (is_circle_of).
+// Nothing here relies on the Voronoi topology being right: only on the formulas and on
+// exact predicates (contractions, orientation) and certified enclosures.
+// Contract: nodes and edges come from exact_polygon_axis on `sites`. Frames whose
+// coordinates are not all integers below 2^31 (the CGAL path on arbitrary doubles) get
+// no symmetries: every atom is then its own class.
+// Complexity: O(n) expected (hash maps) for n sites, nodes and edges.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "medial2/polygon_axis_geometry.h"
+
+namespace grassfire {
+
+struct PolygonSymmetry {
+  int a00 = 1, a01 = 0, a10 = 0, a11 = 1;  // the linear part A
+  long long tx = 0, ty = 0;                // the translation t
+  bool reverses = false;                   // det A = -1
+  std::vector<std::uint32_t> vertex;       // vertex i maps to vertex[i]
+};
+
+// The non-identity lattice symmetries of the polygon (at most seven).
+std::vector<PolygonSymmetry> polygon_symmetries(const PolygonSites& sites);
+
+struct AxisValueClasses {
+  std::vector<std::uint32_t> node;  // radius class of every node (the smallest member id)
+  std::vector<std::uint32_t> edge;  // length class of every edge
+  std::uint32_t symmetries = 0;
+  std::uint64_t nodes_in_shared_classes = 0, edges_in_shared_classes = 0;
+  // Over all symmetries: nodes and edges whose image was not found (their classes miss
+  // that member; values stay exact either way, the engine then builds exact forms).
+  std::uint64_t unmapped_nodes = 0, unmapped_edges = 0;
+};
+
+AxisValueClasses axis_value_classes(const PolygonSites& sites, const std::vector<AxisNodeData>& nodes,
+                                    const std::vector<AxisEdgeData>& edges);
+
+}  // namespace grassfire

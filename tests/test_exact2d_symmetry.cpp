@@ -1,0 +1,251 @@
+// Value classes of the exact polygon axis (medial2/polygon_axis_symmetry.h) and their use
+// by the burning engine (burn2/burn_times.h): exact symmetries are found, and not for a
+// polygon one unit off; classed atoms have exactly equal values; mirror chains tie by
+// class; the engine still equals the oracle, which does not use the classes.
+#include <catch2/catch.hpp>
+
+#include <cmath>
+
+#include "burn2/edf_definition.h"
+#include "burn2/extended_grassfire.h"
+#include "medial2/polygon_axis.h"
+#include "medial2/polygon_axis_geometry.h"
+#include "medial2/polygon_axis_symmetry.h"
+#include "medial2/polygon_axis_validate.h"
+#include "shapes/validate_shape.h"
+#include "support.h"
+
+using namespace grassfire;
+using namespace grassfire::testing;
+
+namespace {
+
+Shape2 polygon(std::vector<Point2> ring, const std::string& name = "test") {
+  Shape2 s;
+  s.name = name;
+  s.rings.push_back({std::move(ring)});
+  validate_shape(s, name);
+  return s;
+}
+
+// The wavy circle r(t) = 10^4 (1 + 0.1 sin(7t + phase)) with n integer vertices (n even),
+// t from -pi/2 counter-clockwise; the right half is computed, the left half mirrored in
+// x = 0 (vertex n - k is vertex k mirrored), so the polygon is exactly symmetric.
+Shape2 mirrored_wavy(int n, double phase = 0) {
+  std::vector<Point2> ring(n);
+  for (int k = 0; k <= n / 2; ++k) {
+    const double t = -M_PI / 2 + 2 * M_PI * k / n, r = 1e4 * (1 + 0.1 * std::sin(7 * t + phase));
+    ring[k] = {std::round(r * std::cos(t)), std::round(r * std::sin(t))};
+  }
+  ring[0].x = ring[n / 2].x = 0;
+  for (int k = n / 2 + 1; k < n; ++k) ring[k] = {-ring[n - k].x, ring[n - k].y};
+  return polygon(ring, "mirrored wavy " + std::to_string(n));
+}
+
+const PolygonAxisGeometry& geometry_of(const MedialGraph& g) {
+  const auto* geo = dynamic_cast<const PolygonAxisGeometry*>(&g.geometry());
+  REQUIRE(geo != nullptr);
+  return *geo;
+}
+
+// Every classed atom has exactly the value of its class representative.
+// With mirror_x, members also lie at mirrored positions (x -> -x).
+void require_classes_exact(const MedialGraph& g, bool mirror_x) {
+  const MedialGeometry& geo = g.geometry();
+  NumberStats st;
+  for (std::uint32_t v = 0; v < g.node_count(); ++v) {
+    const std::uint32_t c = geo.radius_class(v);
+    if (c == v) continue;
+    INFO("node " << v << " class " << c);
+    REQUIRE(compare(geo.exact_radius(v), geo.exact_radius(c), &st) == 0);
+    if (!mirror_x) continue;
+    CHECK(std::fabs(g.node(v).position.x + g.node(c).position.x) < 1e-6 * (1 + std::fabs(g.node(c).position.x)));
+    CHECK(std::fabs(g.node(v).position.y - g.node(c).position.y) < 1e-6 * (1 + std::fabs(g.node(c).position.y)));
+  }
+  for (std::uint32_t e = 0; e < g.edge_count(); ++e) {
+    const std::uint32_t c = geo.length_class(e);
+    if (c == e) continue;
+    INFO("edge " << e << " class " << c);
+    REQUIRE(compare(geo.exact_length(e), geo.exact_length(c), &st) == 0);
+  }
+  // Equal by exact forms, not by an unseparated enclosure.
+  CHECK(st.uncertified_zero == 0);
+}
+
+}  // namespace
+
+TEST_CASE("lattice symmetries of polygons: all of them, and none one unit off", "[symmetry]") {
+  const PolygonSites square = make_sites(polygon({{0, 0}, {4, 0}, {4, 4}, {0, 4}}), 1.0);
+  CHECK(polygon_symmetries(square).size() == 7);
+  const PolygonSites rectangle = make_sites(polygon({{0, 0}, {6, 0}, {6, 2}, {0, 2}}), 1.0);
+  CHECK(polygon_symmetries(rectangle).size() == 3);  // two mirrors and the half turn
+  const PolygonSites trapezoid = make_sites(polygon({{0, 0}, {8, 0}, {6, 3}, {2, 3}}), 1.0);
+  const auto t = polygon_symmetries(trapezoid);
+  REQUIRE(t.size() == 1);
+  CHECK(t[0].reverses);
+  CHECK(t[0].a00 == -1);
+  CHECK(t[0].tx == 8);
+  CHECK(t[0].vertex == std::vector<std::uint32_t>{1, 0, 3, 2});
+  const PolygonSites off = make_sites(polygon({{0, 0}, {8, 0}, {6, 3}, {2, 4}}), 1.0);
+  CHECK(polygon_symmetries(off).empty());
+  // A vertex set with a symmetry that the polygon's edges do not have.
+  const PolygonSites crossed = make_sites(polygon({{0, 0}, {4, 0}, {4, 4}, {3, 2}, {0, 4}, {1, 2}}), 1.0);
+  CHECK(polygon_symmetries(crossed).empty());
+  // Non-integer frames (the CGAL path) get none.
+  const PolygonSites halves = make_sites(polygon({{0, 0}, {4.5, 0}, {4.5, 4.5}, {0, 4.5}}), 1.0);
+  CHECK(polygon_symmetries(halves).empty());
+}
+
+TEST_CASE("a mirror-symmetric wavy polygon: every node and edge paired, values exactly equal", "[symmetry]") {
+  const Shape2 s = mirrored_wavy(120);
+  const MedialGraph g = exact_polygon_axis(s);
+  const AxisValueClasses& vc = geometry_of(g).value_classes();
+  CHECK(vc.symmetries == 1);
+  CHECK(vc.unmapped_nodes == 0);
+  CHECK(vc.unmapped_edges == 0);
+  CHECK(vc.nodes_in_shared_classes > g.node_count() / 2);
+  // Nodes mapped onto themselves lie on the mirror line.
+  for (std::uint32_t v = 0; v < g.node_count(); ++v)
+    if (g.geometry().radius_class(v) == v) {
+      bool shared = false;
+      for (std::uint32_t w = 0; w < g.node_count(); ++w) shared = shared || (w != v && g.geometry().radius_class(w) == v);
+      if (!shared) CHECK(std::fabs(g.node(v).position.x) < 1e-6);
+    }
+  require_classes_exact(g, true);
+}
+
+TEST_CASE("one unit off the mirror: no symmetry, every atom its own class", "[symmetry]") {
+  Shape2 s = mirrored_wavy(120);
+  s.rings[0].points[7].x += 1;
+  validate_shape(s, "perturbed");
+  const MedialGraph g = exact_polygon_axis(s);
+  const AxisValueClasses& vc = geometry_of(g).value_classes();
+  CHECK(vc.symmetries == 0);
+  CHECK(vc.nodes_in_shared_classes == 0);
+  CHECK(vc.edges_in_shared_classes == 0);
+  for (std::uint32_t v = 0; v < g.node_count(); ++v) CHECK(g.geometry().radius_class(v) == v);
+  // (Ties proved exactly still join their records' classes: burn_times.h.)
+  const GrassfireResult r = extended_grassfire(g);
+  require_equal_to_definition(g, r, edf_by_definition(g));
+}
+
+TEST_CASE("the square's eight symmetries: classes of the four arms, exact, engine = oracle", "[symmetry]") {
+  const Shape2 s = polygon({{0, 0}, {10, 0}, {10, 10}, {0, 10}, {0, 6}, {-3, 5}, {0, 4}});
+  const MedialGraph g0 = exact_polygon_axis(s);
+  CHECK(geometry_of(g0).value_classes().symmetries == 1);  // the notch keeps only y = 5
+  require_classes_exact(g0, false);
+  const Shape2 sq = polygon({{-5, -5}, {5, -5}, {5, 5}, {-5, 5}});
+  const MedialGraph g = exact_polygon_axis(sq);
+  const AxisValueClasses& vc = geometry_of(g).value_classes();
+  CHECK(vc.symmetries == 7);
+  // Four corners (R = 0) in one class, four diagonal arms in one class.
+  std::uint32_t corner_class = 0xffffffffu;
+  for (std::uint32_t v = 0; v < g.node_count(); ++v)
+    if (g.is_leaf(v)) {
+      if (corner_class == 0xffffffffu) corner_class = g.geometry().radius_class(v);
+      CHECK(g.geometry().radius_class(v) == corner_class);
+    }
+  for (std::uint32_t e = 1; e < g.edge_count(); ++e) CHECK(g.geometry().length_class(e) == g.geometry().length_class(0));
+  const GrassfireResult r = extended_grassfire(g);
+  require_equal_to_definition(g, r, edf_by_definition(g));
+}
+
+TEST_CASE("burning a mirror-symmetric polygon: mirror ties proved by class, engine = oracle", "[symmetry]") {
+  for (double phase : {0.0, 0.3}) {
+    const Shape2 s = mirrored_wavy(160, phase);
+    const MedialGraph g = exact_polygon_axis(s);
+    validate_polygon_axis(g);
+    const GrassfireResult r = extended_grassfire(g);
+    INFO("phase " << phase);
+    CHECK(r.stats().class_zero > 0);
+    CHECK(r.stats().uncertified_zero == 0);
+    require_equal_to_definition(g, r, edf_by_definition(g));
+  }
+}
+
+namespace {
+
+// Explicit exact values with hand-given value classes (a test double of the polygon axis).
+class ClassedGeometry : public ExplicitGeometry {
+ public:
+  ClassedGeometry(std::vector<ExactSum> r, std::vector<ExactSum> l, std::vector<std::uint32_t> rc,
+                  std::vector<std::uint32_t> lc)
+      : ExplicitGeometry(std::move(r), std::move(l)), rc_(std::move(rc)), lc_(std::move(lc)) {}
+  std::uint32_t radius_class(std::uint32_t v) const override { return rc_[v]; }
+  std::uint32_t length_class(std::uint32_t e) const override { return lc_[e]; }
+
+ private:
+  std::vector<std::uint32_t> rc_, lc_;
+};
+
+// Two chains leaf 0 -> 1 -> centre 5 and leaf 2 -> 3 -> centre with lengths sqrt 2 and
+// sqrt 3 along each, and a third leaf 4 (R = 1) at distance sqrt 7; the classes of the
+// second chain's leaf, first and second edge are given (0, 0, 1 make it the first's twin).
+MedialGraph two_chains(std::uint32_t leaf_class, std::uint32_t first_class, std::uint32_t second_class) {
+  const auto root = [](long n) { return ExactSum::sqrt_of(n); };
+  std::vector<ExactSum> radii(6);
+  radii[4] = ExactSum::rational(1);
+  std::vector<ExactSum> lengths{root(2), root(3), root(2), root(3), root(7)};
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> ends{{0, 1}, {1, 5}, {2, 3}, {3, 5}, {4, 5}};
+  std::vector<std::uint32_t> rc{0, 1, leaf_class, 3, 4, 5};
+  std::vector<std::uint32_t> lc{0, 1, first_class, second_class, 4};
+  std::vector<MedialNode> nodes;
+  for (std::size_t i = 0; i < radii.size(); ++i) nodes.push_back({{double(i), 0.0}, radii[i].approx()});
+  std::vector<MedialEdge> edges;
+  for (std::size_t e = 0; e < ends.size(); ++e)
+    edges.push_back({ends[e].first, ends[e].second, EdgeKind::Segment, lengths[e].approx()});
+  return MedialGraph(std::move(nodes), std::move(edges), std::make_shared<ClassedGeometry>(radii, lengths, rc, lc));
+}
+
+}  // namespace
+
+TEST_CASE("burn times: equal classes tie without exact forms, distinct classes go to the exact stage",
+          "[symmetry][grassfire]") {
+  SECTION("twin chains: the arrivals at the centre tie by class") {
+    const MedialGraph g = two_chains(0, 0, 1);
+    BurnTimes t(g);
+    const TimeId a = t.advance(t.advance(t.ignition(0), 0), 1);
+    const TimeId b = t.advance(t.advance(t.ignition(2), 2), 3);
+    CHECK(t.value_class(a) == t.value_class(b));
+    CHECK(t.compare(a, b) == 0);
+    CHECK(t.stats().class_zero == 1);
+    CHECK(t.stats().exact_zero == 1);
+  }
+  SECTION("equal values, first atoms not declared equal: the exact stage proves the tie, classes join") {
+    const MedialGraph g = two_chains(2, 2, 1);
+    BurnTimes t(g);
+    const TimeId a = t.advance(t.ignition(0), 0);
+    const TimeId b = t.advance(t.ignition(2), 2);
+    CHECK(t.value_class(a) != t.value_class(b));
+    CHECK(t.compare(a, b) == 0);
+    CHECK(t.stats().class_zero == 0);
+    // The proved tie joins the classes: the next step of both chains ties by class.
+    const TimeId a2 = t.advance(a, 1), b2 = t.advance(b, 3);
+    CHECK(t.value_class(a2) == t.value_class(b2));
+    CHECK(t.compare(a2, b2) == 0);
+    CHECK(t.stats().class_zero == 1);
+  }
+  SECTION("a near-tie, sqrt 2 against sqrt(2 + 10^-30 scale), is not a class tie") {
+    // 2000000000000000000000000000001 / 10^30 > 2: the chains differ by about 3.5e-31.
+    const auto near = ExactSum::sqrt_of(make_rational(mpz_class("2000000000000000000000000000001"),
+                                                      mpz_class("1000000000000000000000000000000")));
+    std::vector<ExactSum> radii{ExactSum(), ExactSum(), ExactSum()};
+    std::vector<ExactSum> lengths{ExactSum::sqrt_of(2), near};
+    std::vector<MedialNode> nodes{{{0, 0}, Interval(0.0)}, {{1, 0}, Interval(0.0)}, {{2, 0}, Interval(0.0)}};
+    std::vector<MedialEdge> edges{{0, 1, EdgeKind::Segment, lengths[0].approx()},
+                                  {2, 1, EdgeKind::Segment, lengths[1].approx()}};
+    const MedialGraph g(std::move(nodes), std::move(edges),
+                        std::make_shared<ClassedGeometry>(radii, lengths, std::vector<std::uint32_t>{0, 1, 0},
+                                                          std::vector<std::uint32_t>{0, 1}));
+    BurnTimes t(g);
+    const TimeId a = t.advance(t.ignition(0), 0), b = t.advance(t.ignition(2), 1);
+    CHECK(t.compare(a, b) < 0);
+    CHECK(t.stats().class_zero == 0);
+  }
+  SECTION("the engine on twin chains equals the oracle") {
+    const MedialGraph g = two_chains(0, 0, 1);
+    const GrassfireResult r = extended_grassfire(g);
+    require_equal_to_definition(g, r, edf_by_definition(g));
+    CHECK(r.stats().class_zero >= 1);
+  }
+}
