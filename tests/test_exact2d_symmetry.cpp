@@ -154,7 +154,7 @@ TEST_CASE("burning a mirror-symmetric polygon: mirror ties proved by class, engi
   for (double phase : {0.0, 0.3}) {
     const Shape2 s = mirrored_wavy(160, phase);
     const MedialGraph g = exact_polygon_axis(s);
-    validate_polygon_axis(g);
+    REQUIRE(validate_polygon_axis(g).ok());
     const GrassfireResult r = extended_grassfire(g);
     INFO("phase " << phase);
     CHECK(r.stats().class_zero > 0);
@@ -248,4 +248,67 @@ TEST_CASE("burn times: equal classes tie without exact forms, distinct classes g
     require_equal_to_definition(g, r, edf_by_definition(g));
     CHECK(r.stats().class_zero >= 1);
   }
+}
+
+TEST_CASE("at most one circle: unique kinds, a point on a line, and two-root cases", "[symmetry][exact2d]") {
+  // Square 0..4 with a collinear vertex (2, 0): sites 0..4 points, 5..9 segments i -> i+1.
+  const PolygonSites s = make_sites(polygon({{0, 0}, {2, 0}, {4, 0}, {4, 4}, {0, 4}}), 1.0);
+  VoronoiCircle c;
+  c.kind = CircleKind::PPP;
+  c.sites = {0, 2, 3};
+  CHECK(at_most_one_circle(s, c));
+  c.kind = CircleKind::SSS;
+  c.sites = {5, 7, 8};
+  CHECK(at_most_one_circle(s, c));
+  c.kind = CircleKind::PSS;
+  c.sites = {1, 5, 8};  // (2, 0) lies on segment 0 -> 1: tangent there, one circle
+  CHECK(at_most_one_circle(s, c));
+  c.sites = {3, 5, 9};  // (4, 4) off both lines: two roots
+  CHECK(!at_most_one_circle(s, c));
+  c.kind = CircleKind::PPS;
+  c.sites = {1, 3, 8};  // (4, 4) on the line y = 4: one circle
+  CHECK(at_most_one_circle(s, c));
+  c.sites = {1, 2, 7};  // (4, 0) on the line x = 4: one circle
+  CHECK(at_most_one_circle(s, c));
+  c.sites = {1, 3, 9};  // (2, 0), (4, 4) against the line x = 0: two roots
+  CHECK(!at_most_one_circle(s, c));
+  c.sites = {0, 1, 8};  // (0, 0), (2, 0) against y = 4: two roots
+  CHECK(!at_most_one_circle(s, c));
+  c.kind = CircleKind::PSSParallel;
+  c.sites = {1, 5, 8};  // anti-parallel strip y = 0 .. y = 4, (2, 0) on y = 0
+  CHECK(at_most_one_circle(s, c));
+  c.sites = {1, 5, 6};  // same-direction lines (one line): not claimed
+  CHECK(!at_most_one_circle(s, c));
+}
+
+TEST_CASE("collinear vertices: their two circles are contracted by conditions, without exact forms", "[symmetry][exact2d]") {
+  PolygonAxisReport rep;
+  const MedialGraph g = exact_polygon_axis(polygon({{0, 0}, {2, 0}, {4, 0}, {4, 2}, {0, 2}}), {}, &rep);
+  CHECK(rep.contracted_edges >= 1);
+  CHECK(rep.contracted_by_conditions == rep.contracted_edges);
+  // A wavy polygon with collinear vertices: the midpoints of its even edges inserted.
+  const Shape2 base = mirrored_wavy(300, 0.3);
+  std::vector<Point2> ring;
+  const auto& p = base.rings[0].points;
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    const Point2 a = p[i], b = p[(i + 1) % p.size()];
+    ring.push_back(a);
+    if (std::fmod(b.x - a.x, 2.0) == 0 && std::fmod(b.y - a.y, 2.0) == 0) ring.push_back({(a.x + b.x) / 2, (a.y + b.y) / 2});
+  }
+  REQUIRE(ring.size() > p.size() + 20);
+  PolygonAxisReport wavy;
+  const MedialGraph w = exact_polygon_axis(polygon(ring), {}, &wavy);
+  CHECK(wavy.contracted_by_conditions > 0);
+  w.validate();
+  const AxisValidation v = validate_polygon_axis(w);
+  INFO((v.failures.empty() ? std::string() : v.failures.front()));
+  REQUIRE(v.ok());
+  const GrassfireResult r = extended_grassfire(w);
+  require_equal_to_definition(w, r, edf_by_definition(w));
+  // Circles that only overlap (no common conditions) still need the exact test: the square's
+  // centre, four lines, two SSS triples.
+  PolygonAxisReport square;
+  exact_polygon_axis(polygon({{0, 0}, {4, 0}, {4, 4}, {0, 4}}), {}, &square);
+  CHECK(square.contracted_edges == 1);
+  CHECK(square.contracted_by_conditions == 0);
 }

@@ -2,9 +2,11 @@
 #include "medial2/polygon_axis.h"
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <numeric>
+#include <optional>
 #include <stdexcept>
 #include <string>
 
@@ -88,6 +90,7 @@ class Builder {
 
   MedialGraph run() {
     solve_circles();
+    find_line_chains();
     contract();
     return assemble();
   }
@@ -103,10 +106,44 @@ class Builder {
       values_[i] = solve_interval(*sites_, circles_[i]);
       if (!is_tight(values_[i].x) || !is_tight(values_[i].y) || !is_tight(values_[i].r)) {
         ++report_.ball_refinements;
-        const CircleValue<Ball> b = solve_ball(*sites_, circles_[i]);
+        const CircleValue<Ball>& b = ball(i);
         values_[i] = {b.x.to_interval(), b.y.to_interval(), b.r.to_interval()};
       }
     }
+  }
+
+  // The circle of vertex i in Arb (default precision), computed once.
+  const CircleValue<Ball>& ball(std::uint32_t i) {
+    if (balls_.size() < circles_.size()) balls_.resize(circles_.size());
+    if (!balls_[i]) balls_[i] = solve_ball(*sites_, circles_[i]);
+    return *balls_[i];
+  }
+
+  // line_[s] for a segment site s: the first segment of the run of consecutive segments
+  // on one line (through collinear vertices, in one direction) that contains s; the
+  // segments of a run are one tangency condition (same line, same interior side).
+  void find_line_chains() {
+    const PolygonSites& s = *sites_;
+    const std::uint32_t n = s.vertex_count();
+    line_.resize(n);
+    auto continues = [&](std::uint32_t v) {  // segment prev[v] -> v goes straight on into v -> next[v]
+      const Point2 a = s.vertex[s.prev[v]], b = s.vertex[v], c = s.vertex[s.next[v]];
+      return orientation(a, b, c) == 0 && (b.x - a.x) * (c.x - b.x) + (b.y - a.y) * (c.y - b.y) > 0;
+    };
+    for (std::uint32_t i = 0; i < n; ++i) {
+      std::uint32_t start = i;
+      for (std::uint32_t steps = 0; steps < n && continues(start); ++steps) start = s.prev[start];
+      line_[i] = n + start;
+    }
+  }
+
+  // The conditions of a circle: its point sites and its segment sites' lines, sorted.
+  std::array<std::uint32_t, 3> conditions(std::uint32_t i) const {
+    std::array<std::uint32_t, 3> c = circles_[i].sites;
+    for (std::uint32_t& site : c)
+      if (!sites_->is_point(site)) site = line_[site - sites_->vertex_count()];
+    std::sort(c.begin(), c.end());
+    return c;
   }
 
   enum class Same { No, Certified, Uncertified };
@@ -116,6 +153,15 @@ class Builder {
     const CircleValue<Interval>& a = values_[i];
     const CircleValue<Interval>& b = values_[j];
     if (!overlap(a.x, b.x) || !overlap(a.y, b.y) || !overlap(a.r, b.r)) return Same::No;
+    // Two circles of one kind with the same conditions (typically the two sides of a
+    // collinear vertex: its two segments are one line), both with R > 0, are the same
+    // circle when those conditions have at most one solution (voronoi_circle.h).
+    const std::array<std::uint32_t, 3> ca = conditions(i);
+    if (circles_[i].kind == circles_[j].kind && ca == conditions(j) && ca[0] != ca[1] && ca[1] != ca[2] &&
+        a.r.lo > 0 && b.r.lo > 0 && at_most_one_circle(*sites_, circles_[i])) {
+      ++report_.contracted_by_conditions;
+      return Same::Certified;
+    }
     const auto ea = solve_exact(*sites_, circles_[i]);
     const auto eb = solve_exact(*sites_, circles_[j]);
     if (ea && eb) return sign(ea->x - eb->x) == 0 && sign(ea->y - eb->y) == 0 ? Same::Certified : Same::No;
@@ -206,9 +252,7 @@ class Builder {
       Interval len = edge_length(*sites_, a, values_[group_[ed.u]], values_[group_[ed.v]]);
       if (!is_tight(len)) {
         ++report_.ball_refinements;
-        const CircleValue<Ball> bu = solve_ball(*sites_, circles_[group_[ed.u]]);
-        const CircleValue<Ball> bv = solve_ball(*sites_, circles_[group_[ed.v]]);
-        len = edge_length(*sites_, a, bu, bv).to_interval();
+        len = edge_length(*sites_, a, ball(group_[ed.u]), ball(group_[ed.v])).to_interval();
       }
       report_.parabolic_arcs += a.parabolic;
       edges.push_back({a.u, a.v, a.parabolic ? EdgeKind::ParabolicArc : EdgeKind::Segment, len * scale});
@@ -239,6 +283,8 @@ class Builder {
   std::vector<bool> contracted_;
   std::vector<std::uint32_t> group_;
   std::vector<bool> aliasable_;  // by group root
+  std::vector<std::optional<CircleValue<Ball>>> balls_;
+  std::vector<std::uint32_t> line_;  // by vertex i: the line (run start) of segment n + i
 };
 
 }  // namespace

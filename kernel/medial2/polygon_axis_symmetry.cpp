@@ -7,7 +7,6 @@
 #include <unordered_map>
 #include <utility>
 
-#include "geometry2/predicates2.h"
 #include "medial2/union_find.h"
 
 namespace grassfire {
@@ -102,24 +101,14 @@ bool centres_apart(const CircleValue<Interval>& a, const CircleValue<Interval>& 
 // when a point site of c lies on the line of a segment site of c: a circle through P
 // tangent to a line through P touches it at P, its centre is on the normal there, and
 // the remaining condition (the other line, the other point, or the strip's width) is
-// linear in R: at most one circle (the two roots coincide).
-bool point_on_a_line(const PolygonSites& s, const VoronoiCircle& c) {
-  for (std::uint32_t p : c.sites)
-    for (std::uint32_t l : c.sites)
-      if (s.is_point(p) && !s.is_point(l) &&
-          orientation(s.vertex[s.seg_start(l)], s.vertex[s.seg_end(l)], s.vertex[p]) == 0)
-        return true;
-  return false;
-}
-
+// linear in R: at most one circle (voronoi_circle.h, at_most_one_circle).
 bool is_circle_of(const PolygonSites& s, const AxisNodeData& w, const VoronoiCircle& c) {
   if (!w.all_aliased || c.kind == CircleKind::Apex) return false;
   for (std::uint32_t site : c.sites)
     if (!std::binary_search(w.sites.begin(), w.sites.end(), site)) return false;
   const CircleValue<Interval> own = solve_interval(s, w.circle);
   if (!(own.r.lo > 0)) return false;
-  if (c.kind == CircleKind::PPP || c.kind == CircleKind::SSS || c.kind == CircleKind::PPSLinear) return true;
-  if (point_on_a_line(s, c)) return true;
+  if (at_most_one_circle(s, c)) return true;
   VoronoiCircle other = c;
   if (c.kind == CircleKind::PSSParallel)
     std::swap(other.sites[1], other.sites[2]);
