@@ -225,6 +225,7 @@ class Builder {
       if (node_of[root] == kNone) {
         node_of[root] = static_cast<std::uint32_t>(nodes.size());
         data.push_back({circles_[root], {}});
+        data.back().radius = topo_.vertices[root].apex ? Interval(0.0) : values_[root].r;
         const CircleValue<Interval>& v = values_[root];
         nodes.push_back({{v.x.mid() * scale_d, v.y.mid() * scale_d}, v.r * scale});
         if (topo_.vertices[root].apex) nodes.back().radius = 0.0;
@@ -254,6 +255,7 @@ class Builder {
         ++report_.ball_refinements;
         len = edge_length(*sites_, a, ball(group_[ed.u]), ball(group_[ed.v])).to_interval();
       }
+      a.length = len;
       report_.parabolic_arcs += a.parabolic;
       edges.push_back({a.u, a.v, a.parabolic ? EdgeKind::ParabolicArc : EdgeKind::Segment, len * scale});
       edata.push_back(a);

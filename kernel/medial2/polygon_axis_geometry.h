@@ -36,12 +36,14 @@ struct AxisNodeData {
   // centre and R exactly (polygon_axis.cpp); empty otherwise.
   std::vector<VoronoiCircle> aliases;
   bool all_aliased = true;  // every circle of the group is `circle` or in `aliases`
+  Interval radius;          // encloses R in the frame
 };
 
 struct AxisEdgeData {
   std::uint32_t u = 0, v = 0;        // node ids (as in the graph)
   std::uint32_t site_a = 0, site_b = 0;
   bool parabolic = false;            // focus = the point site, directrix = the segment's line
+  Interval length;                   // encloses the length in the frame
 };
 
 // Length of an edge from its end circles, in the frame (T = Interval or Ball).

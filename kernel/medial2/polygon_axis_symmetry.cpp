@@ -255,6 +255,7 @@ AxisValueClasses axis_value_classes(const PolygonSites& s, const std::vector<Axi
       }
     }
   }
+  unite_congruent_atoms(s, nodes, edges, node_uf, edge_uf);
   out.node.resize(n);
   out.edge.resize(m);
   for (std::uint32_t i = 0; i < n; ++i) out.node[i] = node_uf.find(i);

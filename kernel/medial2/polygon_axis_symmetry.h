@@ -1,6 +1,7 @@
-// polygon_axis_symmetry.h -- exact symmetries of a polygon and the value classes they
-// induce on its exact medial axis: nodes with provably equal R, edges with provably
-// equal lengths (burn2/burn_times.h cancels them without building exact forms).
+// polygon_axis_symmetry.h -- exact symmetries of a polygon, local congruences of its
+// site configurations, and the value classes they induce on its exact medial axis:
+// nodes with provably equal R, edges with provably equal lengths (burn2/burn_times.h
+// cancels them without building exact forms).
 //
 // Computes: (1) the isometries phi(X) = A X + t, A one of the seven non-identity signed
 // permutation matrices (the lattice symmetries: reflections in axis-parallel and
@@ -37,18 +38,33 @@
 // so it is one of the circles tangent to c's three sites, of which there is one (PPP,
 // SSS, PPS-linear, or a point site on a segment site's line) or two, c and the other
 // root, whose centre enclosure must then be disjoint from w's (is_circle_of).
+// (3) Local congruence (polygon_axis_congruence.cpp): the same equivariance, applied to
+// one atom at a time. The configuration behind R at a node is its circle's sites (points,
+// and segments as start -> end with the interior on the left) in roles; behind an edge's
+// length, its two end circles and, for an arc, its focus and directrix. Under each of the
+// eight signed permutations A the configuration is mapped (a reflection runs a segment
+// end -> start and maps roles and roots as above), put in the order its formula is
+// symmetric under (sorted by coordinates), and translated so that its smallest point is
+// the origin; the least of these is the atom's key. Equal keys mean an isometry
+// X -> A X + t maps one configuration onto the other, so the values are equal. Every
+// apex has R = 0 (one class). Generic smooth polygons with integer vertices have many
+// such local mirror images (three consecutive segments symmetric about the middle
+// one's bisector), whose burn times tie exactly; without the keys each tie would reach
+// the exact stage with transcendental or nested-radical constants.
 // Nothing here relies on the Voronoi topology being right: only on the formulas and on
 // exact predicates (contractions, orientation) and certified enclosures.
 // Contract: nodes and edges come from exact_polygon_axis on `sites`. Frames whose
 // coordinates are not all integers below 2^31 (the CGAL path on arbitrary doubles) get
 // no symmetries: every atom is then its own class.
-// Complexity: O(n) expected (hash maps) for n sites, nodes and edges.
+// Complexity: O(n) expected (hash maps) for n sites, nodes and edges (the keys: 8 maps
+// per node, 16 per edge, more for contracted groups).
 #pragma once
 
 #include <cstdint>
 #include <vector>
 
 #include "medial2/polygon_axis_geometry.h"
+#include "medial2/union_find.h"
 
 namespace grassfire {
 
@@ -72,6 +88,11 @@ struct AxisValueClasses {
   std::uint64_t unmapped_nodes = 0, unmapped_edges = 0;
 };
 
+// Unites congruent atoms (3): equal keys. Integer frames only (otherwise nothing).
+void unite_congruent_atoms(const PolygonSites& sites, const std::vector<AxisNodeData>& nodes,
+                           const std::vector<AxisEdgeData>& edges, UnionFind& node_uf, UnionFind& edge_uf);
+
+// Classes from (1) and (3) together (union-find: the transitive closure of proved equalities).
 AxisValueClasses axis_value_classes(const PolygonSites& sites, const std::vector<AxisNodeData>& nodes,
                                     const std::vector<AxisEdgeData>& edges);
 

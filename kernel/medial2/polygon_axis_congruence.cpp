@@ -1,0 +1,250 @@
+// polygon_axis_congruence.cpp -- local congruence classes of an exact polygon axis's atoms
+// (see polygon_axis_symmetry.h): canonical keys of the site configurations behind each
+// node's R and each edge's length, under the lattice isometries X -> A X + t.
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <unordered_map>
+#include <vector>
+
+#include "medial2/polygon_axis_symmetry.h"
+
+namespace grassfire {
+
+namespace {
+
+// The eight signed permutation matrices (the identity first).
+constexpr int kLinear[8][4] = {{1, 0, 0, 1},   {-1, 0, 0, 1}, {1, 0, 0, -1}, {-1, 0, 0, -1},
+                               {0, 1, 1, 0},   {0, -1, -1, 0}, {0, -1, 1, 0}, {0, 1, -1, 0}};
+
+// A point (kind 0: x, y) or a segment with the interior on its left (kind 1: start, end).
+struct Obj {
+  std::int64_t kind = 0;
+  std::array<std::int64_t, 4> c{};
+  bool operator<(const Obj& o) const { return kind != o.kind ? kind < o.kind : c < o.c; }
+};
+
+struct Image {
+  std::int64_t code = 0;  // kind and root
+  int count = 0;
+  std::array<Obj, 3> obj;
+};
+
+void apply(const int* a, std::int64_t x, std::int64_t y, std::int64_t* out) {
+  out[0] = a[0] * x + a[1] * y;
+  out[1] = a[2] * x + a[3] * y;
+}
+
+Obj transform_site(const PolygonSites& s, std::uint32_t site, const int* a) {
+  Obj o;
+  auto at = [&](std::uint32_t v, std::int64_t* out) {
+    apply(a, static_cast<std::int64_t>(s.vertex[v].x), static_cast<std::int64_t>(s.vertex[v].y), out);
+  };
+  if (s.is_point(site)) {
+    at(site, o.c.data());
+    return o;
+  }
+  o.kind = 1;
+  const bool reverses = a[0] * a[3] - a[1] * a[2] < 0;
+  // A reflection maps the segment start -> end to one with the interior on its right:
+  // the mapped polygon edge runs end -> start.
+  at(reverses ? s.seg_end(site) : s.seg_start(site), o.c.data());
+  at(reverses ? s.seg_start(site) : s.seg_end(site), o.c.data() + 2);
+  return o;
+}
+
+// The circle's configuration under A, roles mapped as in polygon_axis_symmetry.h and
+// then put in the order its formula is symmetric under (key_of there, by coordinates).
+Image transform_circle(const PolygonSites& s, const VoronoiCircle& c, const int* a) {
+  Image im;
+  int root = c.root;
+  im.count = c.kind == CircleKind::Apex ? 1 : 3;
+  for (int i = 0; i < im.count; ++i) im.obj[i] = transform_site(s, c.sites[i], a);
+  auto& o = im.obj;
+  if (a[0] * a[3] - a[1] * a[2] < 0) {
+    if (c.kind == CircleKind::PPS || c.kind == CircleKind::PPSLinear) std::swap(o[0], o[1]);
+    if (c.kind == CircleKind::PSSParallel) std::swap(o[1], o[2]);
+  }
+  switch (c.kind) {
+    case CircleKind::Apex: root = 0; break;
+    case CircleKind::PPP:
+    case CircleKind::SSS:
+      std::sort(o.begin(), o.end());
+      root = 0;
+      break;
+    case CircleKind::PSS:
+      if (o[2] < o[1]) std::swap(o[1], o[2]);
+      break;
+    case CircleKind::PPS:
+      if (o[1] < o[0]) {
+        std::swap(o[0], o[1]);
+        root = -root;
+      }
+      break;
+    case CircleKind::PPSLinear:
+      if (o[1] < o[0]) std::swap(o[0], o[1]);
+      root = 0;
+      break;
+    case CircleKind::PSSParallel: root = 0; break;
+  }
+  im.code = static_cast<std::int64_t>(c.kind) * 4 + root + 1;
+  return im;
+}
+
+// A flat key: objects translated so that the lexicographically smallest point is 0.
+struct KeyBuilder {
+  std::array<Obj, 8> obj;
+  std::array<std::int64_t, 4> codes{};
+  int objects = 0, ncodes = 0;
+  void add(const Image& im) {
+    codes[ncodes++] = im.code * 4 + im.count;
+    for (int i = 0; i < im.count; ++i) obj[objects++] = im.obj[i];
+  }
+  // The key: codes, then every object's kind and coordinates (at most 4 + 8 * 5 values).
+  struct Key {
+    std::array<std::int64_t, 44> v{};
+    int size = 0;
+    bool operator<(const Key& o) const {
+      return std::lexicographical_compare(v.begin(), v.begin() + size, o.v.begin(), o.v.begin() + o.size);
+    }
+    std::vector<std::int64_t> vec() const { return {v.begin(), v.begin() + size}; }
+  };
+  Key build() const {
+    std::int64_t mx = 0, my = 0;
+    bool first = true;
+    for (int i = 0; i < objects; ++i)
+      for (int p = 0; p < (obj[i].kind ? 2 : 1); ++p) {
+        const std::int64_t x = obj[i].c[2 * p], y = obj[i].c[2 * p + 1];
+        if (first || x < mx || (x == mx && y < my)) mx = x, my = y, first = false;
+      }
+    Key k;
+    for (int i = 0; i < ncodes; ++i) k.v[k.size++] = codes[i];
+    for (int i = 0; i < objects; ++i) {
+      k.v[k.size++] = obj[i].kind;
+      for (int p = 0; p < (obj[i].kind ? 2 : 1); ++p) {
+        k.v[k.size++] = obj[i].c[2 * p] - mx;
+        k.v[k.size++] = obj[i].c[2 * p + 1] - my;
+      }
+    }
+    return k;
+  }
+};
+
+struct KeyHash {
+  std::size_t operator()(const std::vector<std::int64_t>& v) const {
+    std::uint64_t h = 1469598103934665603ull;
+    for (std::int64_t x : v) h = (h ^ static_cast<std::uint64_t>(x)) * 1099511628211ull;
+    return static_cast<std::size_t>(h);
+  }
+};
+
+bool is_integer_frame(const PolygonSites& s) {
+  for (const Point2& p : s.vertex)
+    if (!(std::fabs(p.x) <= 2147483647.0 && p.x == std::floor(p.x) && std::fabs(p.y) <= 2147483647.0 &&
+          p.y == std::floor(p.y)))
+      return false;
+  return true;
+}
+
+template <class F>
+void for_each_circle(const AxisNodeData& d, F&& f) {
+  f(d.circle);
+  for (const VoronoiCircle& c : d.aliases) f(c);
+}
+
+// Atoms whose enclosure overlaps that of an atom of another class (only those can be
+// equal to an atom they are not yet joined with); the others keep their classes. The
+// scan looks at most kWindow neighbours in the order of lower bounds and marks an atom
+// as a candidate when the window is too crowded to tell.
+template <class Get>
+std::vector<bool> candidates(std::uint32_t count, Get enclosure, UnionFind& uf) {
+  constexpr std::uint32_t kWindow = 64;
+  std::vector<std::uint32_t> order(count);
+  for (std::uint32_t i = 0; i < count; ++i) order[i] = i;
+  std::sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) {
+    return enclosure(a).lo < enclosure(b).lo;
+  });
+  std::vector<bool> out(count, false);
+  for (std::uint32_t k = 0; k < count; ++k) {
+    const Interval& x = enclosure(order[k]);
+    std::uint32_t j = k + 1;
+    for (; j < count && j <= k + kWindow && enclosure(order[j]).lo <= x.hi; ++j)
+      if (uf.find(order[j]) != uf.find(order[k])) out[order[j]] = out[order[k]] = true;
+    if (j == k + kWindow + 1 && j < count && enclosure(order[j]).lo <= x.hi) out[order[k]] = true;
+  }
+  return out;
+}
+
+}  // namespace
+
+void unite_congruent_atoms(const PolygonSites& s, const std::vector<AxisNodeData>& nodes,
+                           const std::vector<AxisEdgeData>& edges, UnionFind& node_uf, UnionFind& edge_uf) {
+  if (!is_integer_frame(s)) return;
+  const auto n = static_cast<std::uint32_t>(nodes.size());
+  const auto m = static_cast<std::uint32_t>(edges.size());
+  // Every apex has R = 0.
+  std::uint32_t first_apex = n;
+  for (std::uint32_t i = 0; i < n; ++i)
+    if (nodes[i].circle.kind == CircleKind::Apex) {
+      if (first_apex == n) first_apex = i;
+      node_uf.unite(i, first_apex);
+    }
+  // The eight images of a node's circles, computed once per node that needs them.
+  std::vector<std::vector<Image>> images(n);
+  auto images_of = [&](std::uint32_t i) -> const std::vector<Image>& {
+    if (images[i].empty())
+      for (const auto& a : kLinear)
+        for_each_circle(nodes[i], [&](const VoronoiCircle& c) { images[i].push_back(transform_circle(s, c, a)); });
+    return images[i];
+  };
+  std::unordered_map<std::vector<std::int64_t>, std::uint32_t, KeyHash> seen;
+  const std::vector<bool> node_candidates = candidates(n, [&](std::uint32_t i) -> const Interval& { return nodes[i].radius; }, node_uf);
+  for (std::uint32_t i = 0; i < n; ++i) {
+    if (!node_candidates[i] || nodes[i].circle.kind == CircleKind::Apex) continue;
+    KeyBuilder::Key best;
+    for (const Image& im : images_of(i)) {
+      KeyBuilder k;
+      k.add(im);
+      const KeyBuilder::Key key = k.build();
+      if (best.size == 0 || key < best) best = key;
+    }
+    const auto [it, fresh] = seen.emplace(best.vec(), i);
+    if (!fresh) node_uf.unite(i, it->second);
+  }
+  seen.clear();
+  const std::vector<bool> edge_candidates = candidates(m, [&](std::uint32_t e) -> const Interval& { return edges[e].length; }, edge_uf);
+  for (std::uint32_t e = 0; e < m; ++e) {
+    if (!edge_candidates[e]) continue;
+    const AxisEdgeData& d = edges[e];
+    KeyBuilder::Key best;
+    // images_of(i) holds, for each of the eight maps in turn, one image per circle.
+    const std::vector<Image>& iu = images_of(d.u);
+    const std::vector<Image>& iv = images_of(d.v);
+    const std::size_t cu = iu.size() / 8, cv = iv.size() / 8;
+    for (int a = 0; a < 8; ++a) {
+      Obj focus, line;
+      if (d.parabolic) {
+        focus = transform_site(s, s.is_point(d.site_a) ? d.site_a : d.site_b, kLinear[a]);
+        line = transform_site(s, s.is_point(d.site_a) ? d.site_b : d.site_a, kLinear[a]);
+      }
+      for (int order = 0; order < 2; ++order)
+        for (std::size_t x = 0; x < cu; ++x)
+          for (std::size_t y = 0; y < cv; ++y) {
+            KeyBuilder k;
+            k.codes[k.ncodes++] = d.parabolic;
+            k.add(order ? iv[a * cv + y] : iu[a * cu + x]);
+            k.add(order ? iu[a * cu + x] : iv[a * cv + y]);
+            if (d.parabolic) {
+              k.obj[k.objects++] = focus;
+              k.obj[k.objects++] = line;
+            }
+            const KeyBuilder::Key key = k.build();
+            if (best.size == 0 || key < best) best = key;
+          }
+    }
+    const auto [it, fresh] = seen.emplace(best.vec(), e);
+    if (!fresh) edge_uf.unite(e, it->second);
+  }
+}
+
+}  // namespace grassfire
