@@ -17,11 +17,20 @@ namespace {
 constexpr int kLinear[8][4] = {{1, 0, 0, 1},   {-1, 0, 0, 1}, {1, 0, 0, -1}, {-1, 0, 0, -1},
                                {0, 1, 1, 0},   {0, -1, -1, 0}, {0, -1, 1, 0}, {0, 1, -1, 0}};
 
-// A point (kind 0: x, y) or a segment with the interior on its left (kind 1: start, end).
+// A point site (kind 0: a = x, y) or a segment site's line, oriented with the interior on
+// its left (kind 1: a = the primitive direction dx, dy and k = cross(d, p) for a point p
+// of it; p is kept for translating). Values depend on lines only, not on where a segment
+// ends, so two runs of one line are one object.
 struct Obj {
   std::int64_t kind = 0;
-  std::array<std::int64_t, 4> c{};
-  bool operator<(const Obj& o) const { return kind != o.kind ? kind < o.kind : c < o.c; }
+  std::array<std::int64_t, 2> a{};
+  __int128 k = 0;
+  std::int64_t px = 0, py = 0, qx = 0, qy = 0;  // the segment's ends (a point: px, py)
+  bool operator<(const Obj& o) const {
+    if (kind != o.kind) return kind < o.kind;
+    if (a != o.a) return a < o.a;
+    return k < o.k;
+  }
 };
 
 struct Image {
@@ -35,27 +44,48 @@ void apply(const int* a, std::int64_t x, std::int64_t y, std::int64_t* out) {
   out[1] = a[2] * x + a[3] * y;
 }
 
+std::int64_t gcd64(std::int64_t a, std::int64_t b) {
+  a = a < 0 ? -a : a;
+  b = b < 0 ? -b : b;
+  while (b != 0) {
+    const std::int64_t t = a % b;
+    a = b;
+    b = t;
+  }
+  return a;
+}
+
 Obj transform_site(const PolygonSites& s, std::uint32_t site, const int* a) {
   Obj o;
   auto at = [&](std::uint32_t v, std::int64_t* out) {
     apply(a, static_cast<std::int64_t>(s.vertex[v].x), static_cast<std::int64_t>(s.vertex[v].y), out);
   };
+  std::int64_t p[2], q[2];
   if (s.is_point(site)) {
-    at(site, o.c.data());
+    at(site, p);
+    o.a = {p[0], p[1]};
+    o.px = p[0], o.py = p[1];
     return o;
   }
   o.kind = 1;
-  const bool reverses = a[0] * a[3] - a[1] * a[2] < 0;
   // A reflection maps the segment start -> end to one with the interior on its right:
   // the mapped polygon edge runs end -> start.
-  at(reverses ? s.seg_end(site) : s.seg_start(site), o.c.data());
-  at(reverses ? s.seg_start(site) : s.seg_end(site), o.c.data() + 2);
+  const bool reverses = a[0] * a[3] - a[1] * a[2] < 0;
+  at(reverses ? s.seg_end(site) : s.seg_start(site), p);
+  at(reverses ? s.seg_start(site) : s.seg_end(site), q);
+  const std::int64_t dx = q[0] - p[0], dy = q[1] - p[1], g = gcd64(dx, dy);
+  o.a = {dx / g, dy / g};
+  o.k = static_cast<__int128>(o.a[0]) * p[1] - static_cast<__int128>(o.a[1]) * p[0];
+  o.px = p[0], o.py = p[1], o.qx = q[0], o.qy = q[1];
   return o;
 }
 
 // The circle's configuration under A, roles mapped as in polygon_axis_symmetry.h and
 // then put in the order its formula is symmetric under (key_of there, by coordinates).
-Image transform_circle(const PolygonSites& s, const VoronoiCircle& c, const int* a) {
+// When at most one circle satisfies c's conditions (voronoi_circle.h), the root is no
+// part of its value (the two roots coincide), so it is dropped and the symmetric roles
+// are sorted.
+Image transform_circle(const PolygonSites& s, const VoronoiCircle& c, const int* a, bool unique) {
   Image im;
   int root = c.root;
   im.count = c.kind == CircleKind::Apex ? 1 : 3;
@@ -85,8 +115,12 @@ Image transform_circle(const PolygonSites& s, const VoronoiCircle& c, const int*
       if (o[1] < o[0]) std::swap(o[0], o[1]);
       root = 0;
       break;
-    case CircleKind::PSSParallel: root = 0; break;
+    case CircleKind::PSSParallel:
+      if (unique && o[2] < o[1]) std::swap(o[1], o[2]);
+      root = 0;
+      break;
   }
+  if (unique) root = 0;
   im.code = static_cast<std::int64_t>(c.kind) * 4 + root + 1;
   return im;
 }
@@ -102,28 +136,47 @@ struct KeyBuilder {
   }
   // The key: codes, then every object's kind and coordinates (at most 4 + 8 * 5 values).
   struct Key {
-    std::array<std::int64_t, 44> v{};
+    std::array<std::int64_t, 48> v{};
     int size = 0;
     bool operator<(const Key& o) const {
       return std::lexicographical_compare(v.begin(), v.begin() + size, o.v.begin(), o.v.begin() + o.size);
     }
     std::vector<std::int64_t> vec() const { return {v.begin(), v.begin() + size}; }
   };
+  // Translated so that the least point site is the origin (the least segment end when
+  // there is no point site).
   Key build() const {
     std::int64_t mx = 0, my = 0;
-    bool first = true;
-    for (int i = 0; i < objects; ++i)
-      for (int p = 0; p < (obj[i].kind ? 2 : 1); ++p) {
-        const std::int64_t x = obj[i].c[2 * p], y = obj[i].c[2 * p + 1];
-        if (first || x < mx || (x == mx && y < my)) mx = x, my = y, first = false;
+    bool found = false;
+    auto consider = [&](std::int64_t x, std::int64_t y) {
+      if (!found || x < mx || (x == mx && y < my)) mx = x, my = y;
+      found = true;
+    };
+    bool has_point = false;
+    for (int i = 0; i < objects; ++i) has_point = has_point || obj[i].kind == 0;
+    for (int i = 0; i < objects; ++i) {
+      if (obj[i].kind == 0) {
+        consider(obj[i].px, obj[i].py);
+      } else if (!has_point) {
+        consider(obj[i].px, obj[i].py);
+        consider(obj[i].qx, obj[i].qy);
       }
+    }
     Key k;
     for (int i = 0; i < ncodes; ++i) k.v[k.size++] = codes[i];
     for (int i = 0; i < objects; ++i) {
-      k.v[k.size++] = obj[i].kind;
-      for (int p = 0; p < (obj[i].kind ? 2 : 1); ++p) {
-        k.v[k.size++] = obj[i].c[2 * p] - mx;
-        k.v[k.size++] = obj[i].c[2 * p + 1] - my;
+      const Obj& o = obj[i];
+      k.v[k.size++] = o.kind;
+      if (o.kind == 0) {
+        k.v[k.size++] = o.a[0] - mx;
+        k.v[k.size++] = o.a[1] - my;
+      } else {
+        // cross(d, p - m) = k - cross(d, m)
+        const __int128 c = o.k - (static_cast<__int128>(o.a[0]) * my - static_cast<__int128>(o.a[1]) * mx);
+        k.v[k.size++] = o.a[0];
+        k.v[k.size++] = o.a[1];
+        k.v[k.size++] = static_cast<std::int64_t>(c >> 64);
+        k.v[k.size++] = static_cast<std::int64_t>(static_cast<std::uint64_t>(c));
       }
     }
     return k;
@@ -192,9 +245,21 @@ void unite_congruent_atoms(const PolygonSites& s, const std::vector<AxisNodeData
   // The eight images of a node's circles, computed once per node that needs them.
   std::vector<std::vector<Image>> images(n);
   auto images_of = [&](std::uint32_t i) -> const std::vector<Image>& {
-    if (images[i].empty())
-      for (const auto& a : kLinear)
-        for_each_circle(nodes[i], [&](const VoronoiCircle& c) { images[i].push_back(transform_circle(s, c, a)); });
+    if (images[i].empty()) {
+      std::array<bool, 8> unique{};
+      std::size_t count = 0;
+      for_each_circle(nodes[i], [&](const VoronoiCircle& c) {
+        if (count < unique.size()) unique[count] = at_most_one_circle(s, c);
+        ++count;
+      });
+      for (const auto& a : kLinear) {
+        std::size_t j = 0;
+        for_each_circle(nodes[i], [&](const VoronoiCircle& c) {
+          images[i].push_back(transform_circle(s, c, a, j < unique.size() && unique[j]));
+          ++j;
+        });
+      }
+    }
     return images[i];
   };
   std::unordered_map<std::vector<std::int64_t>, std::uint32_t, KeyHash> seen;

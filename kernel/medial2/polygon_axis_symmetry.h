@@ -39,15 +39,19 @@
 // SSS, PPS-linear, or a point site on a segment site's line) or two, c and the other
 // root, whose centre enclosure must then be disjoint from w's (is_circle_of).
 // (3) Local congruence (polygon_axis_congruence.cpp): the same equivariance, applied to
-// one atom at a time. The configuration behind R at a node is its circle's sites (points,
-// and segments as start -> end with the interior on the left) in roles; behind an edge's
-// length, its two end circles and, for an arc, its focus and directrix. Under each of the
-// eight signed permutations A the configuration is mapped (a reflection runs a segment
-// end -> start and maps roles and roots as above), put in the order its formula is
-// symmetric under (sorted by coordinates), and translated so that its smallest point is
-// the origin; the least of these is the atom's key. Equal keys mean an isometry
-// X -> A X + t maps one configuration onto the other, so the values are equal. Every
-// apex has R = 0 (one class). Generic smooth polygons with integer vertices have many
+// one atom at a time. The configuration behind R at a node is its circle's sites in
+// roles: points, and segment sites as their lines oriented with the interior on the left
+// (primitive direction d and cross(d, p) for a point p of the line; the values depend on
+// the lines only, so the segments of one straight run are one line); behind an edge's
+// length, its two end circles (any of a contracted group's aliases) and, for an arc, its
+// focus and directrix. Under each of the eight signed permutations A the configuration is
+// mapped (a reflection runs a segment end -> start and maps roles and roots as above),
+// put in the order its formula is symmetric under (by coordinates; the root is dropped
+// and the roles sorted when at most one circle meets the conditions, voronoi_circle.h),
+// and translated so that its least point site (least segment end if none) is the origin;
+// the least of these is the atom's key. Equal keys mean an isometry X -> A X + t maps
+// one configuration onto the other, so the values are equal. Every apex has R = 0 (one
+// class). Only atoms whose enclosure overlaps one of another class get a key. Generic smooth polygons with integer vertices have many
 // such local mirror images (three consecutive segments symmetric about the middle
 // one's bisector), whose burn times tie exactly; without the keys each tie would reach
 // the exact stage with transcendental or nested-radical constants.
