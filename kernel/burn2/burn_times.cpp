@@ -132,10 +132,18 @@ std::uint32_t BurnTimes::value_class(TimeId t) const {
   const MedialGeometry& geo = graph_->geometry();
   for (auto it = scratch_.rbegin(); it != scratch_.rend(); ++it) {
     const Record& r = records_[*it];
-    // An ignition's key has 0xffffffff in the high word, which no class id reaches.
-    const std::uint64_t key = r.pred == kNoTime
-                                  ? (std::uint64_t{0xffffffffu} << 32) | geo.radius_class(r.ref)
+    // An ignition's key has 0xffffffff in the high word, which no class id reaches. An
+    // advance that continues its predecessor's edge along one curve (through a degree-2
+    // node) is keyed as one step from the predecessor's predecessor with the joined length.
+    std::uint64_t key;
+    if (r.pred == kNoTime) {
+      key = (std::uint64_t{0xffffffffu} << 32) | geo.radius_class(r.ref);
+    } else {
+      const Record& p = records_[r.pred];
+      const std::uint32_t joined = p.pred == kNoTime ? 0xffffffffu : geo.joined_length_class(p.ref, r.ref);
+      key = joined != 0xffffffffu ? (std::uint64_t{find_class(class_[p.pred])} << 32) | joined
                                   : (std::uint64_t{find_class(class_[r.pred])} << 32) | geo.length_class(r.ref);
+    }
     const auto [pos, fresh] = class_of_step_.emplace(key, static_cast<std::uint32_t>(class_parent_.size()));
     if (fresh) class_parent_.push_back(pos->second);
     class_[*it] = pos->second;

@@ -7,6 +7,7 @@
 #include <unordered_map>
 #include <vector>
 
+#include "geometry2/predicates2.h"
 #include "medial2/polygon_axis_symmetry.h"
 
 namespace grassfire {
@@ -228,10 +229,57 @@ std::vector<bool> candidates(std::uint32_t count, Get enclosure, UnionFind& uf) 
   return out;
 }
 
+// For every site: itself for a point, the first segment of its straight run for a
+// segment (through vertices where the boundary goes straight on).
+std::vector<std::uint32_t> conditions_of_sites(const PolygonSites& s) {
+  const std::uint32_t n = s.vertex_count();
+  std::vector<std::uint32_t> out(2 * n);
+  auto straight = [&](std::uint32_t v) {
+    const Point2 a = s.vertex[s.prev[v]], b = s.vertex[v], c = s.vertex[s.next[v]];
+    return orientation(a, b, c) == 0 && (b.x - a.x) * (c.x - b.x) + (b.y - a.y) * (c.y - b.y) > 0;
+  };
+  for (std::uint32_t i = 0; i < n; ++i) {
+    out[i] = i;
+    std::uint32_t start = i;
+    for (std::uint32_t steps = 0; steps < n && straight(start); ++steps) start = s.prev[start];
+    out[n + i] = n + start;
+  }
+  return out;
+}
+
 }  // namespace
 
+std::vector<JoinedEdges> joinable_edges(const PolygonSites& s, const std::vector<AxisNodeData>& nodes,
+                                        const std::vector<AxisEdgeData>& edges) {
+  std::vector<JoinedEdges> out;
+  if (!is_integer_frame(s)) return out;
+  const std::vector<std::uint32_t> cond = conditions_of_sites(s);
+  std::vector<std::uint32_t> degree(nodes.size(), 0), first(nodes.size(), 0), second(nodes.size(), 0);
+  for (std::uint32_t e = 0; e < edges.size(); ++e)
+    for (std::uint32_t v : {edges[e].u, edges[e].v}) {
+      if (degree[v] == 0) first[v] = e;
+      if (degree[v] == 1) second[v] = e;
+      ++degree[v];
+    }
+  auto pair_of = [&](const AxisEdgeData& d) {
+    const std::uint32_t a = cond[d.site_a], b = cond[d.site_b];
+    return std::make_pair(std::min(a, b), std::max(a, b));
+  };
+  for (std::uint32_t v = 0; v < nodes.size(); ++v) {
+    if (degree[v] != 2 || nodes[v].circle.kind == CircleKind::Apex) continue;
+    const AxisEdgeData &a = edges[first[v]], &b = edges[second[v]];
+    if (a.parabolic != b.parabolic || pair_of(a) != pair_of(b) || a.u == a.v || b.u == b.v) continue;
+    // Both far ends differ from v and from each other: a path, not a loop.
+    const std::uint32_t fa = a.u == v ? a.v : a.u, fb = b.u == v ? b.v : b.u;
+    if (fa == fb) continue;
+    out.push_back({first[v], second[v], v});
+  }
+  return out;
+}
+
 void unite_congruent_atoms(const PolygonSites& s, const std::vector<AxisNodeData>& nodes,
-                           const std::vector<AxisEdgeData>& edges, UnionFind& node_uf, UnionFind& edge_uf) {
+                           const std::vector<AxisEdgeData>& edges, const std::vector<JoinedEdges>& joined,
+                           UnionFind& node_uf, UnionFind& edge_uf) {
   if (!is_integer_frame(s)) return;
   const auto n = static_cast<std::uint32_t>(nodes.size());
   const auto m = static_cast<std::uint32_t>(edges.size());
@@ -277,10 +325,21 @@ void unite_congruent_atoms(const PolygonSites& s, const std::vector<AxisNodeData
     if (!fresh) node_uf.unite(i, it->second);
   }
   seen.clear();
-  const std::vector<bool> edge_candidates = candidates(m, [&](std::uint32_t e) -> const Interval& { return edges[e].length; }, edge_uf);
-  for (std::uint32_t e = 0; e < m; ++e) {
+  // Edges, then the joined pairs as edges from the first's far end to the second's.
+  const auto total = static_cast<std::uint32_t>(m + joined.size());
+  std::vector<AxisEdgeData> items(edges);
+  for (const JoinedEdges& j : joined) {
+    AxisEdgeData d = edges[j.first];
+    d.u = d.u == j.middle ? d.v : d.u;
+    d.v = edges[j.second].u == j.middle ? edges[j.second].v : edges[j.second].u;
+    d.length = edges[j.first].length + edges[j.second].length;
+    items.push_back(d);
+  }
+  const std::vector<bool> edge_candidates =
+      candidates(total, [&](std::uint32_t e) -> const Interval& { return items[e].length; }, edge_uf);
+  for (std::uint32_t e = 0; e < total; ++e) {
     if (!edge_candidates[e]) continue;
-    const AxisEdgeData& d = edges[e];
+    const AxisEdgeData& d = items[e];
     KeyBuilder::Key best;
     // images_of(i) holds, for each of the eight maps in turn, one image per circle.
     const std::vector<Image>& iu = images_of(d.u);

@@ -144,6 +144,11 @@ const AxisValueClasses& PolygonAxisGeometry::value_classes() const {
 
 std::uint32_t PolygonAxisGeometry::radius_class(std::uint32_t node) const { return value_classes().node[node]; }
 std::uint32_t PolygonAxisGeometry::length_class(std::uint32_t edge) const { return value_classes().edge[edge]; }
+std::uint32_t PolygonAxisGeometry::joined_length_class(std::uint32_t first, std::uint32_t second) const {
+  const AxisValueClasses& c = value_classes();
+  const auto it = c.joined.find(joined_key(first, second));
+  return it == c.joined.end() ? 0xffffffffu : it->second;
+}
 
 const CircleValue<Ball>& PolygonAxisGeometry::ball_circle(std::uint32_t i) const {
   if (!ball_circles_[i]) {

@@ -71,6 +71,7 @@ class PolygonAxisGeometry : public MedialGeometry {
   // (medial2/polygon_axis_symmetry.h), computed on the first call.
   std::uint32_t radius_class(std::uint32_t node) const override;
   std::uint32_t length_class(std::uint32_t edge) const override;
+  std::uint32_t joined_length_class(std::uint32_t first, std::uint32_t second) const override;
   const AxisValueClasses& value_classes() const;
   Point2 point_along(const MedialGraph& g, std::uint32_t edge, std::uint32_t from, double s) const override;
   std::vector<Point2> polyline(const MedialGraph& g, std::uint32_t edge) const override;

@@ -195,7 +195,8 @@ AxisValueClasses axis_value_classes(const PolygonSites& s, const std::vector<Axi
   AxisValueClasses out;
   const auto n = static_cast<std::uint32_t>(nodes.size());
   const auto m = static_cast<std::uint32_t>(edges.size());
-  UnionFind node_uf(n), edge_uf(m);
+  const std::vector<JoinedEdges> joined = joinable_edges(s, nodes, edges);
+  UnionFind node_uf(n), edge_uf(m + joined.size());
   const std::vector<PolygonSymmetry> symmetries = polygon_symmetries(s);
   out.symmetries = static_cast<std::uint32_t>(symmetries.size());
   if (!symmetries.empty()) {
@@ -255,7 +256,10 @@ AxisValueClasses axis_value_classes(const PolygonSites& s, const std::vector<Axi
       }
     }
   }
-  unite_congruent_atoms(s, nodes, edges, node_uf, edge_uf);
+  unite_congruent_atoms(s, nodes, edges, joined, node_uf, edge_uf);
+  for (std::size_t k = 0; k < joined.size(); ++k)
+    out.joined.emplace(joined_key(joined[k].first, joined[k].second),
+                       edge_uf.find(static_cast<std::uint32_t>(m + k)));
   out.node.resize(n);
   out.edge.resize(m);
   for (std::uint32_t i = 0; i < n; ++i) out.node[i] = node_uf.find(i);

@@ -65,6 +65,8 @@
 #pragma once
 
 #include <cstdint>
+#include <algorithm>
+#include <unordered_map>
 #include <vector>
 
 #include "medial2/polygon_axis_geometry.h"
@@ -90,11 +92,32 @@ struct AxisValueClasses {
   // Over all symmetries: nodes and edges whose image was not found (their classes miss
   // that member; values stay exact either way, the engine then builds exact forms).
   std::uint64_t unmapped_nodes = 0, unmapped_edges = 0;
+  // Pairs of edges that meet at a degree-2 node and separate the same two conditions (a
+  // point or a line; the segments of one straight run are one line): pieces of one
+  // bisector, e.g. split where a collinear vertex's normal meets it. Their summed length
+  // is the length of the curve between their far ends, which gets a key like an edge's;
+  // by joined_key(e1, e2), the class of the sum (in the edge classes' id space).
+  std::unordered_map<std::uint64_t, std::uint32_t> joined;
 };
 
+inline std::uint64_t joined_key(std::uint32_t a, std::uint32_t b) {
+  return (std::uint64_t{std::min(a, b)} << 32) | std::max(a, b);
+}
+
+// A bisector run through a degree-2 node: edges `first` and `second` meeting at `middle`.
+struct JoinedEdges {
+  std::uint32_t first = 0, second = 0, middle = 0;
+};
+
+// The joinable pairs (see AxisValueClasses::joined).
+std::vector<JoinedEdges> joinable_edges(const PolygonSites& sites, const std::vector<AxisNodeData>& nodes,
+                                        const std::vector<AxisEdgeData>& edges);
+
 // Unites congruent atoms (3): equal keys. Integer frames only (otherwise nothing).
+// edge_uf has one element per edge and then one per joined pair (in `joined` order).
 void unite_congruent_atoms(const PolygonSites& sites, const std::vector<AxisNodeData>& nodes,
-                           const std::vector<AxisEdgeData>& edges, UnionFind& node_uf, UnionFind& edge_uf);
+                           const std::vector<AxisEdgeData>& edges, const std::vector<JoinedEdges>& joined,
+                           UnionFind& node_uf, UnionFind& edge_uf);
 
 // Classes from (1) and (3) together (union-find: the transitive closure of proved equalities).
 AxisValueClasses axis_value_classes(const PolygonSites& sites, const std::vector<AxisNodeData>& nodes,
