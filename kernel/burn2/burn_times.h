@@ -13,8 +13,10 @@
 // polygon axis, the atoms an exact symmetry of the polygon maps onto each other:
 // medial2/polygon_axis_symmetry.h). A record's class is hash-consed from its chain: an
 // ignition's class from the radius class of its leaf, an advance's from (class of its
-// predecessor, length class of its edge); by induction on the chain, records of equal
-// class have equal values, so mirror chains of a symmetric shape, which share no
+// predecessor, length class of its edge), or from (class of its predecessor's
+// predecessor, joined length class) when the two edges are pieces of one curve through a
+// degree-2 node (MedialGeometry::joined_length_class); by induction on the chain, records
+// of equal class have equal values, so mirror chains of a symmetric shape, which share no
 // ancestor, tie in O(1) (amortised; classes are computed on demand and memoised). Ties
 // proved exactly by stage (4) join their classes (union-find), so later ties between
 // their descendants are found here too; a zero that is not certified (exact_sum.h) joins

@@ -12,6 +12,7 @@
 
 #include "geometry2/predicates2.h"
 #include "medial2/polygon_axis_geometry.h"
+#include "medial2/polygon_axis_symmetry.h"
 #include "medial2/segment_voronoi.h"
 #include "medial2/voronoi_circle.h"
 #include "medial2/union_find.h"
@@ -90,7 +91,7 @@ class Builder {
 
   MedialGraph run() {
     solve_circles();
-    find_line_chains();
+    conditions_ = conditions_of_sites(*sites_);
     contract();
     return assemble();
   }
@@ -119,29 +120,12 @@ class Builder {
     return *balls_[i];
   }
 
-  // line_[s] for a segment site s: the first segment of the run of consecutive segments
-  // on one line (through collinear vertices, in one direction) that contains s; the
-  // segments of a run are one tangency condition (same line, same interior side).
-  void find_line_chains() {
-    const PolygonSites& s = *sites_;
-    const std::uint32_t n = s.vertex_count();
-    line_.resize(n);
-    auto continues = [&](std::uint32_t v) {  // segment prev[v] -> v goes straight on into v -> next[v]
-      const Point2 a = s.vertex[s.prev[v]], b = s.vertex[v], c = s.vertex[s.next[v]];
-      return orientation(a, b, c) == 0 && (b.x - a.x) * (c.x - b.x) + (b.y - a.y) * (c.y - b.y) > 0;
-    };
-    for (std::uint32_t i = 0; i < n; ++i) {
-      std::uint32_t start = i;
-      for (std::uint32_t steps = 0; steps < n && continues(start); ++steps) start = s.prev[start];
-      line_[i] = n + start;
-    }
-  }
-
-  // The conditions of a circle: its point sites and its segment sites' lines, sorted.
+  // The conditions of a circle: its point sites and its segment sites' lines (straight
+  // runs), sorted.
   std::array<std::uint32_t, 3> conditions(std::uint32_t i) const {
     std::array<std::uint32_t, 3> c = circles_[i].sites;
     for (std::uint32_t& site : c)
-      if (!sites_->is_point(site)) site = line_[site - sites_->vertex_count()];
+      site = conditions_[site];
     std::sort(c.begin(), c.end());
     return c;
   }
@@ -286,7 +270,7 @@ class Builder {
   std::vector<std::uint32_t> group_;
   std::vector<bool> aliasable_;  // by group root
   std::vector<std::optional<CircleValue<Ball>>> balls_;
-  std::vector<std::uint32_t> line_;  // by vertex i: the line (run start) of segment n + i
+  std::vector<std::uint32_t> conditions_;  // by site: conditions_of_sites
 };
 
 }  // namespace

@@ -229,8 +229,8 @@ std::vector<bool> candidates(std::uint32_t count, Get enclosure, UnionFind& uf) 
   return out;
 }
 
-// For every site: itself for a point, the first segment of its straight run for a
-// segment (through vertices where the boundary goes straight on).
+}  // namespace
+
 std::vector<std::uint32_t> conditions_of_sites(const PolygonSites& s) {
   const std::uint32_t n = s.vertex_count();
   std::vector<std::uint32_t> out(2 * n);
@@ -246,8 +246,6 @@ std::vector<std::uint32_t> conditions_of_sites(const PolygonSites& s) {
   }
   return out;
 }
-
-}  // namespace
 
 std::vector<JoinedEdges> joinable_edges(const PolygonSites& s, const std::vector<AxisNodeData>& nodes,
                                         const std::vector<AxisEdgeData>& edges) {

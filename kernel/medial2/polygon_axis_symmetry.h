@@ -109,6 +109,11 @@ struct JoinedEdges {
   std::uint32_t first = 0, second = 0, middle = 0;
 };
 
+// For every site id: itself for a point site; for a segment site, the first segment of
+// the straight run it lies in (consecutive segments through vertices where the boundary
+// goes straight on): one line, one tangency condition.
+std::vector<std::uint32_t> conditions_of_sites(const PolygonSites& sites);
+
 // The joinable pairs (see AxisValueClasses::joined).
 std::vector<JoinedEdges> joinable_edges(const PolygonSites& sites, const std::vector<AxisNodeData>& nodes,
                                         const std::vector<AxisEdgeData>& edges);
