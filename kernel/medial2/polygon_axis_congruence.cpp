@@ -298,6 +298,7 @@ void unite_congruent_atoms(const PolygonSites& s, const std::vector<AxisNodeData
         if (count < unique.size()) unique[count] = at_most_one_circle(s, c);
         ++count;
       });
+      images[i].reserve(8 * count);
       for (const auto& a : kLinear) {
         std::size_t j = 0;
         for_each_circle(nodes[i], [&](const VoronoiCircle& c) {
