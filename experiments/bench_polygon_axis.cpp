@@ -1,15 +1,23 @@
 // bench_polygon_axis -- the exact polygon axis (+ EDF) against bare Boost.Polygon
 // construct_voronoi and bare CGAL Segment_Delaunay_graph_2 on the same polygon.
 //
-// Input: a smooth closed polygon, the wavy circle r(t) = 10^6 (1 + 0.1 sin 7t) with
-// integer vertices (exact on a decimal grid, so the Boost path runs), at 10^3, 10^4,
-// 10^5 segments. Each size runs: Boost alone; CGAL SDG alone (bulk insert_segments,
-// filtered traits without intersections) unless --max-cgal is below the size; the exact
-// axis (polygon_axis.h); the exact axis plus the extended grassfire (extended_grassfire.h).
-// Output (stdout): CSV segments,boost_s,cgal_sdg_s,axis_s,axis_plus_edf_s,ratio_to_boost,
-// peak_mem_mb; ratio_to_boost = axis_plus_edf_s / boost_s; an empty cgal_sdg_s means
-// skipped; peak_mem_mb is the process's peak resident size after the row.
-// Usage: bench_polygon_axis [--sizes 1000,10000,100000] [--max-cgal N]
+// Input: smooth closed polygons with integer vertices (exact on a decimal grid, so the
+// Boost path runs), at 10^3, 10^4, 10^5 segments, in two variants per size: the wavy
+// circle r(t) = 10^6 (1 + 0.1 sin 7t), which is mirror-symmetric in x = 0 (integer
+// rounding keeps the symmetry: thousands of exactly equal burn times, proved by value
+// classes, burn2/burn_times.h), and the phase-shifted r(t) = 10^6 (1 + 0.1 sin(7t + 0.3)),
+// which has no symmetry (generic input). Each row runs: Boost alone; CGAL SDG alone (bulk
+// insert_segments, filtered traits without intersections) unless --max-cgal is below the
+// size; the exact axis (polygon_axis.h); the exact axis plus the extended grassfire
+// (extended_grassfire.h).
+// Output (stdout): CSV segments,shape,boost_s,cgal_sdg_s,axis_s,axis_plus_edf_s,
+// axis_ratio,ratio_to_boost,peak_mem_mb; shape is "symmetric" or "shifted";
+// axis_ratio = axis_s / boost_s, ratio_to_boost = axis_plus_edf_s / boost_s; an empty
+// cgal_sdg_s means skipped; peak_mem_mb is the process's peak resident size after the
+// row. Each time is the best of --repeat runs (default 1). stderr: the axis report (where
+// its time goes, contractions, Arb refinements), the engine's comparison counts and the
+// value classes.
+// Usage: bench_polygon_axis [--sizes 1000,10000,100000] [--max-cgal N] [--repeat K]
 #include <CGAL/Segment_Delaunay_graph_2.h>
 #include <CGAL/Segment_Delaunay_graph_filtered_traits_2.h>
 #include <CGAL/Simple_cartesian.h>
@@ -18,7 +26,10 @@
 #include <boost/polygon/point_data.hpp>
 #include <boost/polygon/segment_data.hpp>
 #include <boost/polygon/voronoi.hpp>
+#include <algorithm>
 #include <chrono>
+#include <memory>
+#include <utility>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -28,6 +39,8 @@
 
 #include "burn2/extended_grassfire.h"
 #include "medial2/polygon_axis.h"
+#include "medial2/polygon_axis_geometry.h"
+#include "medial2/polygon_axis_symmetry.h"
 
 using namespace grassfire;
 
@@ -35,12 +48,12 @@ namespace {
 
 double now() { return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count(); }
 
-Shape2 wavy_circle(int n) {
+Shape2 wavy_circle(int n, double phase) {
   Shape2 s;
   s.name = "wavy circle " + std::to_string(n);
   Ring r;
   for (int k = 0; k < n; ++k) {
-    const double t = 2 * M_PI * k / n, rad = 1e6 * (1 + 0.1 * std::sin(7 * t));
+    const double t = 2 * M_PI * k / n, rad = 1e6 * (1 + 0.1 * std::sin(7 * t + phase));
     r.points.push_back({std::round(rad * std::cos(t)), std::round(rad * std::sin(t))});
   }
   s.rings.push_back(r);
@@ -82,45 +95,80 @@ double peak_mb() {
   return u.ru_maxrss / 1024.0;
 }
 
+struct Row {
+  double boost_s = 1e300, cgal_s = 1e300, axis_s = 1e300, both_s = 1e300;
+};
+
+void report_details(int n, const char* shape, const PolygonAxisReport& rep, const MedialGraph& g,
+                    const GrassfireResult& r) {
+  const NumberStats& st = r.stats();
+  std::fprintf(stderr,
+               "n=%d %s: axis %.4f s (voronoi %.4f, values %.4f), %llu nodes, %llu contracted, %llu Arb "
+               "refinements; engine: filter %llu, x87 %llu, mpfr %llu, exact zero %llu (by class %llu), "
+               "uncertified %llu, max bits %llu\n",
+               n, shape, rep.total_seconds, rep.voronoi_seconds, rep.values_seconds, (unsigned long long)rep.nodes,
+               (unsigned long long)rep.contracted_edges, (unsigned long long)rep.ball_refinements,
+               (unsigned long long)st.filter_decided, (unsigned long long)st.extended_decided,
+               (unsigned long long)st.mpfr_decided, (unsigned long long)st.exact_zero,
+               (unsigned long long)st.class_zero, (unsigned long long)st.uncertified_zero,
+               (unsigned long long)st.max_bits_used);
+  if (const auto* geo = dynamic_cast<const PolygonAxisGeometry*>(&g.geometry())) {
+    const AxisValueClasses& vc = geo->value_classes();
+    std::fprintf(stderr, "  symmetries %u: nodes in shared classes %llu / %u, edges %llu / %u, unmapped %llu + %llu\n",
+                 vc.symmetries, (unsigned long long)vc.nodes_in_shared_classes, g.node_count(),
+                 (unsigned long long)vc.edges_in_shared_classes, g.edge_count(), (unsigned long long)vc.unmapped_nodes,
+                 (unsigned long long)vc.unmapped_edges);
+  }
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
   std::vector<int> sizes{1000, 10000, 100000};
   long max_cgal = 100000;
+  int repeat = 1;
   for (int i = 1; i + 1 < argc; i += 2) {
     const std::string a = argv[i];
     if (a == "--max-cgal") {
       max_cgal = std::atol(argv[i + 1]);
+    } else if (a == "--repeat") {
+      repeat = std::max(1, std::atoi(argv[i + 1]));
     } else if (a == "--sizes") {
       sizes.clear();
       std::stringstream ss(argv[i + 1]);
       for (std::string t; std::getline(ss, t, ',');) sizes.push_back(std::atoi(t.c_str()));
     } else {
-      std::fprintf(stderr, "usage: bench_polygon_axis [--sizes a,b,c] [--max-cgal N]\n");
+      std::fprintf(stderr, "usage: bench_polygon_axis [--sizes a,b,c] [--max-cgal N] [--repeat K]\n");
       return 2;
     }
   }
-  std::printf("segments,boost_s,cgal_sdg_s,axis_s,axis_plus_edf_s,ratio_to_boost,peak_mem_mb\n");
+  std::printf("segments,shape,boost_s,cgal_sdg_s,axis_s,axis_plus_edf_s,axis_ratio,ratio_to_boost,peak_mem_mb\n");
   for (int n : sizes) {
-    const Shape2 s = wavy_circle(n);
-    const double boost_s = bare_boost(s);
-    std::string cgal = "";
-    if (n <= max_cgal) cgal = std::to_string(bare_cgal(s));
-    double t0 = now();
-    const MedialGraph g = exact_polygon_axis(s);
-    const double axis_s = now() - t0;
-    t0 = now();
-    const MedialGraph g2 = exact_polygon_axis(s);
-    const GrassfireResult r = extended_grassfire(g2);
-    const double both = now() - t0;
-    std::printf("%d,%.4f,%s,%.4f,%.4f,%.3f,%.1f\n", n, boost_s, cgal.c_str(), axis_s, both, both / boost_s, peak_mb());
-    std::fflush(stdout);
-    const NumberStats& st = r.stats();
-    std::fprintf(stderr, "n=%d: engine comparisons: filter %llu, mpfr %llu, exact zero %llu, uncertified zero %llu, max bits %llu\n",
-                 n, (unsigned long long)st.filter_decided, (unsigned long long)st.mpfr_decided,
-                 (unsigned long long)st.exact_zero, (unsigned long long)st.uncertified_zero,
-                 (unsigned long long)st.max_bits_used);
-    (void)g;
+    for (const auto& [shape, phase] : {std::pair<const char*, double>{"symmetric", 0.0}, {"shifted", 0.3}}) {
+      const Shape2 s = wavy_circle(n, phase);
+      Row row;
+      PolygonAxisReport rep;
+      std::unique_ptr<MedialGraph> g;
+      std::unique_ptr<GrassfireResult> r;
+      for (int k = 0; k < repeat; ++k) {
+        row.boost_s = std::min(row.boost_s, bare_boost(s));
+        if (n <= max_cgal) row.cgal_s = std::min(row.cgal_s, bare_cgal(s));
+        double t0 = now();
+        g = std::make_unique<MedialGraph>(exact_polygon_axis(s, {}, &rep));
+        row.axis_s = std::min(row.axis_s, now() - t0);
+        g.reset();
+        r.reset();
+        t0 = now();
+        g = std::make_unique<MedialGraph>(exact_polygon_axis(s, {}, &rep));
+        r = std::make_unique<GrassfireResult>(extended_grassfire(*g));
+        row.both_s = std::min(row.both_s, now() - t0);
+      }
+      const std::string cgal = n <= max_cgal ? std::to_string(row.cgal_s) : "";
+      std::printf("%d,%s,%.4f,%s,%.4f,%.4f,%.3f,%.3f,%.1f\n", n, shape, row.boost_s, cgal.c_str(), row.axis_s,
+                  row.both_s, row.axis_s / row.boost_s, row.both_s / row.boost_s, peak_mb());
+      std::fflush(stdout);
+      report_details(n, shape, rep, *g, *r);
+    }
   }
   return 0;
 }

@@ -116,19 +116,53 @@ std::uint32_t BurnTimes::origin(TimeId t) const {
   return records_[t].ref;
 }
 
-ExactSum BurnTimes::exact_difference(TimeId a, TimeId b) const {
-  ExactSum sum;
-  auto add_record = [&](TimeId t, int s) {
+namespace {
+constexpr std::uint32_t kNoClass = 0xffffffffu;
+}  // namespace
+
+std::uint32_t BurnTimes::find_class(std::uint32_t c) const {
+  while (class_parent_[c] != c) c = class_parent_[c] = class_parent_[class_parent_[c]];
+  return c;
+}
+
+std::uint32_t BurnTimes::value_class(TimeId t) const {
+  if (class_.size() < records_.size()) class_.resize(records_.size(), kNoClass);
+  scratch_.clear();
+  for (TimeId cur = t; cur != kNoTime && class_[cur] == kNoClass; cur = records_[cur].pred) scratch_.push_back(cur);
+  const MedialGeometry& geo = graph_->geometry();
+  for (auto it = scratch_.rbegin(); it != scratch_.rend(); ++it) {
+    const Record& r = records_[*it];
+    // An ignition's key has 0xffffffff in the high word, which no class id reaches. An
+    // advance that continues its predecessor's edge along one curve (through a degree-2
+    // node) is keyed as one step from the predecessor's predecessor with the joined length.
+    std::uint64_t key;
+    if (r.pred == kNoTime) {
+      key = (std::uint64_t{0xffffffffu} << 32) | geo.radius_class(r.ref);
+    } else {
+      const Record& p = records_[r.pred];
+      const std::uint32_t joined = p.pred == kNoTime ? 0xffffffffu : geo.joined_length_class(p.ref, r.ref);
+      key = joined != 0xffffffffu ? (std::uint64_t{find_class(class_[p.pred])} << 32) | joined
+                                  : (std::uint64_t{find_class(class_[r.pred])} << 32) | geo.length_class(r.ref);
+    }
+    const auto [pos, fresh] = class_of_step_.emplace(key, static_cast<std::uint32_t>(class_parent_.size()));
+    if (fresh) class_parent_.push_back(pos->second);
+    class_[*it] = pos->second;
+  }
+  return find_class(class_[t]);
+}
+
+GraphSum BurnTimes::difference(TimeId a, TimeId b) const {
+  GraphSum sum;
+  auto add_record = [&](TimeId t, std::int64_t s) {
     const Record& r = records_[t];
-    ExactSum term = r.pred == kNoTime ? graph_->geometry().exact_radius(r.ref)
-                                      : graph_->geometry().exact_length(r.ref);
-    if (s > 0)
-      sum += term;
+    if (r.pred == kNoTime)
+      sum.add_radius(r.ref, s);
     else
-      sum -= term;
+      sum.add_length(r.ref, s);
   };
-  // Walk both chains up to their common ancestor; the ancestor's value cancels.
-  while (a != b) {
+  // Walk both chains up to their common ancestor, or to ancestors of equal class: the
+  // rest of the two values cancels.
+  while (a != b && (a == kNoTime || b == kNoTime || value_class(a) != value_class(b))) {
     const std::uint32_t da = a == kNoTime ? 0 : records_[a].depth + 1;
     const std::uint32_t db = b == kNoTime ? 0 : records_[b].depth + 1;
     if (da >= db) {
@@ -140,6 +174,22 @@ ExactSum BurnTimes::exact_difference(TimeId a, TimeId b) const {
     }
   }
   return sum;
+}
+
+int BurnTimes::exact_sign(GraphSum d, TimeId a, TimeId b) const {
+  d.cancel(*graph_);
+  int s = 0;
+  if (d.empty()) {
+    ++stats_.exact_zero;
+    ++stats_.class_zero;
+  } else {
+    const std::uint64_t uncertified = stats_.uncertified_zero;
+    s = sign(d.exact(*graph_), &stats_);
+    if (s != 0 || stats_.uncertified_zero != uncertified) return s;
+  }
+  const std::uint32_t ca = value_class(a), cb = value_class(b);
+  class_parent_[std::max(ca, cb)] = std::min(ca, cb);
+  return 0;
 }
 
 int BurnTimes::compare(TimeId a, TimeId b) const {
@@ -160,6 +210,11 @@ int BurnTimes::compare(TimeId a, TimeId b) const {
     ++stats_.exact_zero;
     return 0;
   }
+  if (value_class(a) == value_class(b)) {
+    ++stats_.exact_zero;
+    ++stats_.class_zero;
+    return 0;
+  }
   const int l = long_sign(a, b);
   if (l != kUndecided) {
     ++stats_.extended_decided;
@@ -170,7 +225,7 @@ int BurnTimes::compare(TimeId a, TimeId b) const {
     ++stats_.mpfr_decided;
     return r;
   }
-  return sign(exact_difference(a, b), &stats_);
+  return exact_sign(difference(a, b), a, b);
 }
 
 int BurnTimes::compare_quench(TimeId a, TimeId b, std::uint32_t edge, TimeId c) const {
@@ -206,10 +261,16 @@ int BurnTimes::compare_quench(TimeId a, TimeId b, std::uint32_t edge, TimeId c) 
     ++stats_.mpfr_decided;
     return mpfr_sgn(d2.lo) > 0 ? 1 : -1;
   }
-  ExactSum d = exact(a) + exact(b) + graph_->geometry().exact_length(edge);
-  d.scale(mpq_class(1, 2));
-  d -= exact(c);
-  return sign(d, &stats_);
+  // 2 (q - c), atoms of equal class cancelled before any exact form is built.
+  GraphSum d = as_graph_sum(a) + as_graph_sum(b) - as_graph_sum(c) - as_graph_sum(c);
+  d.add_length(edge);
+  d.cancel(*graph_);
+  if (d.empty()) {
+    ++stats_.exact_zero;
+    ++stats_.class_zero;
+    return 0;
+  }
+  return sign(d.exact(*graph_), &stats_);
 }
 
 }  // namespace grassfire

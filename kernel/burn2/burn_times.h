@@ -8,16 +8,32 @@
 // enclosures and memoised per record, so a chain is refined at most once per stage
 // however often it is compared (near-ties between long chains occur on large inputs,
 // where the double enclosures of 10^5 summed lengths are about 10^-11 wide);
-// (4) otherwise both times are expanded into ExactSums (R at the ignition leaf plus the
-// edge lengths along the chain), their common part cancelled, and the sign of the
+// Between (1) and (2), exact ties are looked for by value classes: the graph's geometry
+// names atoms (R at a node, an edge length) with provably equal values (for the exact
+// polygon axis, the atoms an exact symmetry of the polygon maps onto each other:
+// medial2/polygon_axis_symmetry.h). A record's class is hash-consed from its chain: an
+// ignition's class from the radius class of its leaf, an advance's from (class of its
+// predecessor, length class of its edge), or from (class of its predecessor's
+// predecessor, joined length class) when the two edges are pieces of one curve through a
+// degree-2 node (MedialGeometry::joined_length_class); by induction on the chain, records
+// of equal class have equal values, so mirror chains of a symmetric shape, which share no
+// ancestor, tie in O(1) (amortised; classes are computed on demand and memoised). Ties
+// proved exactly by stage (4) join their classes (union-find), so later ties between
+// their descendants are found here too; a zero that is not certified (exact_sum.h) joins
+// nothing.
+// (4) otherwise both times are expanded into sums of atoms (R at the ignition leaf plus
+// the edge lengths along the chain) down to their first common ancestor, or to the first
+// pair of ancestors of equal class; atoms of equal class cancel symbolically
+// (burn2/graph_sum.h); only what remains is built as ExactSums and the sign of the
 // difference decided exactly (number/exact_sum.h).
 // Contract: the graph outlives this object; every edge id and node id is valid.
-// Complexity: O(1) to create a time; a comparison is O(1) when the filter decides, and
-// O(L) exact work for chains of length L otherwise.
+// Complexity: O(1) to create a time; a comparison is O(1) when the filter or the value
+// classes decide, and O(L) exact work for chains of length L otherwise.
 #pragma once
 
 #include <cstdint>
 #include <memory>
+#include <unordered_map>
 #include <vector>
 
 #include "burn2/graph_sum.h"
@@ -51,6 +67,8 @@ class BurnTimes {
   int compare(TimeId a, TimeId b) const;
   // Certified sign of (a + b + length(edge)) / 2 - c; used to compare quench values.
   int compare_quench(TimeId a, TimeId b, std::uint32_t edge, TimeId c) const;
+  // The value class of t (see above): equal classes, provably equal times.
+  std::uint32_t value_class(TimeId t) const;
 
   std::size_t size() const { return records_.size(); }
   const NumberStats& stats() const { return stats_; }
@@ -65,8 +83,13 @@ class BurnTimes {
     std::uint32_t ref;   // the leaf for an ignition, the edge for an advance
     std::uint32_t depth; // chain length
   };
-  // Exact a - b with the shared part of the two chains cancelled.
-  ExactSum exact_difference(TimeId a, TimeId b) const;
+  // a - b as a sum of atoms, down to the first common ancestor or pair of ancestors of
+  // equal class.
+  GraphSum difference(TimeId a, TimeId b) const;
+  // Exact sign of d (atoms of equal class cancelled first); joins the classes of a and b
+  // when it proves a certified zero.
+  int exact_sign(GraphSum d, TimeId a, TimeId b) const;
+  std::uint32_t find_class(std::uint32_t c) const;
   // Stage 2: sign of a - b from memoised extended-precision enclosures, or kUndecided.
   int long_sign(TimeId a, TimeId b) const;
   const LongInterval& long_value(TimeId t) const;
@@ -81,6 +104,10 @@ class BurnTimes {
   mutable std::vector<std::unique_ptr<Refined>> refined_;  // by TimeId, filled on demand
   mutable std::vector<LongInterval> long_;                  // by TimeId, filled on demand
   mutable std::vector<std::uint8_t> has_long_;
+  mutable std::vector<std::uint32_t> class_;         // by TimeId, filled on demand
+  mutable std::vector<std::uint32_t> class_parent_;  // union-find over classes
+  mutable std::unordered_map<std::uint64_t, std::uint32_t> class_of_step_;
+  mutable std::vector<TimeId> scratch_;
 };
 
 }  // namespace grassfire

@@ -54,6 +54,12 @@ void GraphSum::cancel() {
     if (a.coef != 0) atoms_.push_back(a);
 }
 
+void GraphSum::cancel(const MedialGraph& g) {
+  const MedialGeometry& geo = g.geometry();
+  for (Atom& a : atoms_) a.id = a.is_edge ? geo.length_class(a.id) : geo.radius_class(a.id);
+  cancel();
+}
+
 Interval GraphSum::approx(const MedialGraph& g) const {
   Interval sum(0.0);
   for (const Atom& a : atoms_) {

@@ -4,7 +4,9 @@
 // and their certified comparison. Equal atoms cancel symbolically before any arithmetic,
 // so two sums along the same path compare equal without evaluating a single root; the
 // remainder is compared by its interval enclosure and then exactly (number/exact_sum.h).
-// Used by the definitional oracle and by tests that compare it with the engine.
+// Used by the definitional oracle and by tests that compare it with the engine; compare()
+// cancels equal atom ids only, so the oracle does not depend on the value classes that
+// the burning engine uses (cancel(g): atoms of equal class, burn2/burn_times.h).
 // Complexity: O(k log k) for k atoms, plus the exact work on what does not cancel.
 #pragma once
 
@@ -31,6 +33,9 @@ class GraphSum {
   ExactSum exact(const MedialGraph& g) const;
   // Merges equal atoms and drops zero coefficients; the value does not change.
   void cancel();
+  // The same, merging atoms of equal value class (MedialGeometry::radius_class and
+  // length_class: provably equal values) into their class representative.
+  void cancel(const MedialGraph& g);
   bool empty() const { return atoms_.empty(); }
 
  private:

@@ -65,6 +65,16 @@ class MedialGeometry {
   // by default rounded outwards from 80-bit MPFR enclosures.
   virtual LongInterval enclose_radius_long(std::uint32_t node) const;
   virtual LongInterval enclose_length_long(std::uint32_t edge) const;
+  // Value classes: two nodes with the same radius_class have provably equal R, two edges
+  // with the same length_class provably equal lengths (the class is the id of a member).
+  // By default every atom is its own class; the exact polygon axis merges the atoms that
+  // an exact symmetry of the polygon maps onto each other (medial2/polygon_axis_symmetry.h).
+  virtual std::uint32_t radius_class(std::uint32_t node) const { return node; }
+  virtual std::uint32_t length_class(std::uint32_t edge) const { return edge; }
+  // For two edges that meet at a degree-2 node and are pieces of one curve (the same
+  // bisector), a length class (same id space as length_class) of their summed length;
+  // 0xffffffff otherwise (the default).
+  virtual std::uint32_t joined_length_class(std::uint32_t, std::uint32_t) const { return 0xffffffffu; }
   // The point at arc length s (0 <= s <= length) from end `from` along the edge, for
   // drawing and reporting; straight segments by default.
   virtual Point2 point_along(const MedialGraph& g, std::uint32_t edge, std::uint32_t from, double s) const;

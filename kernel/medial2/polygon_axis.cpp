@@ -2,14 +2,17 @@
 #include "medial2/polygon_axis.h"
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <numeric>
+#include <optional>
 #include <stdexcept>
 #include <string>
 
 #include "geometry2/predicates2.h"
 #include "medial2/polygon_axis_geometry.h"
+#include "medial2/polygon_axis_symmetry.h"
 #include "medial2/segment_voronoi.h"
 #include "medial2/voronoi_circle.h"
 #include "medial2/union_find.h"
@@ -88,6 +91,7 @@ class Builder {
 
   MedialGraph run() {
     solve_circles();
+    conditions_ = conditions_of_sites(*sites_);
     contract();
     return assemble();
   }
@@ -103,44 +107,95 @@ class Builder {
       values_[i] = solve_interval(*sites_, circles_[i]);
       if (!is_tight(values_[i].x) || !is_tight(values_[i].y) || !is_tight(values_[i].r)) {
         ++report_.ball_refinements;
-        const CircleValue<Ball> b = solve_ball(*sites_, circles_[i]);
+        const CircleValue<Ball>& b = ball(i);
         values_[i] = {b.x.to_interval(), b.y.to_interval(), b.r.to_interval()};
       }
     }
   }
 
+  // The circle of vertex i in Arb (default precision), computed once.
+  const CircleValue<Ball>& ball(std::uint32_t i) {
+    if (balls_.size() < circles_.size()) balls_.resize(circles_.size());
+    if (!balls_[i]) balls_[i] = solve_ball(*sites_, circles_[i]);
+    return *balls_[i];
+  }
+
+  // The conditions of a circle: its point sites and its segment sites' lines (straight
+  // runs), sorted.
+  std::array<std::uint32_t, 3> conditions(std::uint32_t i) const {
+    std::array<std::uint32_t, 3> c = circles_[i].sites;
+    for (std::uint32_t& site : c)
+      site = conditions_[site];
+    std::sort(c.begin(), c.end());
+    return c;
+  }
+
+  enum class Same { No, Certified, Uncertified };
+
   // Exact test that two Voronoi vertices are the same point.
-  bool same_point(std::uint32_t i, std::uint32_t j) {
+  Same same_point(std::uint32_t i, std::uint32_t j) {
     const CircleValue<Interval>& a = values_[i];
     const CircleValue<Interval>& b = values_[j];
-    if (!overlap(a.x, b.x) || !overlap(a.y, b.y) || !overlap(a.r, b.r)) return false;
+    if (!overlap(a.x, b.x) || !overlap(a.y, b.y) || !overlap(a.r, b.r)) return Same::No;
+    // Two circles of one kind with the same conditions (typically the two sides of a
+    // collinear vertex: its two segments are one line), both with R > 0, are the same
+    // circle when those conditions have at most one solution (voronoi_circle.h).
+    const std::array<std::uint32_t, 3> ca = conditions(i);
+    if (circles_[i].kind == circles_[j].kind && ca == conditions(j) && ca[0] != ca[1] && ca[1] != ca[2] &&
+        a.r.lo > 0 && b.r.lo > 0 && at_most_one_circle(*sites_, circles_[i])) {
+      ++report_.contracted_by_conditions;
+      return Same::Certified;
+    }
     const auto ea = solve_exact(*sites_, circles_[i]);
     const auto eb = solve_exact(*sites_, circles_[j]);
-    if (ea && eb) return sign(ea->x - eb->x) == 0 && sign(ea->y - eb->y) == 0;
+    if (ea && eb) return sign(ea->x - eb->x) == 0 && sign(ea->y - eb->y) == 0 ? Same::Certified : Same::No;
     for (long bits : {256L, 1024L}) {
       BallPrecision guard(bits);
       const CircleValue<Ball> ba = solve_ball(*sites_, circles_[i]), bb = solve_ball(*sites_, circles_[j]);
-      if ((ba.x - bb.x).sign() != 0 && (ba.x - bb.x).sign() != kUndecided) return false;
-      if ((ba.y - bb.y).sign() != 0 && (ba.y - bb.y).sign() != kUndecided) return false;
+      if ((ba.x - bb.x).sign() != 0 && (ba.x - bb.x).sign() != kUndecided) return Same::No;
+      if ((ba.y - bb.y).sign() != 0 && (ba.y - bb.y).sign() != kUndecided) return Same::No;
     }
     ++report_.uncertified_contractions;
-    return true;
+    return Same::Uncertified;
   }
 
+  bool has_site(std::uint32_t vertex, std::uint32_t site) const {
+    const auto& s = circles_[vertex].sites;
+    return std::find(s.begin(), s.end(), site) != s.end();
+  }
+
+  // A group's circles are aliases of its representative (same centre and R, exactly) when
+  // every contraction in it is certified and each contracted edge's two sites are sites of
+  // the circles at both of its ends: two circles with one centre X and a common segment
+  // site have R = the signed distance from X to that site's line; with a common point
+  // site, R = |X - P| for both, as both R are positive (their enclosures say so).
   void contract() {
     UnionFind uf(topo_.vertices.size());
     contracted_.assign(topo_.edges.size(), false);
+    std::vector<std::size_t> contracted;
+    std::vector<bool> uncertified(topo_.edges.size(), false);
     for (std::size_t e = 0; e < topo_.edges.size(); ++e) {
       const auto& ed = topo_.edges[e];
       if (topo_.vertices[ed.u].apex || topo_.vertices[ed.v].apex) continue;  // R = 0 against R > 0
-      if (same_point(ed.u, ed.v)) {
+      const Same same = same_point(ed.u, ed.v);
+      if (same != Same::No) {
         contracted_[e] = true;
+        uncertified[e] = same == Same::Uncertified;
+        contracted.push_back(e);
         uf.unite(ed.u, ed.v);
         ++report_.contracted_edges;
       }
     }
     group_.resize(topo_.vertices.size());
     for (std::uint32_t i = 0; i < topo_.vertices.size(); ++i) group_[i] = uf.find(i);
+    aliasable_.assign(topo_.vertices.size(), true);
+    for (std::size_t e : contracted) {
+      const auto& ed = topo_.edges[e];
+      const bool shares = has_site(ed.u, ed.site_a) && has_site(ed.u, ed.site_b) && has_site(ed.v, ed.site_a) &&
+                          has_site(ed.v, ed.site_b);
+      const bool positive = values_[ed.u].r.lo > 0 && values_[ed.v].r.lo > 0;
+      if (uncertified[e] || !shares || !positive) aliasable_[group_[ed.u]] = false;
+    }
   }
 
   MedialGraph assemble() {
@@ -154,11 +209,18 @@ class Builder {
       if (node_of[root] == kNone) {
         node_of[root] = static_cast<std::uint32_t>(nodes.size());
         data.push_back({circles_[root], {}});
+        data.back().radius = topo_.vertices[root].apex ? Interval(0.0) : values_[root].r;
         const CircleValue<Interval>& v = values_[root];
         nodes.push_back({{v.x.mid() * scale_d, v.y.mid() * scale_d}, v.r * scale});
         if (topo_.vertices[root].apex) nodes.back().radius = 0.0;
       }
       node_of[i] = node_of[root];
+      if (i != root) {
+        if (aliasable_[root])
+          data[node_of[i]].aliases.push_back(circles_[i]);
+        else
+          data[node_of[i]].all_aliased = false;
+      }
       auto& s = data[node_of[i]].sites;
       s.insert(s.end(), topo_.vertices[i].sites.begin(), topo_.vertices[i].sites.end());
     }
@@ -175,10 +237,9 @@ class Builder {
       Interval len = edge_length(*sites_, a, values_[group_[ed.u]], values_[group_[ed.v]]);
       if (!is_tight(len)) {
         ++report_.ball_refinements;
-        const CircleValue<Ball> bu = solve_ball(*sites_, circles_[group_[ed.u]]);
-        const CircleValue<Ball> bv = solve_ball(*sites_, circles_[group_[ed.v]]);
-        len = edge_length(*sites_, a, bu, bv).to_interval();
+        len = edge_length(*sites_, a, ball(group_[ed.u]), ball(group_[ed.v])).to_interval();
       }
+      a.length = len;
       report_.parabolic_arcs += a.parabolic;
       edges.push_back({a.u, a.v, a.parabolic ? EdgeKind::ParabolicArc : EdgeKind::Segment, len * scale});
       edata.push_back(a);
@@ -207,6 +268,9 @@ class Builder {
   std::vector<CircleValue<Interval>> values_;
   std::vector<bool> contracted_;
   std::vector<std::uint32_t> group_;
+  std::vector<bool> aliasable_;  // by group root
+  std::vector<std::optional<CircleValue<Ball>>> balls_;
+  std::vector<std::uint32_t> conditions_;  // by site: conditions_of_sites
 };
 
 }  // namespace

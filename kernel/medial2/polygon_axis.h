@@ -7,8 +7,11 @@
 // R = 0; reflex vertices are point sites whose regions contribute parabolic arcs
 // (EdgeKind::ParabolicArc, focus = the vertex, directrix = the segment's line) and
 // straight edges. Nodes are Voronoi vertices, contracted exactly where several coincide
-// (cocircular sites: regular polygons, rectangles' centres); degree-2 nodes where a
-// collinear vertex's normal meets the axis are kept.
+// (cocircular sites: regular polygons, rectangles' centres, the two sides of a collinear
+// vertex); degree-2 nodes where a collinear vertex's normal meets the axis are kept. Two
+// circles of one kind whose conditions are the same (point sites, and segment lines with
+// the segments of one straight run through collinear vertices taken as one line) and
+// admit at most one circle (voronoi_circle.h) are contracted without exact forms.
 // Exactness: topology by exact predicates (Boost.Polygon on integers, or CGAL SDG with
 // filtered exact traits). R at a node is exact: a rational, a sum of square roots of
 // rationals (PPP, PPS, SSS and many PSS circles: voronoi_circle.h) or, for nested
@@ -56,6 +59,7 @@ struct PolygonAxisReport {
   std::uint64_t voronoi_vertices = 0;   // interior Voronoi vertices before contraction
   std::uint64_t nodes = 0, edges = 0, leaves = 0, parabolic_arcs = 0;
   std::uint64_t contracted_edges = 0;       // zero-length edges, proved zero exactly
+  std::uint64_t contracted_by_conditions = 0;  // of those: same conditions, one solution (no exact forms)
   std::uint64_t uncertified_contractions = 0;  // zero to 1024 bits, no exact form
   std::uint64_t ball_refinements = 0;      // enclosures re-evaluated in Arb
   std::uint64_t circles_by_kind[7] = {};   // indexed by CircleKind

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "medial2/polygon_axis_symmetry.h"
 #include "number/mpfr_bounds.h"
 #include "number/parabolic_arc.h"
 #include "number/sqrt_field.h"
@@ -135,6 +136,19 @@ PolygonAxisGeometry::PolygonAxisGeometry(std::shared_ptr<const PolygonSites> sit
       circles_(nodes_.size()),
       lengths_(edges_.size()),
       ball_circles_(nodes_.size()) {}
+
+const AxisValueClasses& PolygonAxisGeometry::value_classes() const {
+  if (!classes_) classes_ = std::make_shared<const AxisValueClasses>(axis_value_classes(*sites_, nodes_, edges_));
+  return *classes_;
+}
+
+std::uint32_t PolygonAxisGeometry::radius_class(std::uint32_t node) const { return value_classes().node[node]; }
+std::uint32_t PolygonAxisGeometry::length_class(std::uint32_t edge) const { return value_classes().edge[edge]; }
+std::uint32_t PolygonAxisGeometry::joined_length_class(std::uint32_t first, std::uint32_t second) const {
+  const AxisValueClasses& c = value_classes();
+  const auto it = c.joined.find(joined_key(first, second));
+  return it == c.joined.end() ? 0xffffffffu : it->second;
+}
 
 const CircleValue<Ball>& PolygonAxisGeometry::ball_circle(std::uint32_t i) const {
   if (!ball_circles_[i]) {

@@ -8,6 +8,8 @@
 // identified by the two circles otherwise; for a parabolic arc the closed-form length
 // |S(xi_v) - S(xi_u)| (number/parabolic_arc.h) as a constant identified by its focus,
 // directrix and the two circles. Constants evaluate in Arb at the requested precision.
+// Value classes: nodes and edges that an exact symmetry of the polygon maps onto each
+// other (polygon_axis_symmetry.h), so that equal burn times cancel without exact forms.
 // Also: rigorous double / Arb enclosures of lengths from circle values (used by the
 // construction and the validation), and points along parabolic arcs for drawing.
 // Contract: node and edge data come from exact_polygon_axis.
@@ -25,15 +27,23 @@
 
 namespace grassfire {
 
+struct AxisValueClasses;
+
 struct AxisNodeData {
   VoronoiCircle circle;              // a representative circle of the contracted group
   std::vector<std::uint32_t> sites;  // every defining site of the group, sorted
+  // The other circles of the group, when they are proved to have the representative's
+  // centre and R exactly (polygon_axis.cpp); empty otherwise.
+  std::vector<VoronoiCircle> aliases;
+  bool all_aliased = true;  // every circle of the group is `circle` or in `aliases`
+  Interval radius;          // encloses R in the frame
 };
 
 struct AxisEdgeData {
   std::uint32_t u = 0, v = 0;        // node ids (as in the graph)
   std::uint32_t site_a = 0, site_b = 0;
   bool parabolic = false;            // focus = the point site, directrix = the segment's line
+  Interval length;                   // encloses the length in the frame
 };
 
 // Length of an edge from its end circles, in the frame (T = Interval or Ball).
@@ -57,6 +67,12 @@ class PolygonAxisGeometry : public MedialGeometry {
   void enclose_length(std::uint32_t edge, mpfr_ptr lo, mpfr_ptr hi) const override;
   LongInterval enclose_radius_long(std::uint32_t node) const override;
   LongInterval enclose_length_long(std::uint32_t edge) const override;
+  // Classes of atoms with provably equal values under the polygon's exact symmetries
+  // (medial2/polygon_axis_symmetry.h), computed on the first call.
+  std::uint32_t radius_class(std::uint32_t node) const override;
+  std::uint32_t length_class(std::uint32_t edge) const override;
+  std::uint32_t joined_length_class(std::uint32_t first, std::uint32_t second) const override;
+  const AxisValueClasses& value_classes() const;
   Point2 point_along(const MedialGraph& g, std::uint32_t edge, std::uint32_t from, double s) const override;
   std::vector<Point2> polyline(const MedialGraph& g, std::uint32_t edge) const override;
   std::string description() const override { return "exact polygon medial axis"; }
@@ -86,6 +102,7 @@ class PolygonAxisGeometry : public MedialGeometry {
   mutable std::vector<std::optional<CircleValue<ExactSum>>> circles_;
   mutable std::vector<std::optional<ExactSum>> lengths_;
   mutable std::vector<std::optional<CircleValue<Ball>>> ball_circles_;
+  mutable std::shared_ptr<const AxisValueClasses> classes_;
 };
 
 }  // namespace grassfire

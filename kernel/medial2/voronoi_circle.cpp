@@ -5,6 +5,7 @@
 #include <limits>
 #include <stdexcept>
 
+#include "geometry2/predicates2.h"
 #include "number/sqrt_field.h"
 
 namespace grassfire {
@@ -255,6 +256,28 @@ VoronoiCircle classify_circle(const PolygonSites& s, const VoronoiTopology::Vert
 std::string identity(const VoronoiCircle& c) {
   return std::string(to_string(c.kind)) + "(" + std::to_string(c.sites[0]) + "," + std::to_string(c.sites[1]) + "," +
          std::to_string(c.sites[2]) + (c.root > 0 ? ")+" : ")-");
+}
+
+bool at_most_one_circle(const PolygonSites& s, const VoronoiCircle& c) {
+  switch (c.kind) {
+    case CircleKind::PPP:
+    case CircleKind::SSS:
+    case CircleKind::PPSLinear: return true;
+    case CircleKind::Apex: return false;
+    default: break;
+  }
+  if (c.kind == CircleKind::PSSParallel) {
+    const Point2 a1 = s.vertex[s.seg_start(c.sites[1])], b1 = s.vertex[s.seg_end(c.sites[1])];
+    const Point2 a2 = s.vertex[s.seg_start(c.sites[2])], b2 = s.vertex[s.seg_end(c.sites[2])];
+    const mpq_class dot = (q(b1.x) - q(a1.x)) * (q(b2.x) - q(a2.x)) + (q(b1.y) - q(a1.y)) * (q(b2.y) - q(a2.y));
+    if (sgn(dot) >= 0) return false;
+  }
+  for (std::uint32_t p : c.sites)
+    for (std::uint32_t l : c.sites)
+      if (s.is_point(p) && !s.is_point(l) &&
+          orientation(s.vertex[s.seg_start(l)], s.vertex[s.seg_end(l)], s.vertex[p]) == 0)
+        return true;
+  return false;
 }
 
 CircleValue<Interval> solve_interval(const PolygonSites& s, const VoronoiCircle& c) { return solve<Interval>(s, c); }

@@ -49,6 +49,14 @@ struct CircleValue {
   T x, y, r;
 };
 
+// At most one circle with R > 0 satisfies c's conditions (through its point sites, at
+// signed distance R from its segment sites' lines): PPP (circumcircle), SSS and PPS-linear
+// (linear systems), or a point site P on the line of one of c's segment sites (then the
+// circle touches that line at P, its centre is P + R n, and the remaining condition is
+// linear in R; for PSS-parallel only when the two lines are anti-parallel). PPS, PSS and
+// PSS-parallel circles otherwise have two solutions: c and the other root.
+bool at_most_one_circle(const PolygonSites& sites, const VoronoiCircle& c);
+
 CircleValue<Interval> solve_interval(const PolygonSites& sites, const VoronoiCircle& c);
 CircleValue<Ball> solve_ball(const PolygonSites& sites, const VoronoiCircle& c);
 std::optional<CircleValue<ExactSum>> solve_exact(const PolygonSites& sites, const VoronoiCircle& c);

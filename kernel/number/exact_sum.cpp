@@ -100,6 +100,7 @@ void NumberStats::merge(const NumberStats& o) {
   extended_decided += o.extended_decided;
   mpfr_decided += o.mpfr_decided;
   exact_zero += o.exact_zero;
+  class_zero += o.class_zero;
   uncertified_zero += o.uncertified_zero;
   max_bits_used = std::max(max_bits_used, o.max_bits_used);
 }

@@ -91,7 +91,8 @@ struct NumberStats {
   std::uint64_t filter_decided = 0;    // decided by the double interval
   std::uint64_t extended_decided = 0;  // decided by x87 extended-precision enclosures
   std::uint64_t mpfr_decided = 0;      // decided by a multiprecision enclosure
-  std::uint64_t exact_zero = 0;        // proved zero by the square-class test
+  std::uint64_t exact_zero = 0;        // proved zero by the square-class test or by value classes
+  std::uint64_t class_zero = 0;        // of exact_zero: by value classes, no exact form built
   std::uint64_t uncertified_zero = 0;  // constants left, no precision up to kMaxBits separated
   std::uint64_t max_bits_used = 0;
   void merge(const NumberStats& o);

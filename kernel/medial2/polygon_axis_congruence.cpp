@@ -1,0 +1,373 @@
+// polygon_axis_congruence.cpp -- local congruence classes of an exact polygon axis's atoms
+// (see polygon_axis_symmetry.h): canonical keys of the site configurations behind each
+// node's R and each edge's length, under the lattice isometries X -> A X + t.
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <unordered_map>
+#include <vector>
+
+#include "geometry2/predicates2.h"
+#include "medial2/polygon_axis_symmetry.h"
+
+namespace grassfire {
+
+namespace {
+
+// The eight signed permutation matrices (the identity first).
+constexpr int kLinear[8][4] = {{1, 0, 0, 1},   {-1, 0, 0, 1}, {1, 0, 0, -1}, {-1, 0, 0, -1},
+                               {0, 1, 1, 0},   {0, -1, -1, 0}, {0, -1, 1, 0}, {0, 1, -1, 0}};
+
+// A point site (kind 0: a = x, y) or a segment site's line, oriented with the interior on
+// its left (kind 1: a = the primitive direction dx, dy and k = cross(d, p) for a point p
+// of it; p is kept for translating). Values depend on lines only, not on where a segment
+// ends, so two runs of one line are one object.
+struct Obj {
+  std::int64_t kind = 0;
+  std::array<std::int64_t, 2> a{};
+  __int128 k = 0;
+  std::int64_t px = 0, py = 0, qx = 0, qy = 0;  // the segment's ends (a point: px, py)
+  bool operator<(const Obj& o) const {
+    if (kind != o.kind) return kind < o.kind;
+    if (a != o.a) return a < o.a;
+    return k < o.k;
+  }
+};
+
+struct Image {
+  std::int64_t code = 0;  // kind and root
+  int count = 0;
+  std::array<Obj, 3> obj;
+};
+
+void apply(const int* a, std::int64_t x, std::int64_t y, std::int64_t* out) {
+  out[0] = a[0] * x + a[1] * y;
+  out[1] = a[2] * x + a[3] * y;
+}
+
+std::int64_t gcd64(std::int64_t a, std::int64_t b) {
+  a = a < 0 ? -a : a;
+  b = b < 0 ? -b : b;
+  while (b != 0) {
+    const std::int64_t t = a % b;
+    a = b;
+    b = t;
+  }
+  return a;
+}
+
+Obj transform_site(const PolygonSites& s, std::uint32_t site, const int* a) {
+  Obj o;
+  auto at = [&](std::uint32_t v, std::int64_t* out) {
+    apply(a, static_cast<std::int64_t>(s.vertex[v].x), static_cast<std::int64_t>(s.vertex[v].y), out);
+  };
+  std::int64_t p[2], q[2];
+  if (s.is_point(site)) {
+    at(site, p);
+    o.a = {p[0], p[1]};
+    o.px = p[0], o.py = p[1];
+    return o;
+  }
+  o.kind = 1;
+  // A reflection maps the segment start -> end to one with the interior on its right:
+  // the mapped polygon edge runs end -> start.
+  const bool reverses = a[0] * a[3] - a[1] * a[2] < 0;
+  at(reverses ? s.seg_end(site) : s.seg_start(site), p);
+  at(reverses ? s.seg_start(site) : s.seg_end(site), q);
+  const std::int64_t dx = q[0] - p[0], dy = q[1] - p[1], g = gcd64(dx, dy);
+  o.a = {dx / g, dy / g};
+  o.k = static_cast<__int128>(o.a[0]) * p[1] - static_cast<__int128>(o.a[1]) * p[0];
+  o.px = p[0], o.py = p[1], o.qx = q[0], o.qy = q[1];
+  return o;
+}
+
+// The circle's configuration under A, roles mapped as in polygon_axis_symmetry.h and
+// then put in the order its formula is symmetric under (key_of there, by coordinates).
+// When at most one circle satisfies c's conditions (voronoi_circle.h), the root is no
+// part of its value (the two roots coincide), so it is dropped and the symmetric roles
+// are sorted.
+Image transform_circle(const PolygonSites& s, const VoronoiCircle& c, const int* a, bool unique) {
+  Image im;
+  int root = c.root;
+  im.count = c.kind == CircleKind::Apex ? 1 : 3;
+  for (int i = 0; i < im.count; ++i) im.obj[i] = transform_site(s, c.sites[i], a);
+  auto& o = im.obj;
+  if (a[0] * a[3] - a[1] * a[2] < 0) {
+    if (c.kind == CircleKind::PPS || c.kind == CircleKind::PPSLinear) std::swap(o[0], o[1]);
+    if (c.kind == CircleKind::PSSParallel) std::swap(o[1], o[2]);
+  }
+  switch (c.kind) {
+    case CircleKind::Apex: root = 0; break;
+    case CircleKind::PPP:
+    case CircleKind::SSS:
+      std::sort(o.begin(), o.end());
+      root = 0;
+      break;
+    case CircleKind::PSS:
+      if (o[2] < o[1]) std::swap(o[1], o[2]);
+      break;
+    case CircleKind::PPS:
+      if (o[1] < o[0]) {
+        std::swap(o[0], o[1]);
+        root = -root;
+      }
+      break;
+    case CircleKind::PPSLinear:
+      if (o[1] < o[0]) std::swap(o[0], o[1]);
+      root = 0;
+      break;
+    case CircleKind::PSSParallel:
+      if (unique && o[2] < o[1]) std::swap(o[1], o[2]);
+      root = 0;
+      break;
+  }
+  if (unique) root = 0;
+  im.code = static_cast<std::int64_t>(c.kind) * 4 + root + 1;
+  return im;
+}
+
+// A flat key: objects translated so that the lexicographically smallest point is 0.
+struct KeyBuilder {
+  std::array<Obj, 8> obj;
+  std::array<std::int64_t, 4> codes{};
+  int objects = 0, ncodes = 0;
+  void add(const Image& im) {
+    codes[ncodes++] = im.code * 4 + im.count;
+    for (int i = 0; i < im.count; ++i) obj[objects++] = im.obj[i];
+  }
+  // The key: codes, then every object's kind and coordinates (at most 4 + 8 * 5 values).
+  struct Key {
+    std::array<std::int64_t, 48> v{};
+    int size = 0;
+    bool operator<(const Key& o) const {
+      return std::lexicographical_compare(v.begin(), v.begin() + size, o.v.begin(), o.v.begin() + o.size);
+    }
+    std::vector<std::int64_t> vec() const { return {v.begin(), v.begin() + size}; }
+  };
+  // Translated so that the least point site is the origin (the least segment end when
+  // there is no point site).
+  Key build() const {
+    std::int64_t mx = 0, my = 0;
+    bool found = false;
+    auto consider = [&](std::int64_t x, std::int64_t y) {
+      if (!found || x < mx || (x == mx && y < my)) mx = x, my = y;
+      found = true;
+    };
+    bool has_point = false;
+    for (int i = 0; i < objects; ++i) has_point = has_point || obj[i].kind == 0;
+    for (int i = 0; i < objects; ++i) {
+      if (obj[i].kind == 0) {
+        consider(obj[i].px, obj[i].py);
+      } else if (!has_point) {
+        consider(obj[i].px, obj[i].py);
+        consider(obj[i].qx, obj[i].qy);
+      }
+    }
+    Key k;
+    for (int i = 0; i < ncodes; ++i) k.v[k.size++] = codes[i];
+    for (int i = 0; i < objects; ++i) {
+      const Obj& o = obj[i];
+      k.v[k.size++] = o.kind;
+      if (o.kind == 0) {
+        k.v[k.size++] = o.a[0] - mx;
+        k.v[k.size++] = o.a[1] - my;
+      } else {
+        // cross(d, p - m) = k - cross(d, m)
+        const __int128 c = o.k - (static_cast<__int128>(o.a[0]) * my - static_cast<__int128>(o.a[1]) * mx);
+        k.v[k.size++] = o.a[0];
+        k.v[k.size++] = o.a[1];
+        k.v[k.size++] = static_cast<std::int64_t>(c >> 64);
+        k.v[k.size++] = static_cast<std::int64_t>(static_cast<std::uint64_t>(c));
+      }
+    }
+    return k;
+  }
+};
+
+struct KeyHash {
+  std::size_t operator()(const std::vector<std::int64_t>& v) const {
+    std::uint64_t h = 1469598103934665603ull;
+    for (std::int64_t x : v) h = (h ^ static_cast<std::uint64_t>(x)) * 1099511628211ull;
+    return static_cast<std::size_t>(h);
+  }
+};
+
+bool is_integer_frame(const PolygonSites& s) {
+  for (const Point2& p : s.vertex)
+    if (!(std::fabs(p.x) <= 2147483647.0 && p.x == std::floor(p.x) && std::fabs(p.y) <= 2147483647.0 &&
+          p.y == std::floor(p.y)))
+      return false;
+  return true;
+}
+
+template <class F>
+void for_each_circle(const AxisNodeData& d, F&& f) {
+  f(d.circle);
+  for (const VoronoiCircle& c : d.aliases) f(c);
+}
+
+// Atoms whose enclosure overlaps that of an atom of another class (only those can be
+// equal to an atom they are not yet joined with); the others keep their classes. The
+// scan looks at most kWindow neighbours in the order of lower bounds and marks an atom
+// as a candidate when the window is too crowded to tell.
+template <class Get>
+std::vector<bool> candidates(std::uint32_t count, Get enclosure, UnionFind& uf) {
+  constexpr std::uint32_t kWindow = 64;
+  std::vector<std::uint32_t> order(count);
+  for (std::uint32_t i = 0; i < count; ++i) order[i] = i;
+  std::sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) {
+    return enclosure(a).lo < enclosure(b).lo;
+  });
+  std::vector<bool> out(count, false);
+  for (std::uint32_t k = 0; k < count; ++k) {
+    const Interval& x = enclosure(order[k]);
+    std::uint32_t j = k + 1;
+    for (; j < count && j <= k + kWindow && enclosure(order[j]).lo <= x.hi; ++j)
+      if (uf.find(order[j]) != uf.find(order[k])) out[order[j]] = out[order[k]] = true;
+    if (j == k + kWindow + 1 && j < count && enclosure(order[j]).lo <= x.hi) out[order[k]] = true;
+  }
+  return out;
+}
+
+}  // namespace
+
+std::vector<std::uint32_t> conditions_of_sites(const PolygonSites& s) {
+  const std::uint32_t n = s.vertex_count();
+  std::vector<std::uint32_t> out(2 * n);
+  auto straight = [&](std::uint32_t v) {
+    const Point2 a = s.vertex[s.prev[v]], b = s.vertex[v], c = s.vertex[s.next[v]];
+    return orientation(a, b, c) == 0 && (b.x - a.x) * (c.x - b.x) + (b.y - a.y) * (c.y - b.y) > 0;
+  };
+  for (std::uint32_t i = 0; i < n; ++i) {
+    out[i] = i;
+    std::uint32_t start = i;
+    for (std::uint32_t steps = 0; steps < n && straight(start); ++steps) start = s.prev[start];
+    out[n + i] = n + start;
+  }
+  return out;
+}
+
+std::vector<JoinedEdges> joinable_edges(const PolygonSites& s, const std::vector<AxisNodeData>& nodes,
+                                        const std::vector<AxisEdgeData>& edges) {
+  std::vector<JoinedEdges> out;
+  if (!is_integer_frame(s)) return out;
+  const std::vector<std::uint32_t> cond = conditions_of_sites(s);
+  std::vector<std::uint32_t> degree(nodes.size(), 0), first(nodes.size(), 0), second(nodes.size(), 0);
+  for (std::uint32_t e = 0; e < edges.size(); ++e)
+    for (std::uint32_t v : {edges[e].u, edges[e].v}) {
+      if (degree[v] == 0) first[v] = e;
+      if (degree[v] == 1) second[v] = e;
+      ++degree[v];
+    }
+  auto pair_of = [&](const AxisEdgeData& d) {
+    const std::uint32_t a = cond[d.site_a], b = cond[d.site_b];
+    return std::make_pair(std::min(a, b), std::max(a, b));
+  };
+  for (std::uint32_t v = 0; v < nodes.size(); ++v) {
+    if (degree[v] != 2 || nodes[v].circle.kind == CircleKind::Apex) continue;
+    const AxisEdgeData &a = edges[first[v]], &b = edges[second[v]];
+    if (a.parabolic != b.parabolic || pair_of(a) != pair_of(b) || a.u == a.v || b.u == b.v) continue;
+    // Both far ends differ from v and from each other: a path, not a loop.
+    const std::uint32_t fa = a.u == v ? a.v : a.u, fb = b.u == v ? b.v : b.u;
+    if (fa == fb) continue;
+    out.push_back({first[v], second[v], v});
+  }
+  return out;
+}
+
+void unite_congruent_atoms(const PolygonSites& s, const std::vector<AxisNodeData>& nodes,
+                           const std::vector<AxisEdgeData>& edges, const std::vector<JoinedEdges>& joined,
+                           UnionFind& node_uf, UnionFind& edge_uf) {
+  if (!is_integer_frame(s)) return;
+  const auto n = static_cast<std::uint32_t>(nodes.size());
+  const auto m = static_cast<std::uint32_t>(edges.size());
+  // Every apex has R = 0.
+  std::uint32_t first_apex = n;
+  for (std::uint32_t i = 0; i < n; ++i)
+    if (nodes[i].circle.kind == CircleKind::Apex) {
+      if (first_apex == n) first_apex = i;
+      node_uf.unite(i, first_apex);
+    }
+  // The eight images of a node's circles, computed once per node that needs them.
+  std::vector<std::vector<Image>> images(n);
+  auto images_of = [&](std::uint32_t i) -> const std::vector<Image>& {
+    if (images[i].empty()) {
+      std::array<bool, 8> unique{};
+      std::size_t count = 0;
+      for_each_circle(nodes[i], [&](const VoronoiCircle& c) {
+        if (count < unique.size()) unique[count] = at_most_one_circle(s, c);
+        ++count;
+      });
+      images[i].reserve(8 * count);
+      for (const auto& a : kLinear) {
+        std::size_t j = 0;
+        for_each_circle(nodes[i], [&](const VoronoiCircle& c) {
+          images[i].push_back(transform_circle(s, c, a, j < unique.size() && unique[j]));
+          ++j;
+        });
+      }
+    }
+    return images[i];
+  };
+  std::unordered_map<std::vector<std::int64_t>, std::uint32_t, KeyHash> seen;
+  const std::vector<bool> node_candidates = candidates(n, [&](std::uint32_t i) -> const Interval& { return nodes[i].radius; }, node_uf);
+  for (std::uint32_t i = 0; i < n; ++i) {
+    if (!node_candidates[i] || nodes[i].circle.kind == CircleKind::Apex) continue;
+    KeyBuilder::Key best;
+    for (const Image& im : images_of(i)) {
+      KeyBuilder k;
+      k.add(im);
+      const KeyBuilder::Key key = k.build();
+      if (best.size == 0 || key < best) best = key;
+    }
+    const auto [it, fresh] = seen.emplace(best.vec(), i);
+    if (!fresh) node_uf.unite(i, it->second);
+  }
+  seen.clear();
+  // Edges, then the joined pairs as edges from the first's far end to the second's.
+  const auto total = static_cast<std::uint32_t>(m + joined.size());
+  std::vector<AxisEdgeData> items(edges);
+  for (const JoinedEdges& j : joined) {
+    AxisEdgeData d = edges[j.first];
+    d.u = d.u == j.middle ? d.v : d.u;
+    d.v = edges[j.second].u == j.middle ? edges[j.second].v : edges[j.second].u;
+    d.length = edges[j.first].length + edges[j.second].length;
+    items.push_back(d);
+  }
+  const std::vector<bool> edge_candidates =
+      candidates(total, [&](std::uint32_t e) -> const Interval& { return items[e].length; }, edge_uf);
+  for (std::uint32_t e = 0; e < total; ++e) {
+    if (!edge_candidates[e]) continue;
+    const AxisEdgeData& d = items[e];
+    KeyBuilder::Key best;
+    // images_of(i) holds, for each of the eight maps in turn, one image per circle.
+    const std::vector<Image>& iu = images_of(d.u);
+    const std::vector<Image>& iv = images_of(d.v);
+    const std::size_t cu = iu.size() / 8, cv = iv.size() / 8;
+    for (int a = 0; a < 8; ++a) {
+      Obj focus, line;
+      if (d.parabolic) {
+        focus = transform_site(s, s.is_point(d.site_a) ? d.site_a : d.site_b, kLinear[a]);
+        line = transform_site(s, s.is_point(d.site_a) ? d.site_b : d.site_a, kLinear[a]);
+      }
+      for (int order = 0; order < 2; ++order)
+        for (std::size_t x = 0; x < cu; ++x)
+          for (std::size_t y = 0; y < cv; ++y) {
+            KeyBuilder k;
+            k.codes[k.ncodes++] = d.parabolic;
+            k.add(order ? iv[a * cv + y] : iu[a * cu + x]);
+            k.add(order ? iu[a * cu + x] : iv[a * cv + y]);
+            if (d.parabolic) {
+              k.obj[k.objects++] = focus;
+              k.obj[k.objects++] = line;
+            }
+            const KeyBuilder::Key key = k.build();
+            if (best.size == 0 || key < best) best = key;
+          }
+    }
+    const auto [it, fresh] = seen.emplace(best.vec(), e);
+    if (!fresh) edge_uf.unite(e, it->second);
+  }
+}
+
+}  // namespace grassfire
