@@ -228,49 +228,4 @@ int BurnTimes::compare(TimeId a, TimeId b) const {
   return exact_sign(difference(a, b), a, b);
 }
 
-int BurnTimes::compare_quench(TimeId a, TimeId b, std::uint32_t edge, TimeId c) const {
-  const Interval q = half(records_[a].value + records_[b].value + graph_->edge(edge).length);
-  const int quick = certified_sign(q - records_[c].value);
-  if (quick != kUndecided) {
-    ++stats_.filter_decided;
-    return quick;
-  }
-  // The same stages as compare(), on 2 (q - c) = a + b + length - 2 c.
-  const LongInterval& la = long_value(a);
-  const LongInterval& lb = long_value(b);
-  const LongInterval& lc = long_value(c);
-  const LongInterval twice = (la + lb + graph_->geometry().enclose_length_long(edge)) - (lc + lc);
-  if (twice.lo > 0 || twice.hi < 0) {
-    ++stats_.extended_decided;
-    return twice.lo > 0 ? 1 : -1;
-  }
-  const Refined& ra = refined(a);
-  const Refined& rb = refined(b);
-  const Refined& rc = refined(c);
-  MpfrBounds d2(kRefinedBits);
-  graph_->geometry().enclose_length(edge, d2.lo, d2.hi);
-  mpfr_add(d2.lo, d2.lo, ra.lo, MPFR_RNDD);
-  mpfr_add(d2.lo, d2.lo, rb.lo, MPFR_RNDD);
-  mpfr_sub(d2.lo, d2.lo, rc.hi, MPFR_RNDD);
-  mpfr_sub(d2.lo, d2.lo, rc.hi, MPFR_RNDD);
-  mpfr_add(d2.hi, d2.hi, ra.hi, MPFR_RNDU);
-  mpfr_add(d2.hi, d2.hi, rb.hi, MPFR_RNDU);
-  mpfr_sub(d2.hi, d2.hi, rc.lo, MPFR_RNDU);
-  mpfr_sub(d2.hi, d2.hi, rc.lo, MPFR_RNDU);
-  if (mpfr_sgn(d2.lo) > 0 || mpfr_sgn(d2.hi) < 0) {
-    ++stats_.mpfr_decided;
-    return mpfr_sgn(d2.lo) > 0 ? 1 : -1;
-  }
-  // 2 (q - c), atoms of equal class cancelled before any exact form is built.
-  GraphSum d = as_graph_sum(a) + as_graph_sum(b) - as_graph_sum(c) - as_graph_sum(c);
-  d.add_length(edge);
-  d.cancel(*graph_);
-  if (d.empty()) {
-    ++stats_.exact_zero;
-    ++stats_.class_zero;
-    return 0;
-  }
-  return sign(d.exact(*graph_), &stats_);
-}
-
 }  // namespace grassfire

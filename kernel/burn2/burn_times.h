@@ -65,8 +65,6 @@ class BurnTimes {
   // Certified sign of a - b (0 exactly when equal, up to the uncertified case of
   // exact_sum.h for transcendental edge lengths).
   int compare(TimeId a, TimeId b) const;
-  // Certified sign of (a + b + length(edge)) / 2 - c; used to compare quench values.
-  int compare_quench(TimeId a, TimeId b, std::uint32_t edge, TimeId c) const;
   // The value class of t (see above): equal classes, provably equal times.
   std::uint32_t value_class(TimeId t) const;
 
