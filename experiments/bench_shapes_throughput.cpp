@@ -41,14 +41,6 @@ namespace {
 using Clock = std::chrono::steady_clock;
 double since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
 
-// The larger side of the bounding box: the "dimension of the shape" of 3.5.1.
-double box_size(const Shape2& s) {
-  double x0 = INFINITY, y0 = INFINITY, x1 = -INFINITY, y1 = -INFINITY;
-  for (const Ring& r : s.rings)
-    for (const Point2& p : r.points) x0 = std::fmin(x0, p.x), x1 = std::fmax(x1, p.x), y0 = std::fmin(y0, p.y), y1 = std::fmax(y1, p.y);
-  return std::fmax(x1 - x0, y1 - y0);
-}
-
 struct Row {
   std::string file;
   std::size_t vertices = 0;
@@ -74,7 +66,7 @@ void run_exact(const Shape2& s, Row& r) {
     const AxisEccentricity ecc = distance_to_ema(g, *e.burning);
     const RatePruning rp = rate_pruning(g);
     PruningThresholds t;
-    t.erosion = mpq_class(0.05 * box_size(s));
+    t.erosion = mpq_class(0.05 * shape_dimension(s));
     t.tubularity = 1 - 1 / std::sqrt(2.0);
     t.topology = true;
     const PrunedAxis pruned = prune_axis(g, *e.burning, t);

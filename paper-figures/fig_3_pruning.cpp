@@ -7,14 +7,6 @@
 
 namespace grassfire::figures {
 
-double shape_dimension(const Shape2& shape) {
-  double x0 = INFINITY, y0 = INFINITY, x1 = -INFINITY, y1 = -INFINITY;
-  for (const Ring& r : shape.rings)
-    for (const Point2& p : r.points)
-      x0 = std::min(x0, p.x), x1 = std::max(x1, p.x), y0 = std::min(y0, p.y), y1 = std::max(y1, p.y);
-  return std::max(x1 - x0, y1 - y0);
-}
-
 const mpq_class& tubularity_threshold() {
   static const mpq_class s(3, 10);
   return s;

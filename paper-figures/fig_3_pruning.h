@@ -12,9 +12,8 @@
 
 namespace grassfire::figures {
 
-// "0.05 of the dimension of the shape" (3.5.1) is taken as 0.05 of the larger side of the
-// shape's bounding box (as `grassfire prune2d --relative`).
-double shape_dimension(const Shape2& shape);
+// "0.05 of the dimension of the shape" (3.5.1) is 0.05 of shape_dimension (shapes/shape2.h:
+// the larger side of the bounding box), as `grassfire prune2d --relative` takes it.
 
 // The ST threshold of Figs. 3.6 (e) and 3.7: 3/10, just above 1 - 1/sqrt(2) ~ 0.2929, the
 // ST all along a branch into a right-angled corner, so that such branches are removed.

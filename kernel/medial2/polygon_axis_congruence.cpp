@@ -88,40 +88,10 @@ Obj transform_site(const PolygonSites& s, std::uint32_t site, const int* a) {
 // are sorted.
 Image transform_circle(const PolygonSites& s, const VoronoiCircle& c, const int* a, bool unique) {
   Image im;
-  int root = c.root;
   im.count = c.kind == CircleKind::Apex ? 1 : 3;
   for (int i = 0; i < im.count; ++i) im.obj[i] = transform_site(s, c.sites[i], a);
-  auto& o = im.obj;
-  if (a[0] * a[3] - a[1] * a[2] < 0) {
-    if (c.kind == CircleKind::PPS || c.kind == CircleKind::PPSLinear) std::swap(o[0], o[1]);
-    if (c.kind == CircleKind::PSSParallel) std::swap(o[1], o[2]);
-  }
-  switch (c.kind) {
-    case CircleKind::Apex: root = 0; break;
-    case CircleKind::PPP:
-    case CircleKind::SSS:
-      std::sort(o.begin(), o.end());
-      root = 0;
-      break;
-    case CircleKind::PSS:
-      if (o[2] < o[1]) std::swap(o[1], o[2]);
-      break;
-    case CircleKind::PPS:
-      if (o[1] < o[0]) {
-        std::swap(o[0], o[1]);
-        root = -root;
-      }
-      break;
-    case CircleKind::PPSLinear:
-      if (o[1] < o[0]) std::swap(o[0], o[1]);
-      root = 0;
-      break;
-    case CircleKind::PSSParallel:
-      if (unique && o[2] < o[1]) std::swap(o[1], o[2]);
-      root = 0;
-      break;
-  }
-  if (unique) root = 0;
+  if (a[0] * a[3] - a[1] * a[2] < 0) reflect_roles(c.kind, im.obj);
+  const int root = canonical_roles(c.kind, c.root, im.obj, unique);
   im.code = static_cast<std::int64_t>(c.kind) * 4 + root + 1;
   return im;
 }

@@ -45,32 +45,8 @@ struct CircleKeyHash {
 
 CircleKey key_of(VoronoiCircle c) {
   auto& s = c.sites;
-  int root = c.root;
-  switch (c.kind) {
-    case CircleKind::Apex:
-      s[1] = s[2] = 0;
-      root = 0;
-      break;
-    case CircleKind::PPP:
-    case CircleKind::SSS:
-      std::sort(s.begin(), s.end());
-      root = 0;
-      break;
-    case CircleKind::PSS:
-      if (s[1] > s[2]) std::swap(s[1], s[2]);
-      break;
-    case CircleKind::PPS:
-      if (s[0] > s[1]) {
-        std::swap(s[0], s[1]);
-        root = -root;
-      }
-      break;
-    case CircleKind::PPSLinear:
-      if (s[0] > s[1]) std::swap(s[0], s[1]);
-      root = 0;
-      break;
-    case CircleKind::PSSParallel: root = 0; break;
-  }
+  if (c.kind == CircleKind::Apex) s[1] = s[2] = 0;
+  const int root = canonical_roles(c.kind, c.root, s, false);
   CircleKey k;
   k.v = {static_cast<std::uint32_t>(c.kind) * 4u + static_cast<std::uint32_t>(root + 1), s[0], s[1], s[2]};
   return k;
@@ -80,10 +56,7 @@ CircleKey key_of(VoronoiCircle c) {
 VoronoiCircle image(const PolygonSites& s, const PolygonSymmetry& phi, const VoronoiCircle& c) {
   VoronoiCircle m = c;
   for (std::uint32_t& site : m.sites) site = map_site(s, phi, site);
-  if (phi.reverses) {
-    if (c.kind == CircleKind::PPS || c.kind == CircleKind::PPSLinear) std::swap(m.sites[0], m.sites[1]);
-    if (c.kind == CircleKind::PSSParallel) std::swap(m.sites[1], m.sites[2]);
-  }
+  if (phi.reverses) reflect_roles(c.kind, m.sites);
   return m;
 }
 

@@ -64,6 +64,7 @@
 // per node, 16 per edge, more for contracted groups).
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <algorithm>
 #include <unordered_map>
@@ -73,6 +74,50 @@
 #include "medial2/union_find.h"
 
 namespace grassfire {
+
+// The roles of a circle's sites under an isometry (voronoi_circle.h roles): a reflection
+// exchanges the two points of a PPS circle (P, Q keep the segment on the same side only
+// in the other order) and the two parallel lines of a PSS-parallel circle.
+template <class T>
+void reflect_roles(CircleKind kind, std::array<T, 3>& s) {
+  if (kind == CircleKind::PPS || kind == CircleKind::PPSLinear) std::swap(s[0], s[1]);
+  if (kind == CircleKind::PSSParallel) std::swap(s[1], s[2]);
+}
+
+// Puts the roles the circle's formula is symmetric in into sorted order and returns the
+// root that names the same circle (PPS: exchanging P and Q flips the root's sign); kinds
+// with one circle per set of conditions get root 0. `unique`: at most one circle meets
+// the conditions, so the root is no part of the value and is dropped, and the two lines of
+// a PSS-parallel circle are symmetric too. For Apex only s[0] is a role.
+template <class T>
+int canonical_roles(CircleKind kind, int root, std::array<T, 3>& s, bool unique) {
+  switch (kind) {
+    case CircleKind::Apex: root = 0; break;
+    case CircleKind::PPP:
+    case CircleKind::SSS:
+      std::sort(s.begin(), s.end());
+      root = 0;
+      break;
+    case CircleKind::PSS:
+      if (s[2] < s[1]) std::swap(s[1], s[2]);
+      break;
+    case CircleKind::PPS:
+      if (s[1] < s[0]) {
+        std::swap(s[0], s[1]);
+        root = -root;
+      }
+      break;
+    case CircleKind::PPSLinear:
+      if (s[1] < s[0]) std::swap(s[0], s[1]);
+      root = 0;
+      break;
+    case CircleKind::PSSParallel:
+      if (unique && s[2] < s[1]) std::swap(s[1], s[2]);
+      root = 0;
+      break;
+  }
+  return unique ? 0 : root;
+}
 
 struct PolygonSymmetry {
   int a00 = 1, a01 = 0, a10 = 0, a11 = 1;  // the linear part A

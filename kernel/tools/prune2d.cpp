@@ -14,7 +14,6 @@
 #include <algorithm>
 #include <cmath>
 #include <iostream>
-#include <numeric>
 
 #include <mpfr.h>
 #include <nlohmann/json.hpp>
@@ -22,6 +21,7 @@
 #include "burn2/axis_pruning.h"
 #include "io/atomic_file.h"
 #include "io/disk_list.h"
+#include "medial2/union_find.h"
 #include "pipeline/edf2d.h"
 #include "shapes/builtin_shapes.h"
 #include "shapes/load_shape.h"
@@ -33,17 +33,6 @@ namespace grassfire::cli {
 namespace {
 
 using Json = nlohmann::ordered_json;
-
-// The larger side of the shape's bounding box: the "dimension of the shape" of 3.5.1.
-double shape_size(const Shape2& shape) {
-  double x0 = INFINITY, y0 = INFINITY, x1 = -INFINITY, y1 = -INFINITY;
-  for (const Ring& r : shape.rings)
-    for (const Point2& p : r.points) {
-      x0 = std::fmin(x0, p.x), x1 = std::fmax(x1, p.x);
-      y0 = std::fmin(y0, p.y), y1 = std::fmax(y1, p.y);
-    }
-  return std::fmax(x1 - x0, y1 - y0);
-}
 
 // The double nearest to q (mpq_get_d truncates).
 double nearest(const mpq_class& q) {
@@ -106,16 +95,14 @@ std::string pruned_json(const std::string& shape, const char* axis, const Prunin
 }
 
 std::uint64_t component_count(const PrunedAxis& p) {
-  std::vector<std::uint32_t> parent(p.nodes.size());
-  std::iota(parent.begin(), parent.end(), 0u);
-  auto find = [&](std::uint32_t x) {
-    while (parent[x] != x) x = parent[x] = parent[parent[x]];
-    return x;
-  };
-  std::uint64_t components = p.nodes.size();
+  UnionFind components(p.nodes.size());
+  std::uint64_t count = p.nodes.size();
   for (const PrunedEdge& e : p.edges)
-    if (find(e.u) != find(e.v)) parent[find(e.u)] = find(e.v), --components;
-  return components;
+    if (components.find(e.u) != components.find(e.v)) {
+      components.unite(e.u, e.v);
+      --count;
+    }
+  return count;
 }
 
 int prune2d_main(int argc, char** argv) {
@@ -145,7 +132,7 @@ int prune2d_main(int argc, char** argv) {
   if (t.tubularity > 1) throw std::invalid_argument("option --st must be at most 1");
   t.topology = opt.has("topology");
   const Shape2 shape = load_shape(opt.arg("SHAPE"));
-  const double size = shape_size(shape);
+  const double size = shape_dimension(shape);
   if (opt.has("relative")) t.erosion *= mpq_class(size);
   Edf2dOptions options;
   options.samples = static_cast<std::size_t>(opt.get_long("samples", 8, 1000000000L));
