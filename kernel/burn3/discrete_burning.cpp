@@ -6,6 +6,7 @@
 #include <queue>
 
 #include "burn3/steiner_graph.h"
+#include "io/progress.h"
 
 namespace grassfire {
 namespace {
@@ -94,6 +95,7 @@ class Burner {
 
   void burn(std::uint32_t node, double time) {
     bt_[node] = time;
+    progress_.advance();
     g_.for_each_move(node, [&](std::uint32_t y, std::uint32_t local, double length) {
       if (std::isfinite(bt_[y])) return;
       const std::uint64_t s = slot(y, local);
@@ -112,6 +114,7 @@ class Burner {
   std::vector<double> bt_;
   std::vector<std::uint8_t> done_;
   std::priority_queue<Arrival, std::vector<Arrival>, std::greater<Arrival>> heap_;
+  Progress progress_{"burn3d: discrete burning, points burned", g_.node_count()};
 };
 
 }  // namespace
