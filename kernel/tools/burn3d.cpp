@@ -4,97 +4,15 @@
 #include <iostream>
 #include <nlohmann/json.hpp>
 
-#include "burn3/discrete_burning.h"
-#include "complex3/builders/medial_axis_input.h"
 #include "complex3/medial_complex.h"
-#include "complex3/synthetic_complexes.h"
 #include "io/complex_export.h"
-#include "io/complex_ma.h"
-#include "io/complex_text.h"
-#include "io/mesh_io.h"
+#include "io/progress.h"
+#include "pipeline/burn3d.h"
 #include "tools/commands.h"
 #include "tools/options.h"
 
 namespace grassfire::cli {
 namespace {
-
-bool is_synthetic(const std::string& input) {
-  for (const std::string& n : synthetic_complex_names())
-    if (input == n || (n == "book:K" && input.rfind("book:", 0) == 0) || (n == "box:A:B:C" && input.rfind("box:", 0) == 0))
-      return true;
-  return false;
-}
-
-// The complex to burn: a synthetic complex, a .ma medial axis, a mesh burned as itself
-// (--mesh-is-complex), or the medial axis of a shape built as `grassfire medial3d` builds
-// it (complex3/builders/medial_axis_input.h: convex meshes and half-spaces exactly, ball
-// lists exactly, other closed meshes through their inner polar balls).
-RawComplex load_complex(const std::string& input, bool mesh_is_complex) {
-  if (is_synthetic(input)) return synthetic_complex(input);
-  const std::string ext = file_extension(input);
-  if (ext == "ma") return read_ma(input);
-  if (mesh_is_complex) {
-    if (ext != "off" && ext != "ply" && ext != "obj")
-      throw std::runtime_error(input + ": --mesh-is-complex needs a mesh (.off, .ply or .obj)");
-    return mesh_as_complex(read_triangle_mesh(input));
-  }
-  if (ext == "off" || ext == "ply" || ext == "obj" || ext == "hs" || ext == "halfspaces" || ext == "cin" ||
-      ext == "balls") {
-    MedialAxisBuild axis = build_medial_axis(input, MedialInputKind::Auto);
-    std::cerr << "burn3d: " << input << ": medial axis by the " << axis.kind << " builder\n";
-    return std::move(axis.complex);
-  }
-  std::string names;
-  for (const std::string& n : synthetic_complex_names()) names += " " + n;
-  throw std::runtime_error("'" + input + "' is neither a synthetic complex (" + names.substr(1) +
-                           ") nor a file with extension .ma, .off, .ply, .obj, .hs, .halfspaces, .cin or .balls");
-}
-
-nlohmann::json finite_or_null(const std::vector<double>& values) {
-  nlohmann::json a = nlohmann::json::array();
-  for (double v : values) a.push_back(std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr));
-  return a;
-}
-
-nlohmann::json report(const std::string& input, const MedialComplex& mc, const DiscreteBurning& d) {
-  nlohmann::json j;
-  j["input"] = input;
-  j["method"] = "discrete";
-  j["spacing"] = d.spacing;
-  j["complex"] = {{"vertices", mc.vertex_count()},
-                  {"edges", mc.edge_count()},
-                  {"triangles", mc.triangle_count()},
-                  {"segments", mc.count(EdgeStratum::Dangling)},
-                  {"border_edges", mc.count(EdgeStratum::Border)},
-                  {"singular_edges", mc.count(EdgeStratum::Singular)},
-                  {"singular_points", mc.count(VertexKind::SingularPoint)},
-                  {"sheets", mc.sheets().size()}};
-  j["stats"] = {{"steiner_points", d.stats.steiner_points},
-                {"arrivals_pushed", d.stats.pushes},
-                {"arrivals_popped", d.stats.pops},
-                {"seconds", d.stats.seconds}};
-  std::size_t unburned = 0;
-  double max_bt = 0, max_et = 0;
-  for (std::uint32_t v = 0; v < mc.vertex_count(); ++v) {
-    if (!std::isfinite(d.vertex_bt[v])) {
-      ++unburned;
-      continue;
-    }
-    max_bt = std::max(max_bt, d.vertex_bt[v]);
-    max_et = std::max(max_et, d.vertex_et[v]);
-  }
-  j["summary"] = {{"burned_vertices", mc.vertex_count() - unburned},
-                  {"unburned_vertices", unburned},
-                  {"max_bt", max_bt},
-                  {"max_et", max_et}};
-  std::vector<double> x, y, z, r;
-  for (const ComplexVertex& v : mc.vertices()) {
-    x.push_back(v.approx[0]), y.push_back(v.approx[1]), z.push_back(v.approx[2]), r.push_back(v.radius);
-  }
-  j["vertex_values"] = {{"x", x}, {"y", y}, {"z", z}, {"R", r}, {"BT", finite_or_null(d.vertex_bt)},
-                        {"ET", finite_or_null(d.vertex_et)}};
-  return j;
-}
 
 int run_burn3d(int argc, char** argv) {
   Options opt("burn3d", "Burning time BT (Definitions 9-10) and ET = BT - R on the medial axis of a 3D shape.");
@@ -117,22 +35,19 @@ int run_burn3d(int argc, char** argv) {
     throw std::runtime_error("method '" + opt.get("method") + "' is not available: only 'discrete' (the exact "
                              "sweep-event engine is not part of this build)");
   const std::string input = opt.arg("INPUT");
-  const MedialComplex mc(load_complex(input, opt.has("mesh-is-complex")));
+  Progress progress("burn3d " + input, 3);
+  progress.stage("loading or building the complex");
+  const MedialComplex mc(load_burn_complex(input, opt.has("mesh-is-complex")));
   mc.validate();
-  DiscreteBurningOptions o;
-  if (opt.has("spacing")) {
-    o.spacing = opt.get_double("spacing");
-  } else {
-    Vec3d lo = mc.vertex(0).approx, hi = lo;
-    for (const ComplexVertex& v : mc.vertices())
-      for (int i = 0; i < 3; ++i) lo[i] = std::min(lo[i], v.approx[i]), hi[i] = std::max(hi[i], v.approx[i]);
-    o.spacing = std::hypot(hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]) / 100;
-    if (!(o.spacing > 0)) o.spacing = 1;
-  }
-  if (!(o.spacing > 0) || !std::isfinite(o.spacing)) throw std::runtime_error("--spacing must be a positive number");
+  progress.advance();
+  progress.stage("burning");
+  Burn3dOptions o;
+  if (opt.has("spacing")) o.spacing = opt.get_double("spacing");
   o.max_points = static_cast<std::uint64_t>(opt.get_long("max-points", 1, 2'000'000'000L));
-  const DiscreteBurning d = burn_discrete(mc, o);
-  const nlohmann::json j = report(input, mc, d);
+  const DiscreteBurning d = burn3d_discrete(mc, o);
+  progress.advance();
+  progress.stage("writing");
+  const nlohmann::json j = burn3d_report(input, mc, d);
   const std::vector<VertexField> fields = {{"R", j["vertex_values"]["R"].get<std::vector<double>>()},
                                            {"BT", d.vertex_bt},
                                            {"ET", d.vertex_et}};
@@ -143,6 +58,9 @@ int run_burn3d(int argc, char** argv) {
     out << j.dump(1) << '\n';
     if (!out) throw std::runtime_error(opt.get("json") + ": cannot write");
   }
+  progress.advance();
+  progress.done();
+  if (opt.has("quiet")) return 0;
   std::cout << "burn3d " << input << ": " << mc.vertex_count() << " vertices, " << mc.triangle_count() << " triangles, "
             << mc.count(EdgeStratum::Singular) << " singular edges, " << mc.sheets().size() << " sheets\n"
             << "discrete h = " << d.spacing << ": " << d.stats.steiner_points << " Steiner points, "
