@@ -84,6 +84,7 @@ void Progress::item(const std::string& what) {
 
 void Progress::stage(const std::string& what) {
   item_ = what;
+  staged_ = true;  // stages differ in cost: a time estimate from their count would mislead
   if (!enabled_) return;
   last_ = std::chrono::steady_clock::now();
   draw();
@@ -105,7 +106,7 @@ void Progress::draw() {
   else
     std::snprintf(counts, sizeof counts, "%llu", static_cast<unsigned long long>(done_));
   char eta[48] = "";
-  if (total_ > 0 && done_ > 0 && done_ < total_)
+  if (total_ > 0 && done_ > 0 && done_ < total_ && !staged_)
     std::snprintf(eta, sizeof eta, ", about %.0f s left", elapsed * static_cast<double>(total_ - done_) / done_);
   std::string line = task_ + ": " + counts + ", " + std::to_string(static_cast<long long>(elapsed)) + " s" + eta;
   if (!item_.empty()) line += " -- " + item_;

@@ -62,7 +62,7 @@ class Progress {
 
   std::string task_, item_;
   std::uint64_t total_ = 0, done_ = 0, calls_ = 0;
-  bool enabled_ = false, terminal_ = false, drawn_ = false;
+  bool enabled_ = false, terminal_ = false, drawn_ = false, staged_ = false;  // staged: no time estimate
   std::chrono::steady_clock::time_point start_, last_;
 };
 
