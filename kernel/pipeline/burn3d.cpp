@@ -80,7 +80,10 @@ nlohmann::json burn3d_report(const std::string& input, const MedialComplex& mc, 
                   {"singular_edges", mc.count(EdgeStratum::Singular)},
                   {"singular_points", mc.count(VertexKind::SingularPoint)},
                   {"sheets", mc.sheets().size()}};
-  j["stats"] = {{"steiner_points", d.stats.steiner_points},
+  j["sources"] = 0;  // point sources and queries: `grassfire burn3d --sources/--at` (tools/burn3d.cpp)
+  j["queries"] = 0;
+  j["stats"] = {{"spacing", d.spacing},
+                {"steiner_points", d.stats.steiner_points},
                 {"arrivals_pushed", d.stats.pushes},
                 {"arrivals_popped", d.stats.pops},
                 {"seconds", d.stats.seconds}};

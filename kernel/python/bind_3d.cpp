@@ -65,10 +65,11 @@ py::dict medial3d(const std::string& path, const std::string& kind, int samples)
 // The methods and inputs burn3d takes in this build; what is not built yet raises
 // NotImplementedError with the program's message.
 void check_burn_request(const std::string& method, const py::object& sources, const py::object& at) {
-  const std::string unavailable = "method '" + method + "' is not available: only 'discrete' (the exact "
-                                  "sweep-event engine is not part of this build)";
-  if (method == "exact") raise_not_implemented(unavailable);
-  if (method != "discrete") throw py::value_error(unavailable);
+  // The program's messages (tools/burn3d.cpp, tools/burn3d_exact.cpp).
+  if (method == "exact")
+    raise_not_implemented("method 'exact' is not available yet: the exact window-propagation engine (issue 8) "
+                          "has not landed; use --method discrete");
+  if (method != "discrete") throw py::value_error("unknown method '" + method + "' (discrete or exact)");
   if (!sources.is_none()) raise_not_implemented("sources: point sources are not part of this build");
   if (!at.is_none()) raise_not_implemented("at: query points are not part of this build");
 }
