@@ -4,8 +4,10 @@
 // discrete baseline (burn3/discrete_burning.h) at a spacing chosen as `grassfire burn3d`
 // chooses it, and the JSON report the program writes with --json (format below). This is
 // what `grassfire burn3d` and the Python module's grassfire.burn3d run, so the two agree.
-// Report: {"input", "method", "spacing", "complex": {counts}, "stats": {steiner_points,
-// arrivals_pushed, arrivals_popped, seconds}, "summary": {burned_vertices,
+// Report (the members `grassfire burn3d --json` writes for the discrete method without
+// sources or queries): {"input", "method", "spacing", "complex": {counts}, "sources": 0,
+// "queries": 0, "stats": {spacing, steiner_points, arrivals_pushed, arrivals_popped,
+// seconds}, "summary": {burned_vertices,
 // unburned_vertices, max_bt, max_et}, "vertex_values": {"x", "y", "z", "R", "BT", "ET"}}
 // with null for BT and ET where nothing burns.
 // Contract: errors are exceptions whose message names the input and the problem.
