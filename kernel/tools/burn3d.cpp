@@ -23,6 +23,7 @@
 #include "io/atomic_file.h"
 #include "io/complex_export.h"
 #include "io/complex_text.h"
+#include "io/progress.h"
 #include "io/point_csv.h"
 #include "tools/burn3d_methods.h"
 #include "tools/commands.h"
@@ -43,6 +44,7 @@ const MethodRow kMethods[] = {{"discrete", burn_by_discrete}, {"exact", burn_by_
 class Progress {
  public:
   void operator()(const std::string& stage, double fraction) {
+    if (!progress_enabled()) return;  // io/progress.h: a terminal, or --progress; never with --quiet
     const double now = seconds();
     if (now < 2.0 || now - last_ < 1.0) return;
     last_ = now;
@@ -197,6 +199,7 @@ int run_burn3d(int argc, char** argv) {
   if (opt.has("ply")) write_complex_ply(mc, fields, opt.get("ply"));
   if (opt.has("vtk")) write_complex_vtk(mc, fields, opt.get("vtk"));
   if (opt.has("json")) write_file_atomically(opt.get("json"), j.dump(1) + "\n");
+  if (opt.has("quiet")) return 0;
   std::cout << "burn3d " << input << ": " << mc.vertex_count() << " vertices, " << mc.triangle_count() << " triangles, "
             << mc.count(EdgeStratum::Singular) << " singular edges, " << mc.sheets().size() << " sheets, "
             << request.sources.size() << " point sources, " << request.queries.size() << " queries\n"

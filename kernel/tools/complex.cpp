@@ -2,6 +2,7 @@
 #include <iostream>
 
 #include "burn3/point_sources.h"
+#include "io/progress.h"
 #include "complex3/medial_complex.h"
 #include "io/complex_export.h"
 #include "io/complex_json.h"
@@ -31,7 +32,7 @@ int run_complex(int argc, char** argv) {
   mc.validate();
   if (opt.has("json")) write_complex_json(raw, opt.get("json"));
   if (opt.has("ma") && !write_ma_file(raw, opt.get("ma")))
-    std::cerr << "complex: " << opt.get("ma") << ": some values are not decimals and were written as nearest doubles\n";
+    note("complex: " + opt.get("ma") + ": some values are not decimals and were written as nearest doubles");
   if (opt.has("ply")) {
     std::vector<double> r;
     for (const ComplexVertex& v : mc.vertices()) r.push_back(v.radius);

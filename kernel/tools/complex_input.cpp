@@ -9,6 +9,7 @@
 #include "io/complex_json.h"
 #include "io/complex_ma.h"
 #include "io/mesh_io.h"
+#include "io/progress.h"
 
 namespace grassfire::cli {
 namespace {
@@ -42,7 +43,7 @@ RawComplex load_complex(const std::string& input, bool mesh_is_complex, const st
   if (ext == "off" || ext == "ply" || ext == "obj" || ext == "hs" || ext == "halfspaces" || ext == "cin" ||
       ext == "balls") {
     MedialAxisBuild axis = build_medial_axis(input, MedialInputKind::Auto);
-    std::cerr << command << ": " << input << ": medial axis by the " << axis.kind << " builder\n";
+    note(command + ": " + input + ": medial axis by the " + axis.kind + " builder");
     return std::move(axis.complex);
   }
   std::string names;
