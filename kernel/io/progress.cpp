@@ -3,6 +3,7 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <stdexcept>
 
@@ -70,6 +71,9 @@ void Progress::done() {
   enabled_ = false;
   if (terminal_) {
     std::fprintf(stderr, "\r\033[K");  // clear the line: the result lines follow
+  } else if (fraction_ >= 0) {
+    const double seconds = seconds_between(start_, std::chrono::steady_clock::now());
+    std::fprintf(stderr, "%s: done, %.1f s\n", task_.c_str(), seconds);
   } else {
     std::fprintf(stderr, "%s: done, %llu steps, %.1f s\n", task_.c_str(), static_cast<unsigned long long>(done_),
                  seconds_between(start_, std::chrono::steady_clock::now()));
@@ -90,6 +94,15 @@ void Progress::stage(const std::string& what) {
   draw();
 }
 
+void Progress::fraction(const std::string& stage, double done) {
+  fraction_ = std::min(std::max(done, 0.0), 1.0);
+  if (stage == item_) {
+    if (enabled_) maybe_draw();
+    return;
+  }
+  this->stage(stage);
+}
+
 void Progress::maybe_draw() {
   const auto now = std::chrono::steady_clock::now();
   if (seconds_between(last_, now) < (terminal_ ? 0.2 : 10.0)) return;
@@ -100,7 +113,9 @@ void Progress::maybe_draw() {
 void Progress::draw() {
   const double elapsed = seconds_between(start_, last_);
   char counts[96];
-  if (total_ > 0)
+  if (fraction_ >= 0)
+    std::snprintf(counts, sizeof counts, "%.0f%%", 100.0 * fraction_);
+  else if (total_ > 0)
     std::snprintf(counts, sizeof counts, "%llu/%llu (%.0f%%)", static_cast<unsigned long long>(done_),
                   static_cast<unsigned long long>(total_), 100.0 * static_cast<double>(done_) / total_);
   else

@@ -52,6 +52,10 @@ class Progress {
   void item(const std::string& what);
   // Names the stage a long run enters and draws at once (one line per stage in a log).
   void stage(const std::string& what);
+  // For a run that knows the fraction done of its current stage (in [0, 1]) rather than a
+  // step count (the burn3d methods, pipeline/burn3d_methods.h): shows "stage 45%"; a new
+  // stage draws at once, the same stage when due.
+  void fraction(const std::string& stage, double done);
   // Ends the report: clears the terminal line (call it before printing results) or logs
   // the total; later calls do nothing.
   void done();
@@ -62,6 +66,7 @@ class Progress {
 
   std::string task_, item_;
   std::uint64_t total_ = 0, done_ = 0, calls_ = 0;
+  double fraction_ = -1;  // >= 0 once fraction() is used: shown instead of the step counts
   bool enabled_ = false, terminal_ = false, drawn_ = false, staged_ = false;  // staged: no time estimate
   std::chrono::steady_clock::time_point start_, last_;
 };
