@@ -4,7 +4,7 @@
 // bind_2d.cpp (edf2d), bind_3d.cpp (medial3d, burn3d). Errors: the kernel's exceptions
 // become Python exceptions with the same message as the program prints after
 // "grassfire <command>: " (std::invalid_argument -> ValueError, other std::exception ->
-// RuntimeError); what this build lacks raises NotImplementedError.
+// RuntimeError).
 #pragma once
 
 #include <pybind11/pybind11.h>
@@ -17,9 +17,6 @@ namespace grassfire::python {
 
 void bind_2d(pybind11::module_& m);
 void bind_3d(pybind11::module_& m);
-
-// Raises NotImplementedError(message) (the GIL must be held).
-[[noreturn]] void raise_not_implemented(const std::string& message);
 
 // The image options of a shape given as an image file, from a dict of the program's option
 // names ("connectivity", "contour", "foreground", "threshold", "largest").

@@ -19,11 +19,6 @@ namespace py = pybind11;
 
 namespace grassfire::python {
 
-void raise_not_implemented(const std::string& message) {
-  PyErr_SetString(PyExc_NotImplementedError, message.c_str());
-  throw py::error_already_set();
-}
-
 ImageShapeOptions image_options(const py::dict& options) {
   std::map<std::string, std::string> named;
   for (const auto& [key, value] : options) {

@@ -2,13 +2,13 @@
 #include <iostream>
 
 #include "burn3/point_sources.h"
-#include "io/progress.h"
 #include "complex3/medial_complex.h"
 #include "io/complex_export.h"
 #include "io/complex_json.h"
 #include "io/complex_ma.h"
+#include "io/progress.h"
+#include "pipeline/complex_input.h"
 #include "tools/commands.h"
-#include "tools/complex_input.h"
 #include "tools/options.h"
 
 namespace grassfire::cli {
@@ -38,6 +38,7 @@ int run_complex(int argc, char** argv) {
     for (const ComplexVertex& v : mc.vertices()) r.push_back(v.radius);
     write_complex_ply(mc, {{"R", r}}, opt.get("ply"));
   }
+  if (opt.has("quiet")) return 0;
   std::cout << "complex " << input << ": " << mc.vertex_count() << " vertices, " << mc.edge_count() << " edges, "
             << mc.triangle_count() << " triangles, " << mc.count(EdgeStratum::Dangling) << " segments, "
             << mc.count(EdgeStratum::Border) << " border edges, " << mc.count(EdgeStratum::Singular)

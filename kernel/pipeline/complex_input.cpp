@@ -1,7 +1,6 @@
 // complex_input.cpp -- see complex_input.h.
-#include "tools/complex_input.h"
+#include "pipeline/complex_input.h"
 
-#include <iostream>
 #include <stdexcept>
 
 #include "complex3/builders/medial_axis_input.h"
@@ -11,7 +10,7 @@
 #include "io/mesh_io.h"
 #include "io/progress.h"
 
-namespace grassfire::cli {
+namespace grassfire {
 namespace {
 
 bool is_synthetic(const std::string& input) {
@@ -53,4 +52,4 @@ RawComplex load_complex(const std::string& input, bool mesh_is_complex, const st
                            ".balls");
 }
 
-}  // namespace grassfire::cli
+}  // namespace grassfire
