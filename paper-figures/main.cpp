@@ -15,6 +15,7 @@
 #include <sstream>
 
 #include "figure_registry.h"
+#include "io/xml_escape.h"
 
 namespace grassfire::figures {
 
@@ -31,22 +32,6 @@ std::string gallery_name(const std::string& file) {
   return file;
 }
 
-// Captions are plain text: '<', '>' and '&' would otherwise start markup and cut them off.
-std::string html_escape(const std::string& text) {
-  std::string out;
-  for (char ch : text) {
-    if (ch == '<')
-      out += "&lt;";
-    else if (ch == '>')
-      out += "&gt;";
-    else if (ch == '&')
-      out += "&amp;";
-    else
-      out += ch;
-  }
-  return out;
-}
-
 void write_index(const std::string& dir, const std::vector<std::pair<FigureEntry, std::vector<FigureFile>>>& done) {
   std::ofstream os(dir + "/index.html");
   os << "<!doctype html>\n<html><head><meta charset=\"utf-8\"><title>grassfire: figures of Liu 2011</title>\n"
@@ -61,14 +46,14 @@ void write_index(const std::string& dir, const std::vector<std::pair<FigureEntry
     os << "<h2>Proof checks</h2>\n" << checks.rdbuf() << "\n";
   }
   for (const auto& [entry, files] : done) {
-    os << "<h2 id=\"" << entry.id << "\">" << html_escape(entry.title) << "</h2>\n";
+    os << "<h2 id=\"" << entry.id << "\">" << xml_escape(entry.title) << "</h2>\n";
     for (const FigureFile& f : files) {
       const std::string shown = gallery_name(f.file);
       if (shown.size() > 4 && shown.substr(shown.size() - 4) == ".png")
         os << "<figure><a href=\"" << f.file << "\"><img src=\"" << shown << "\" alt=\"" << f.file
-           << "\"></a><figcaption>" << html_escape(f.caption) << "</figcaption></figure>\n";
+           << "\"></a><figcaption>" << xml_escape(f.caption) << "</figcaption></figure>\n";
       else
-        os << "<p><a href=\"" << f.file << "\">" << f.file << "</a>: " << html_escape(f.caption) << "</p>\n";
+        os << "<p><a href=\"" << f.file << "\">" << f.file << "</a>: " << xml_escape(f.caption) << "</p>\n";
     }
   }
   os << "</body></html>\n";
