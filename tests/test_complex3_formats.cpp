@@ -12,6 +12,7 @@
 #include "io/complex_text.h"
 #include "io/mesh_io.h"
 #include "number/exact_sum.h"
+#include "support.h"
 
 using namespace grassfire;
 
@@ -19,7 +20,7 @@ namespace {
 
 std::string data(const std::string& name) { return std::string(GF_TEST_DATA) + "/3d/" + name; }
 
-std::string temp_path(const std::string& name) { return "/tmp/grassfire_complex3_" + name; }
+std::string temp_path(const std::string& name) { return grassfire::testing::temp_path("grassfire_complex3_" + name); }
 
 template <class F>
 std::string error_of(F f) {
