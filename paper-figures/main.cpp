@@ -3,7 +3,8 @@
 // usage: paper_figures [--out DIR] [--data DIR] [--only ID] [--list]
 // Writes every registered figure, then DIR/index.html, which shows each figure (as PNG,
 // produced from the SVG by run.sh) with its caption, and inlines DIR/proof-checks.html
-// (the proof-check report) when it exists. Exit code 1 when a generator fails.
+// (the proof-check report: rows, references, verdicts and the table of mutants each row
+// detected) when it exists. Exit code 1 when a generator fails.
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -39,7 +40,7 @@ void write_index(const std::string& dir, const std::vector<std::pair<FigureEntry
         "figure{display:inline-block;vertical-align:top;margin:0.5em;max-width:560px}"
         "img{max-width:100%;border:1px solid #ccc}figcaption{font-size:0.9em}"
         "table.checks{border-collapse:collapse}table.checks td,table.checks th{border:1px solid #bbb;padding:3px 6px}"
-        "td.pass{color:#070}td.fail{color:#b00;font-weight:bold}</style></head><body>\n"
+        "td.pass{color:#070}td.fail,p.fail{color:#b00;font-weight:bold}td.notchecked{color:#777}</style></head><body>\n"
         "<h1>grassfire: the figures of <i>Multi-Dimensional Medial Geometry</i> (Liu 2011), regenerated</h1>\n";
   std::ifstream checks(dir + "/proof-checks.html");
   if (checks) {
