@@ -4,6 +4,7 @@
 #include <gmpxx.h>
 
 #include <cstdint>
+#include <exception>
 #include <string>
 #include <tuple>
 #include <vector>
@@ -34,6 +35,17 @@ struct CliRun {
   std::string output;
 };
 CliRun run_cli(const std::string& args);
+
+// The message of the exception f() throws, or "no error".
+template <class F>
+std::string error_of(F f) {
+  try {
+    f();
+  } catch (const std::exception& e) {
+    return e.what();
+  }
+  return "no error";
+}
 
 // A path in this process's own temporary folder, which no other test process uses (CTest
 // runs test cases in parallel): <tmp>/grassfire_tests_<pid>/<name>, the folder created.
