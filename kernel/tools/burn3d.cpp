@@ -12,6 +12,7 @@
 #include "io/complex_ma.h"
 #include "io/complex_text.h"
 #include "io/mesh_io.h"
+#include "io/mesh_weld.h"
 #include "tools/commands.h"
 #include "tools/options.h"
 
@@ -34,20 +35,23 @@ RawComplex load_complex(const std::string& input, bool mesh_is_complex) {
   const std::string ext = file_extension(input);
   if (ext == "ma") return read_ma(input);
   if (mesh_is_complex) {
-    if (ext != "off" && ext != "ply" && ext != "obj")
-      throw std::runtime_error(input + ": --mesh-is-complex needs a mesh (.off, .ply or .obj)");
-    return mesh_as_complex(read_triangle_mesh(input));
+    if (!is_mesh_extension(ext))
+      throw std::runtime_error(input + ": --mesh-is-complex needs a mesh (.off, .ply, .obj or .stl)");
+    const TriangleMesh3 mesh = read_triangle_mesh(input);
+    if (mesh.cleanup.any()) std::cerr << "burn3d: " << input << ": " << describe_cleanup(mesh.cleanup) << "\n";
+    return mesh_as_complex(mesh);
   }
-  if (ext == "off" || ext == "ply" || ext == "obj" || ext == "hs" || ext == "halfspaces" || ext == "cin" ||
-      ext == "balls") {
+  if (is_mesh_extension(ext) || ext == "hs" || ext == "halfspaces" || ext == "cin" || ext == "balls") {
     MedialAxisBuild axis = build_medial_axis(input, MedialInputKind::Auto);
     std::cerr << "burn3d: " << input << ": medial axis by the " << axis.kind << " builder\n";
+    if (const std::string r = axis.report.value("/mesh_input/repairs"_json_pointer, ""); !r.empty())
+      std::cerr << "burn3d: " << input << ": " << r << "\n";
     return std::move(axis.complex);
   }
   std::string names;
   for (const std::string& n : synthetic_complex_names()) names += " " + n;
   throw std::runtime_error("'" + input + "' is neither a synthetic complex (" + names.substr(1) +
-                           ") nor a file with extension .ma, .off, .ply, .obj, .hs, .halfspaces, .cin or .balls");
+                           ") nor a file with extension .ma, .off, .ply, .obj, .stl, .hs, .halfspaces, .cin or .balls");
 }
 
 nlohmann::json finite_or_null(const std::vector<double>& values) {

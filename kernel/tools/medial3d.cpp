@@ -14,7 +14,7 @@ namespace {
 
 int run_medial3d(int argc, char** argv) {
   Options opt("medial3d", "The medial axis of a convex polyhedron, a union of balls or a closed mesh, as a 2-complex.");
-  opt.positional("INPUT", "a mesh (.off .ply .obj), a half-space list (.hs .halfspaces: one `a b c d` per line, "
+  opt.positional("INPUT", "a mesh (.off .ply .obj .stl), a half-space list (.hs .halfspaces: one `a b c d` per line, "
                           "a x + b y + c z <= d) or a ball list (.cin .balls: `x y z w`, w = r^2)")
       .option("kind", "K", "convex (exact axis of a convex polyhedron), balls (exact axis of the union), mesh "
                            "(axis of the inner polar balls of a closed mesh), auto (by extension; convex meshes "
@@ -29,6 +29,8 @@ int run_medial3d(int argc, char** argv) {
   const std::string input = opt.arg("INPUT");
   const int samples = static_cast<int>(opt.get_long("samples", 1, 64));
   const MedialAxisBuild axis = build_medial_axis(input, parse_medial_input_kind(opt.get("kind")), samples);
+  if (const std::string r = axis.report.value("/mesh_input/repairs"_json_pointer, ""); !r.empty())
+    std::cerr << "medial3d: " << input << ": " << r << "\n";
   const MedialComplex mc(axis.complex);
   mc.validate();
   if (opt.has("ma") && !write_ma_file(axis.complex, opt.get("ma")))
