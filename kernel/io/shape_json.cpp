@@ -2,8 +2,11 @@
 #include "io/shape_json.h"
 
 #include <cmath>
+#include <cstring>
 #include <nlohmann/json.hpp>
 #include <stdexcept>
+
+#include "io/quoted.h"
 
 namespace grassfire {
 
@@ -13,10 +16,25 @@ double coordinate(const nlohmann::json& point, const char* axis, std::size_t ind
   const std::string where = source + ": points[" + std::to_string(index) + "]";
   const auto it = point.find(axis);
   if (it == point.end()) throw ShapeFormatError(where + " has no \"" + axis + "\" member");
-  if (!it->is_number()) throw ShapeFormatError(where + "." + axis + " is not a number (" + it->dump() + ")");
+  if (!it->is_number()) throw ShapeFormatError(where + "." + axis + " is not a number (" + shorten_token(it->dump()) + ")");
   const double v = it->get<double>();
   if (!std::isfinite(v)) throw ShapeFormatError(where + "." + axis + " is not a finite number");
   return v;
+}
+
+// nlohmann quotes the input it stopped at ("last read: '<token>'", "number overflow parsing
+// '<token>'", maybe followed by "; expected ..."); a long token is shown shortened.
+std::string shorten_quoted_input(const std::string& reason) {
+  for (const char* opener : {"last read: '", "parsing '"}) {
+    const std::size_t at = reason.find(opener);
+    if (at == std::string::npos) continue;
+    const std::size_t from = at + std::strlen(opener) - 1;
+    std::size_t to = reason.rfind("'; expected");
+    if (to == std::string::npos || to < from) to = reason.back() == '\'' ? reason.size() - 1 : std::string::npos;
+    if (to == std::string::npos || to <= from) continue;
+    return reason.substr(0, from) + quote_token(reason.substr(from + 1, to - from - 1)) + reason.substr(to + 1);
+  }
+  return reason;
 }
 
 // Builds the document like nlohmann's own DOM parser, but reports every parse error (syntax,
@@ -49,6 +67,7 @@ class PositionedDomParser {
     std::string reason = e.what();
     reason = reason.substr(reason.find("] ") + 2);
     if (reason.rfind("parse error", 0) == 0) reason = reason.substr(reason.find(": ") + 2);
+    reason = shorten_quoted_input(reason);
     throw ShapeFormatError(source_ + ":" + std::to_string(line) + ":" + std::to_string(column) +
                            ": invalid JSON: " + reason);
   }

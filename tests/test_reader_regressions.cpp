@@ -1,0 +1,72 @@
+// One regression test per reader bug found by tests/fuzz/fuzz_readers (issue 10, item 6).
+// Each test feeds the reader a reduced form of the input that failed, and checks the clear
+// message that is now given instead.
+#include <catch2/catch.hpp>
+
+#include "complex3/medial_complex.h"
+#include "io/complex_ma.h"
+#include "io/complex_text.h"
+#include "io/disk_list.h"
+#include "io/mesh_io.h"
+#include "io/shape_json.h"
+#include "io/shape_wkt.h"
+#include "support.h"
+
+using namespace grassfire;
+using grassfire::testing::error_of;
+
+TEST_CASE("regression: a megabyte-long word is shown shortened in every reader's message", "[fuzz]") {
+  // Before: the messages quoted the whole word (fuzz: 'longer than 1000 characters').
+  const std::string word(100000, '[');
+  const std::vector<std::pair<std::string, std::string>> cases = {
+      {"OFF\n" + word + " 1 0\n", "in.off:2: count '[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[...' (100000 characters) is not"},
+      {"v 0 0 " + word + "\n", "in.obj:1: '[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[...' (100000 characters) is not a finite number"},
+      {"ply\nformat ascii 1.0\nelement " + word + " 1\nproperty float x\nend_header\n",
+       "in.ply:5: [[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[... (100000 characters) 0: file ends early"},
+      {"ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\nproperty float y\nproperty float z\n"
+       "element " + word + " 1\nproperty float x\nend_header\n0 0 0\n",
+       "in.ply:10: [[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[... (100000 characters) 0: file ends early"},
+      {"solid x\n" + word + "\n", "in.stl:2: ASCII STL: expected 'facet' or 'endsolid', found '[[[["},
+  };
+  for (const auto& [text, expected] : cases) {
+    const std::string source = expected.substr(0, expected.find(':'));
+    const std::string message = error_of([&] { parse_triangle_mesh(text, source); });
+    CAPTURE(source);
+    CHECK_THAT(message, Catch::StartsWith(expected));
+    CHECK(message.size() < 200);
+  }
+  CHECK(error_of([&] { parse_ma("1 0 0\nv 0 0 0 " + word + "\n", "in.ma"); }) ==
+        "in.ma:2: '[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[...' (100000 characters) is not a finite decimal number");
+  CHECK(error_of([&] { parse_disk_list("0 0 " + word + "\n", "in.txt"); }).size() < 200);
+  CHECK(error_of([&] { parse_shape_wkt("POLYGON ((0 " + word + "))", "in.wkt"); }).size() < 200);
+  CHECK(error_of([&] { parse_ball_list("0 0 0 " + word + "\n", "in.cin"); }).size() < 200);
+}
+
+TEST_CASE("regression: nlohmann's echo of the JSON input is shortened", "[fuzz]") {
+  // Before: "last read: '<the whole token>'" and "number overflow parsing '<digits>'".
+  const std::string digits(5000, '9');
+  CHECK(error_of([&] { parse_shape_json("{\"points\":[{\"x\":1" + digits + "e99999}]}", "in.json"); }) ==
+        "in.json:1:5023: invalid JSON: number overflow parsing '1999999999999999999999999999999999999999...' "
+        "(5007 characters)");
+  const std::string key = error_of([&] { parse_shape_json("{\"" + std::string(3000, 'a'), "in.json"); });
+  CHECK_THAT(key, Catch::StartsWith("in.json:1:3003: invalid JSON: syntax error while parsing object key"));
+  CHECK(key.size() < 250);
+  const std::string member = error_of([&] { parse_shape_json("{\"points\":[{\"x\":\"" + digits + "\",\"y\":0}]}", "in.json"); });
+  CHECK_THAT(member, Catch::StartsWith("in.json: points[0].x is not a number (\"99999"));
+  CHECK(member.size() < 200);
+}
+
+TEST_CASE("regression: a number of 10^5 digits is refused at once instead of slowing exact arithmetic", "[fuzz]") {
+  // Before: a .ma coordinate of 146,872 digits took 40 s in MedialComplex (fuzz: hang).
+  CHECK(parse_exact_decimal(std::string(1000, '7')).has_value());
+  CHECK_FALSE(parse_exact_decimal(std::string(1001, '7')).has_value());
+  CHECK_FALSE(parse_exact_decimal("0." + std::string(1000, '7')).has_value());
+  const std::string text = "3 0 1\nv 0 0 0 1\nv 1 0 0 1\nv 0 " + std::string(150000, '9') + " 0 1\nf 0 1 2\n";
+  CHECK(error_of([&] { MedialComplex mc(parse_ma(text, "long.ma")); }) ==
+        "long.ma:4: '9999999999999999999999999999999999999999...' (150000 characters) is not a finite decimal number");
+  mpq_class q;
+  CHECK_FALSE(parse_exact_decimal(std::string(1001, '1'), q));
+  CHECK(error_of([&] { parse_disk_list("0 0 " + std::string(1001, '1') + "\n", "in.txt"); }) ==
+        "in.txt:1: r = '1111111111111111111111111111111111111111...' (1001 characters) is not a decimal number (at "
+        "most 1000 digits, an optional point and an exponent of at most 300)");
+}
