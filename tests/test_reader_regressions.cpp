@@ -70,3 +70,18 @@ TEST_CASE("regression: a number of 10^5 digits is refused at once instead of slo
         "in.txt:1: r = '1111111111111111111111111111111111111111...' (1001 characters) is not a decimal number (at "
         "most 1000 digits, an optional point and an exponent of at most 300)");
 }
+
+TEST_CASE("regression: binary bytes in a token are shown escaped, and each message says what is wrong", "[fuzz]") {
+  // Before: raw 0x01 and 0xff bytes in messages; "vertex index '1.5' out of range" for an
+  // index that is not an integer; PLY "vertex index out of range" without the index.
+  CHECK(error_of([] { parse_triangle_mesh("OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 \x01\xff\n", "in.off"); }) ==
+        "in.off:6: '\\x01\\xff' is not a vertex index");
+  CHECK(error_of([] { parse_triangle_mesh("OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 1.5\n", "in.off"); }) ==
+        "in.off:6: '1.5' is not a vertex index");
+  CHECK(error_of([] {
+          parse_triangle_mesh("ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+                              "property float z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n"
+                              "0 0 0\n1 0 0\n0 1 0\n3 0 1 7\n",
+                              "in.ply");
+        }) == "in.ply: face 0: vertex index 7 out of range (3 vertices)");
+}

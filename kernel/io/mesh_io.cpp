@@ -115,7 +115,9 @@ TriangleMesh3 parse_off(const std::string& text, const std::string& source) {
     std::vector<std::uint32_t> face;
     for (std::uint64_t k = 0; k < *n; ++k) {  // numbers after the indices (colours) are ignored
       const auto idx = parse_index(l.tokens[1 + k]);
-      if (!idx || *idx >= nv) format_error(source, l.number, "vertex index " + quote_token(l.tokens[1 + k]) + " out of range (" + std::to_string(nv) + " vertices)");
+      if (!idx) format_error(source, l.number, quote_token(l.tokens[1 + k]) + " is not a vertex index");
+      if (*idx >= nv)
+        format_error(source, l.number, "vertex index '" + l.tokens[1 + k] + "' out of range (" + std::to_string(nv) + " vertices)");
       face.push_back(static_cast<std::uint32_t>(*idx));
     }
     if (append_polygon_face(m, face) == PolygonFace::RepeatsVertex)

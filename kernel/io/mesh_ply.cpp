@@ -242,7 +242,9 @@ TriangleMesh3 parse_ply(const std::string& bytes, const std::string& source) {
           throw ComplexFormatError(where + "face with " + std::to_string(idx.size()) + " vertices; at least 3 are required");
         std::vector<std::uint32_t> face;
         for (double k : idx) {
-          if (k < 0 || k != std::floor(k) || k >= vertex_count) throw ComplexFormatError(where + "vertex index out of range");
+          if (k < 0 || k != std::floor(k) || k >= vertex_count)
+            throw ComplexFormatError(where + "vertex index " + shortest_double(k) + " out of range (" +
+                                     shortest_double(vertex_count) + " vertices)");
           face.push_back(static_cast<std::uint32_t>(k));
         }
         if (append_polygon_face(m, face) == PolygonFace::RepeatsVertex)

@@ -1,7 +1,7 @@
 // fuzz_readers.cpp -- mutation fuzzing of every input reader (issue 10, item 6).
 //
 // Usage: fuzz_readers [--inputs N] [--seed S] [--reader NAME]... [--timeout SECONDS]
-//                     [--memory-mb M] [--findings DIR] [--deep]
+//                     [--memory-mb M] [--findings DIR] [--deep] [--print-rejections]
 //        fuzz_readers --replay FILE --reader NAME
 // For each reader (targets.h), N mutated inputs (mutator.h; input i is a pure function of
 // S, the reader and i) are run in a forked worker process that reports each outcome
@@ -17,7 +17,8 @@
 //             the file, naming CGAL, an assertion, a standard-library function, or longer
 //             than 1000 characters;
 //   crash, hang.
-// Prints one CSV row per reader: reader,inputs,accepted,rejected,bad,crashes,hangs,seconds.
+// Prints one CSV row per reader: reader,inputs,accepted,rejected,bad,crashes,hangs,seconds
+// (with --print-rejections, first every rejection message, to read what users would see).
 // Every bad, crashing or hanging input is written to the findings folder with its message
 // (replay it with --replay). Exit status 1 when any input is bad, crashes or hangs.
 // The worker's address space is limited to M MiB (default 2048; not under AddressSanitizer),
@@ -51,7 +52,7 @@ struct Options {
   double timeout = 10;
   std::size_t memory_mb = 2048;
   std::string findings = "fuzz-findings", replay;
-  bool deep = false;
+  bool deep = false, print_rejections = false;
 };
 
 bool internal_text(const std::string& m) {
@@ -111,7 +112,8 @@ void write_all(int fd, const void* data, std::size_t n) {
 #endif
   for (std::uint64_t i = from; i < o.inputs; ++i) {
     const auto [outcome, message] = run_one(t, make_input(t, o, i));
-    const std::string m = outcome == Bad ? message.substr(0, 2000) : std::string();
+    const bool keep = outcome == Bad || (outcome == Rejected && o.print_rejections);
+    const std::string m = keep ? message.substr(0, 2000) : std::string();
     const std::uint32_t len = static_cast<std::uint32_t>(m.size());
     write_all(fd, &i, sizeof i);
     write_all(fd, &outcome, 1);
@@ -201,6 +203,7 @@ class ReaderRun {
 
   void record(std::uint64_t i, Outcome outcome, const std::string& message) {
     ++counts_.n[outcome];
+    if (outcome == Rejected && o_.print_rejections) std::cout << t_.name << " " << i << ": " << message << "\n";
     if (outcome == Accepted || outcome == Rejected) return;
     static const char* names[] = {"accepted", "rejected", "bad", "crash", "hang"};
     std::filesystem::create_directories(o_.findings);
@@ -233,6 +236,7 @@ Options parse_options(int argc, char** argv) {
     else if (a == "--findings") o.findings = value();
     else if (a == "--replay") o.replay = value();
     else if (a == "--deep") o.deep = true;
+    else if (a == "--print-rejections") o.print_rejections = true;
     else throw std::invalid_argument("unknown option " + a + " (see the top of tests/fuzz/fuzz_readers.cpp)");
   }
   return o;

@@ -21,7 +21,7 @@ namespace grassfire {
 namespace {
 
 [[noreturn]] void reject(const TriangleMesh3& mesh, const std::string& problem) {
-  throw std::invalid_argument(mesh.source + ": " + problem + " (the mesh is self-intersecting)");
+  throw std::invalid_argument(mesh.source + ": " + problem);
 }
 
 std::string face_name(const TriangleMesh3& mesh, std::uint32_t t) { return "face " + std::to_string(file_face_index(mesh, t)); }
@@ -44,8 +44,8 @@ void require_positive_areas(const TriangleMesh3& mesh) {
     const auto& p = mesh.vertices;
     if (certainly_proper(p[a], p[b], p[c])) continue;
     if (collinear(exact_point(p[a]), exact_point(p[b]), exact_point(p[c])))
-      reject(mesh, face_name(mesh, t) + " has zero area (its three vertices are collinear; dropping it would open "
-                                        "the mesh)");
+      reject(mesh, face_name(mesh, t) + " has zero area: its three vertices are collinear (it is not dropped: that "
+                                        "would open the mesh)");
   }
 }
 
@@ -70,7 +70,7 @@ void require_no_folds(const TriangleMesh3& mesh) {
     const ExactPoint3 a = exact_point(p[e.first]), ab = exact_point(p[e.second]) - a;
     if (sgn(dot(cross(ab, exact_point(p[c]) - a), cross(ab, exact_point(p[d]) - a))) > 0)
       reject(mesh, face_name(mesh, t) + " and " + face_name(mesh, other->second) +
-                       " fold onto each other along their common edge");
+                       " fold onto each other along their common edge (the mesh is self-intersecting)");
   }
 }
 
@@ -129,7 +129,8 @@ void require_embedded(const TriangleMesh3& mesh) {
   require_positive_areas(mesh);
   require_no_folds(mesh);
   if (const auto pair = first_crossing(mesh))
-    reject(mesh, face_name(mesh, (*pair)[0]) + " and " + face_name(mesh, (*pair)[1]) + " intersect");
+    reject(mesh, face_name(mesh, (*pair)[0]) + " and " + face_name(mesh, (*pair)[1]) +
+                     " intersect (the mesh is self-intersecting)");
 }
 
 }  // namespace grassfire
