@@ -3,6 +3,7 @@
 // message that is now given instead.
 #include <catch2/catch.hpp>
 
+#include "complex3/builders/convex_polyhedron_axis.h"
 #include "complex3/medial_complex.h"
 #include "io/complex_ma.h"
 #include "io/complex_text.h"
@@ -84,4 +85,34 @@ TEST_CASE("regression: binary bytes in a token are shown escaped, and each messa
                               "0 0 0\n1 0 0\n0 1 0\n3 0 1 7\n",
                               "in.ply");
         }) == "in.ply: face 0: vertex index 7 out of range (3 vertices)");
+}
+
+TEST_CASE("regression: a redundant half-space anywhere but last crashed the convex axis", "[fuzz]") {
+  // Before: the facets kept their input index as label, so after a redundant plane the clip
+  // order indexed past the facet list (segfault, or GMP aborting on a garbage size).
+  const std::string cube = "1 0 0 1\n-1 0 0 1\n0 1 0 1\n0 -1 0 1\n0 0 1 1\n0 0 -1 1\n";
+  const ConvexAxis reference = convex_polyhedron_axis(parse_halfspaces(cube, "cube.hs"));
+  for (const std::string extra : {"1 0 0 2\n", "0 0 1 1\n", "2 0 0 2\n", "1 1 0 2\n", "1 1 1 3\n"}) {
+    for (std::size_t at = 0; at <= 6; ++at) {
+      std::string text;
+      std::size_t line = 0, pos = 0;
+      for (; line < at; ++line) pos = cube.find('\n', pos) + 1;
+      text = cube.substr(0, pos) + extra + cube.substr(pos);
+      CAPTURE(extra, at);
+      const ConvexAxis a = convex_polyhedron_axis(parse_halfspaces(text, "redundant.hs"));
+      CHECK(a.redundant_planes == 1);
+      CHECK(a.complex.vertices.size() == reference.complex.vertices.size());
+      CHECK(a.complex.triangles.size() == reference.complex.triangles.size());
+      CHECK(check_convex_axis(a).failures == 0);
+    }
+  }
+}
+
+TEST_CASE("regression: a ball coordinate beyond the range of doubles crashed the union-of-balls axis", "[fuzz]") {
+  // Before: -1e309 is a finite decimal, but its nearest double is -inf, and GMP raised
+  // SIGFPE converting it back (mpq_set_d) in the regular triangulation.
+  CHECK(error_of([] { parse_ball_list("0 0 0 1\n1.5 0 0 0.25\n0 2 -1e309 2.25\n", "far.cin"); }) ==
+        "far.cin:3: '-1e309' is beyond the range of doubles");
+  CHECK(error_of([] { parse_ball_list("0 0 0 1e309\n", "far.cin"); }) == "far.cin:1: '1e309' is beyond the range of doubles");
+  CHECK(parse_ball_list("0 0 0 1.7976931348623157e308\n", "edge.cin").centers.size() == 1);
 }

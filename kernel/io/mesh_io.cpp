@@ -5,6 +5,7 @@
 #include <cctype>
 #include <cmath>
 #include <fstream>
+#include <limits>
 #include <regex>
 
 #include "io/complex_text.h"
@@ -216,9 +217,13 @@ BallSet parse_ball_list(const std::string& text, const std::string& source) {
   for (const TextLine& l : tokenize_lines(text)) {
     if (l.tokens.size() != 4) format_error(source, l.number, "a ball line must be 'x y z w' (w = squared radius)");
     mpq_class v[4];
+    // The builders triangulate the approximate balls in doubles first (CGAL), so every value
+    // must have a finite nearest double.
+    static const mpq_class largest(std::numeric_limits<double>::max());
     for (int i = 0; i < 4; ++i) {
       const auto q = parse_exact_decimal(l.tokens[i]);
       if (!q) format_error(source, l.number, quote_token(l.tokens[i]) + " is not a finite decimal number");
+      if (abs(*q) > largest) format_error(source, l.number, quote_token(l.tokens[i]) + " is beyond the range of doubles");
       v[i] = *q;
     }
     if (sgn(v[3]) <= 0) format_error(source, l.number, "squared radius " + shorten_token(l.tokens[3]) + " is not positive");

@@ -22,7 +22,8 @@
 //    vertex order gives the orientation, as the format says). Every facet repeats its
 //    vertices: welding (below) makes a mesh of them.
 //  - ball lists: one ball a line, `x y z w` with w > 0 the squared radius (CGAL weighted
-//    points, /work/shared/data/balls); values are exact decimals.
+//    points, /work/shared/data/balls); values are exact decimals within the range of
+//    doubles (the builders triangulate their nearest doubles first).
 // Every mesh reader rejects: NaN or infinite or non-numeric values, wrong counts (before
 // allocating anything for them: a header announcing 10^12 vertices is refused by comparing
 // with the file's size), indices out of range, a face listing fewer than 3 vertices or

@@ -178,9 +178,12 @@ ConvexAxis convex_polyhedron_axis(const ConvexPolyhedron& input, const ConvexAxi
   PolytopeCell p0 = polytope_from_planes(given, input.source);
   std::vector<HalfSpace> facets;
   std::vector<ExactPoint3> centroid;
-  for (const auto& f : p0.faces) {
+  for (auto& f : p0.faces) {
     facets.push_back(input.planes[first_of(f.label)]);
     centroid.push_back(polygon_centroid(p0, f));
+    // From here on a facet is named by its index in `facets` (clip_order reads the labels):
+    // a redundant plane before it in the input must not shift it.
+    f.label = label(kFacet, facets.size() - 1);
   }
   out.redundant_planes = input.planes.size() - facets.size();
   std::vector<double> deltas;
