@@ -4,7 +4,7 @@
 #include <gmpxx.h>
 
 #include <cstdint>
-#include <stdexcept>
+#include <exception>
 #include <string>
 #include <tuple>
 #include <vector>
@@ -36,7 +36,7 @@ struct CliRun {
 };
 CliRun run_cli(const std::string& args);
 
-// The message of the std::exception f throws, or "no error".
+// The message of the exception f() throws, or "no error".
 template <class F>
 std::string error_of(F f) {
   try {

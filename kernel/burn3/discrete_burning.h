@@ -40,14 +40,17 @@
 // shrinks linearly in h (experiments/study_board_fin_convergence.cpp).
 // Contract: a validated MedialComplex; spacing h > 0 and the point budget respected.
 // Complexity: O(N log N + sum over triangles of (points on its boundary)^2) with N graph
-// points; memory O(N (2 + average edge degree)).
+// points; memory O(N (2 + average edge degree)). BT at points that are not graph points:
+// discrete_query.h.
 #pragma once
 
 #include <array>
 #include <cstdint>
+#include <functional>
 #include <limits>
 #include <vector>
 
+#include "burn3/point_sources.h"
 #include "complex3/medial_complex.h"
 
 namespace grassfire {
@@ -55,6 +58,15 @@ namespace grassfire {
 struct DiscreteBurningOptions {
   double spacing = 0.25;                   // h
   std::uint64_t max_points = 200'000'000;  // refuse (std::invalid_argument) above this
+  // Points that ignite at their t0 (point_sources.h), besides the border. A source at a
+  // vertex or exactly at a Steiner point ignites that graph point; a source inside an edge
+  // or a triangle is joined by straight moves to the graph points of the closed triangles
+  // that hold it (SteinerGraph::for_each_move_from_*_point), which it reaches at
+  // t0 + distance through the link element of that move. Every such move is a
+  // non-crossing segment, so the upper-bound argument above holds unchanged.
+  std::vector<PointSource> sources{};
+  // Called now and then during the run with (graph points burned, graph points in all).
+  std::function<void(std::uint64_t, std::uint64_t)> progress{};
 };
 
 struct DiscreteBurningStats {
