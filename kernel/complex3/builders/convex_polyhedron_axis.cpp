@@ -181,8 +181,8 @@ ConvexAxis convex_polyhedron_axis(const ConvexPolyhedron& input, const ConvexAxi
   for (auto& f : p0.faces) {
     facets.push_back(input.planes[first_of(f.label)]);
     centroid.push_back(polygon_centroid(p0, f));
-    // From here on a facet is named by its index in `facets` (clip_order reads the labels):
-    // a redundant plane before it in the input must not shift it.
+    // From here on facets are numbered in this order (g->u, clip_order): relabel, or a
+    // redundant input plane shifts the numbers past the end of g->u.
     f.label = label(kFacet, facets.size() - 1);
   }
   out.redundant_planes = input.planes.size() - facets.size();
