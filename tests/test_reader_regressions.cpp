@@ -5,6 +5,7 @@
 
 #include "complex3/builders/convex_polyhedron_axis.h"
 #include "complex3/medial_complex.h"
+#include "io/complex_json.h"
 #include "io/complex_ma.h"
 #include "io/complex_text.h"
 #include "io/disk_list.h"
@@ -55,6 +56,17 @@ TEST_CASE("regression: nlohmann's echo of the JSON input is shortened", "[fuzz]"
   const std::string member = error_of([&] { parse_shape_json("{\"points\":[{\"x\":\"" + digits + "\",\"y\":0}]}", "in.json"); });
   CHECK_THAT(member, Catch::StartsWith("in.json: points[0].x is not a number (\"99999"));
   CHECK(member.size() < 200);
+}
+
+TEST_CASE("regression: a long unknown member name of a grassfire-complex document is shortened", "[fuzz]") {
+  // Before: "unknown member" quoted the whole name (fuzz: 'longer than 1000 characters').
+  const std::string name(5000, 'a');
+  const std::string head = R"({"format": "grassfire-complex", "version": 1, "vertices": [[0, 0, 0]])";
+  CHECK(error_of([&] { parse_complex_json(head + ", \"" + name + "\": 1}", "in.json"); }) ==
+        "in.json: aaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaa... (5000 characters): unknown member (a typo? the members are "
+        "format, version, vertices, radius_squared, triangles, segments, border, source, comment)");
+  CHECK(error_of([&] { parse_complex_json(head + R"(, "border": [{"edge": [0, 0], ")" + name + "\": 1}]}", "in.json"); }) ==
+        "in.json: border[0]: unknown member \"aaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaa... (5000 characters)\"");
 }
 
 TEST_CASE("regression: a number of 10^5 digits is refused at once instead of slowing exact arithmetic", "[fuzz]") {

@@ -11,6 +11,7 @@
 #include "complex3/builders/mesh_checks.h"
 #include "complex3/builders/union_of_balls_axis.h"
 #include "complex3/medial_complex.h"
+#include "io/complex_json.h"
 #include "io/complex_ma.h"
 #include "io/disk_list.h"
 #include "io/mesh_io.h"
@@ -57,6 +58,23 @@ Target make(const std::string& name, const std::string& ext, const std::vector<s
   return t;
 }
 
+// The grassfire-complex JSON corpus is small (tests/data/3d/*.json): add every readable .ma
+// file written in that format (complex_json_text), so that the mutations start from
+// documents with hundreds of vertices, triangles and segments too.
+void add_complex_json_of_ma(Target& t, const std::vector<std::vector<fs::path>>& sources) {
+  for (const auto& group : sources)
+    for (const fs::path& p : group) {
+      RawComplex raw;
+      try {
+        raw = parse_ma(file_text(p), p.string());
+      } catch (const std::exception&) {
+        continue;  // the bad_*.ma files of the test data
+      }
+      t.corpus.push_back(complex_json_text(raw));
+      t.corpus_files.push_back(p.string() + " (as grassfire-complex JSON)");
+    }
+}
+
 void mesh_target(const std::string& bytes, const std::string& source, bool deep) {
   const TriangleMesh3 m = parse_triangle_mesh(bytes, source);
   require_closed_manifold(m);
@@ -90,6 +108,12 @@ std::vector<Target> fuzz_targets(const std::string& test_data, const std::string
                            const MedialComplex mc(parse_ma(bytes, source));
                            mc.validate();
                          }));
+  Target complex_json = make("complex_json", "json", {files(t3, {".json"})}, [](const std::string& bytes, const std::string& source) {
+    const MedialComplex mc(parse_complex_json(bytes, source));
+    mc.validate();
+  });
+  add_complex_json_of_ma(complex_json, {files(t3, {".ma"}), files(project_data + "/ma", {".ma"})});
+  targets.push_back(std::move(complex_json));
   targets.push_back(make("shape_json", "json", {files(test_data + "/shapes", {".json"}), files(project_data + "/shapes2d", {".json"}, 6)},
                          [](const std::string& bytes, const std::string& source) { shape_target(parse_shape_json(bytes, source), source); }));
   targets.push_back(make("shape_wkt", "wkt", {files(test_data + "/shapes", {".wkt", ".txt"})},

@@ -4,7 +4,8 @@
 //  mesh readers (off, ply, obj, stl): parse_triangle_mesh, then require_closed_manifold
 //    and mesh_orientation (what medial3d runs before any builder);
 //  balls, halfspaces, disks: the readers;
-//  ma: parse_ma, then MedialComplex (strata, links, the embedding check) and validate();
+//  ma, complex_json: parse_ma / parse_complex_json, then MedialComplex (strata, links, the
+//    embedding check) and validate();
 //  shape_json, shape_wkt: the readers, then validate_shape;
 //  with deep = true also the builders fed by the reader: union_of_balls_axis,
 //  convex_polyhedron_axis, disk_union_axis, convex_polyhedron_from_mesh (slower; for
