@@ -35,6 +35,8 @@ class Burner {
     out_.edge_slot = g_.edge_slots();
     bt_.assign(g_.node_count(), DiscreteBurning::kInfinity);
     out_.arrival_time.assign(g_.slot_total(), DiscreteBurning::kInfinity);
+    out_.arrival_from.assign(g_.slot_total(), kNoIndex);
+    out_.burn_slot.assign(g_.node_count(), kNoIndex);
     done_.assign(g_.slot_total(), 0);
   }
 
@@ -56,13 +58,16 @@ class Burner {
       ++out_.stats.pops;
       if (std::isfinite(bt_[a.node])) continue;
       if (a.slot == kIgnite) {
+        out_.burn_slot[a.node] = DiscreteBurning::kIgnited;
         burn(a.node, a.time);
         continue;
       }
       const std::uint64_t g = slot(a.node, a.slot);
       if (done_[g] || a.time > out_.arrival_time[g]) continue;
       done_[g] = 1;
-      if (condition(a.node)) burn(a.node, a.time);
+      if (!condition(a.node)) continue;
+      out_.burn_slot[a.node] = a.slot;
+      burn(a.node, a.time);
     }
   }
 
@@ -72,7 +77,7 @@ class Burner {
     out_.vertex_et.resize(nv_);
     for (std::uint32_t v = 0; v < nv_; ++v) out_.vertex_et[v] = out_.vertex_bt[v] - mc_.vertex(v).radius;
     for (std::size_t g = 0; g < done_.size(); ++g)
-      if (!done_[g]) out_.arrival_time[g] = DiscreteBurning::kInfinity;
+      if (!done_[g]) out_.arrival_time[g] = DiscreteBurning::kInfinity, out_.arrival_from[g] = kNoIndex;
   }
 
  private:
@@ -100,6 +105,7 @@ class Burner {
       const double t = time + length;
       if (!(t < out_.arrival_time[s])) return;
       out_.arrival_time[s] = t;
+      out_.arrival_from[s] = node;
       heap_.push({t, y, local});
       ++out_.stats.pushes;
     });

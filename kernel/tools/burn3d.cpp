@@ -5,50 +5,15 @@
 #include <nlohmann/json.hpp>
 
 #include "burn3/discrete_burning.h"
-#include "complex3/builders/medial_axis_input.h"
 #include "complex3/medial_complex.h"
-#include "complex3/synthetic_complexes.h"
 #include "io/complex_export.h"
-#include "io/complex_ma.h"
 #include "io/complex_text.h"
-#include "io/mesh_io.h"
 #include "tools/commands.h"
+#include "tools/complex_input.h"
 #include "tools/options.h"
 
 namespace grassfire::cli {
 namespace {
-
-bool is_synthetic(const std::string& input) {
-  for (const std::string& n : synthetic_complex_names())
-    if (input == n || (n == "book:K" && input.rfind("book:", 0) == 0) || (n == "box:A:B:C" && input.rfind("box:", 0) == 0))
-      return true;
-  return false;
-}
-
-// The complex to burn: a synthetic complex, a .ma medial axis, a mesh burned as itself
-// (--mesh-is-complex), or the medial axis of a shape built as `grassfire medial3d` builds
-// it (complex3/builders/medial_axis_input.h: convex meshes and half-spaces exactly, ball
-// lists exactly, other closed meshes through their inner polar balls).
-RawComplex load_complex(const std::string& input, bool mesh_is_complex) {
-  if (is_synthetic(input)) return synthetic_complex(input);
-  const std::string ext = file_extension(input);
-  if (ext == "ma") return read_ma(input);
-  if (mesh_is_complex) {
-    if (ext != "off" && ext != "ply" && ext != "obj")
-      throw std::runtime_error(input + ": --mesh-is-complex needs a mesh (.off, .ply or .obj)");
-    return mesh_as_complex(read_triangle_mesh(input));
-  }
-  if (ext == "off" || ext == "ply" || ext == "obj" || ext == "hs" || ext == "halfspaces" || ext == "cin" ||
-      ext == "balls") {
-    MedialAxisBuild axis = build_medial_axis(input, MedialInputKind::Auto);
-    std::cerr << "burn3d: " << input << ": medial axis by the " << axis.kind << " builder\n";
-    return std::move(axis.complex);
-  }
-  std::string names;
-  for (const std::string& n : synthetic_complex_names()) names += " " + n;
-  throw std::runtime_error("'" + input + "' is neither a synthetic complex (" + names.substr(1) +
-                           ") nor a file with extension .ma, .off, .ply, .obj, .hs, .halfspaces, .cin or .balls");
-}
 
 nlohmann::json finite_or_null(const std::vector<double>& values) {
   nlohmann::json a = nlohmann::json::array();
@@ -98,11 +63,7 @@ nlohmann::json report(const std::string& input, const MedialComplex& mc, const D
 
 int run_burn3d(int argc, char** argv) {
   Options opt("burn3d", "Burning time BT (Definitions 9-10) and ET = BT - R on the medial axis of a 3D shape.");
-  opt.positional("INPUT", "a .ma medial axis; a shape whose medial axis is built as by `grassfire medial3d`: a "
-                          "closed mesh (.off/.ply/.obj: exact for convex meshes, else from its inner polar balls), "
-                          "a half-space list (.hs) or a ball list (.cin/.balls, exact); or a synthetic "
-                          "complex: board-fin, board-cylinder, book:K, y-junction, tetrahedron, octahedron, "
-                          "double-cone, tetrahedron-flap")
+  opt.positional("INPUT", complex_input_help())
       .option("method", "NAME", "discrete (Dijkstra over vertices and Steiner points with the link rule)", "discrete")
       .option("spacing", "H", "Steiner point spacing h (default: 1/100 of the bounding box diagonal)")
       .option("max-points", "N", "refuse to place more than N graph points", "50000000")
@@ -117,7 +78,7 @@ int run_burn3d(int argc, char** argv) {
     throw std::runtime_error("method '" + opt.get("method") + "' is not available: only 'discrete' (the exact "
                              "sweep-event engine is not part of this build)");
   const std::string input = opt.arg("INPUT");
-  const MedialComplex mc(load_complex(input, opt.has("mesh-is-complex")));
+  const MedialComplex mc(load_complex(input, opt.has("mesh-is-complex"), "burn3d"));
   mc.validate();
   DiscreteBurningOptions o;
   if (opt.has("spacing")) {

@@ -1,0 +1,32 @@
+// curves_export.h -- medial curve graphs (burn3/medial_curves.h) as JSON and polylines.
+//
+// JSON, format "grassfire-curves3d", version 1 (later versions add members, never remove
+// or change one):
+//   {"format": "grassfire-curves3d", "version": 1, "input": NAME, "method": FIELD,
+//    "nodes": [{"x", "y", "z", "R", "bt", "et"}, ...],        node id = array index
+//    "edges": [{"u", "v", "length", "kind"}, ...],            kind: "end" (a raw end,
+//             medial_curves.h step 1) | "join" (kept to connect, or a dangling segment)
+//    "betti": [b0, b1],                                     of the graph
+//    "axis_betti": [b0, b1, b2],                            of the axis (simplicial homology)
+//    "options": {"arrive_cosine", "depart_cosine", "time_margin"}, "stats": {refinement and construction counts, seconds}}
+// "bt" and "et" are null where the point never burns (BT = infinity); R is exact at the
+// axis' vertices and interpolated linearly elsewhere; numbers are doubles.
+// Polylines: each edge a 2-point line; scalars R, BT, ET per node (polyline_export.h).
+#pragma once
+
+#include <nlohmann/json.hpp>
+
+#include <string>
+
+#include "burn3/medial_curves.h"
+#include "io/polyline_export.h"
+
+namespace grassfire {
+
+nlohmann::json medial_curves_json(const MedialCurves& curves, const std::string& input);
+PolylineSet medial_curves_polylines(const MedialCurves& curves);
+
+// A finite number, or null.
+nlohmann::json finite_or_null(double x);
+
+}  // namespace grassfire
