@@ -21,7 +21,8 @@
 //    fire started (then direction is zero).
 //  - sample_on_segment(e, s): the same on a dangling segment e (a 1-dimensional part) at
 //    parameter s from e.v[0].
-//  - path_in_triangle / path_on_segment / path_from_vertex: the whole path (q0 = p).
+//  - path_in_triangle / path_on_segment / path_from_vertex / path_from_edge_point: the
+//    whole path (q0 = p); at a vertex or an edge point the path of the point's own BT.
 //  - edge_points(e) and edge_point_burn_time(e, i): the points at which the field resolves
 //    edge e (i = 1 .. edge_points(e) at parameters i / (edge_points(e) + 1) from e.v[0]; 0
 //    and edge_points(e) + 1 are e's ends) and BT of the point itself there (the link rule
@@ -79,6 +80,9 @@ class BurningField {
   virtual std::vector<Vec3d> path_in_triangle(std::uint32_t t, const Vec3d& p) const = 0;
   virtual std::vector<Vec3d> path_on_segment(std::uint32_t e, double s) const = 0;
   virtual std::vector<Vec3d> path_from_vertex(std::uint32_t v) const = 0;
+  // The path of edge e's point i (1 .. edge_points(e)) itself: the one its burning time
+  // came by (through the link rule), not a side's.
+  virtual std::vector<Vec3d> path_from_edge_point(std::uint32_t e, std::uint32_t i) const = 0;
 };
 
 // The point at parameter s of edge e (from e.v[0]), in doubles.

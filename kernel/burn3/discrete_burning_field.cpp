@@ -199,7 +199,13 @@ std::vector<Vec3d> DiscreteBurningField::path_on_segment(std::uint32_t e, double
 std::vector<Vec3d> DiscreteBurningField::path_from_vertex(std::uint32_t v) const {
   std::vector<Vec3d> path;
   append_path(v, path);
-  if (path.empty()) path.push_back(mc_.vertex(v).approx);
+  return path;
+}
+
+std::vector<Vec3d> DiscreteBurningField::path_from_edge_point(std::uint32_t e, std::uint32_t i) const {
+  std::vector<Vec3d> path;
+  const std::uint32_t n = g_.steiner_count(e);
+  append_path(i == 0 ? mc_.edge(e).v[0] : i == n + 1 ? mc_.edge(e).v[1] : g_.steiner_node(e, i), path);
   return path;
 }
 

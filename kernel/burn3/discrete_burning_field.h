@@ -51,6 +51,7 @@ class DiscreteBurningField final : public BurningField {
   std::vector<Vec3d> path_in_triangle(std::uint32_t t, const Vec3d& p) const override;
   std::vector<Vec3d> path_on_segment(std::uint32_t e, double s) const override;
   std::vector<Vec3d> path_from_vertex(std::uint32_t v) const override;
+  std::vector<Vec3d> path_from_edge_point(std::uint32_t e, std::uint32_t i) const override;
 
   const DiscreteBurning& burning() const { return d_; }
   const SteinerGraph& graph() const { return g_; }

@@ -214,7 +214,7 @@ MedialCurves assemble(const AxisRefinement& k, const std::vector<bool>& alive, c
     if (!alive[v]) continue;
     node_of[v] = static_cast<std::uint32_t>(out.nodes.size());
     const RefinedVertex& rv = k.vertices[v];
-    out.nodes.push_back({rv.position, rv.radius, rv.bt, v});
+    out.nodes.push_back({rv.position, rv.radius, rv.bt, rv.on, rv.cell, rv.index});
   }
   for (std::uint32_t e = 0; e < k.edges.size(); ++e) {
     if (!kept[e]) continue;

@@ -103,7 +103,8 @@ struct MedialCurveOptions {
 struct CurveNode {
   Vec3d position{};
   double radius = 0, bt = 0;  // ET = bt - radius
-  std::uint32_t refined_vertex = 0;
+  RefinedVertex::On on = RefinedVertex::On::Vertex;  // where it lies in M (axis_refinement.h)
+  std::uint32_t cell = 0, index = 0;
 };
 
 struct CurveEdge {

@@ -54,4 +54,36 @@ PolylineSet medial_curves_polylines(const MedialCurves& c) {
   return set;
 }
 
+nlohmann::json burning_paths_json(const std::vector<BurningPath>& paths, const std::string& input,
+                                  const std::string& method, const std::string& from) {
+  nlohmann::json list = nlohmann::json::array();
+  for (const BurningPath& p : paths) {
+    nlohmann::json points = nlohmann::json::array();
+    for (const Vec3d& q : p.points) points.push_back({q[0], q[1], q[2]});
+    list.push_back({{"bt", finite_or_null(p.bt)}, {"length", p.length}, {"points", std::move(points)}});
+  }
+  return {{"format", "grassfire-paths3d"}, {"version", 1}, {"input", input},
+          {"method", method},              {"from", from},  {"paths", std::move(list)}};
+}
+
+PolylineSet burning_paths_polylines(const std::vector<BurningPath>& paths) {
+  PolylineSet set;
+  VertexField bt{"BT", {}};
+  for (const BurningPath& p : paths) {
+    if (p.points.size() < 2) continue;
+    std::vector<std::uint32_t> line;
+    double walked = 0;
+    for (std::size_t i = 0; i < p.points.size(); ++i) {
+      if (i > 0) walked += std::hypot(p.points[i][0] - p.points[i - 1][0], p.points[i][1] - p.points[i - 1][1],
+                                      p.points[i][2] - p.points[i - 1][2]);
+      line.push_back(static_cast<std::uint32_t>(set.points.size()));
+      set.points.push_back(p.points[i]);
+      bt.values.push_back(p.bt - walked);
+    }
+    set.lines.push_back(std::move(line));
+  }
+  set.fields = {std::move(bt)};
+  return set;
+}
+
 }  // namespace grassfire

@@ -12,12 +12,21 @@
 // "bt" and "et" are null where the point never burns (BT = infinity); R is exact at the
 // axis' vertices and interpolated linearly elsewhere; numbers are doubles.
 // Polylines: each edge a 2-point line; scalars R, BT, ET per node (polyline_export.h).
-#pragma once
+//
+// Burning paths (burn3/burning_paths.h), format "grassfire-paths3d", version 1:
+//   {"format": "grassfire-paths3d", "version": 1, "input": NAME, "method": FIELD,
+//    "from": "vertices" | "curves" | "points",
+//    "paths": [{"bt", "length", "points": [[x, y, z], ...]}, ...]}
+// points[0] is the point the path leads to, the last point where its fire started; "bt"
+// is null where the point never burns (then the path is that point alone). Polylines: one
+// line per path of two or more points, with the scalar BT along it (BT at the path's end
+// minus the arclength walked back: the time the fire passed each point).
 
 #include <nlohmann/json.hpp>
 
 #include <string>
 
+#include "burn3/burning_paths.h"
 #include "burn3/medial_curves.h"
 #include "io/polyline_export.h"
 
@@ -25,6 +34,10 @@ namespace grassfire {
 
 nlohmann::json medial_curves_json(const MedialCurves& curves, const std::string& input);
 PolylineSet medial_curves_polylines(const MedialCurves& curves);
+
+nlohmann::json burning_paths_json(const std::vector<BurningPath>& paths, const std::string& input,
+                                  const std::string& method, const std::string& from);
+PolylineSet burning_paths_polylines(const std::vector<BurningPath>& paths);
 
 // A finite number, or null.
 nlohmann::json finite_or_null(double x);

@@ -47,7 +47,7 @@ std::string complex_input_help() {
   return "a .ma medial axis; a shape whose medial axis is built as by `grassfire medial3d`: a closed mesh "
          "(.off/.ply/.obj: exact for convex meshes, else from its inner polar balls), a half-space list (.hs) or a "
          "ball list (.cin/.balls, exact); or a synthetic complex: board-fin, board-cylinder, book:K, y-junction, "
-         "tetrahedron, octahedron, double-cone, tetrahedron-flap, box:A:B:C";
+         "tetrahedron, octahedron, double-cone, tetrahedron-flap, box:A:B:C, tube, annulus, torus";
 }
 
 }  // namespace grassfire::cli
