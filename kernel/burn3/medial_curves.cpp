@@ -306,8 +306,14 @@ BettiNumbers complex_betti(const MedialComplex& mc) {
 
 MedialCurves medial_curves(const BurningField& field, const MedialCurveOptions& options) {
   const auto start = std::chrono::steady_clock::now();
+  MedialCurves out = medial_curves(AxisRefinement::build(field), field, options);
+  out.stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return out;
+}
+
+MedialCurves medial_curves(const AxisRefinement& k, const BurningField& field, const MedialCurveOptions& options) {
+  const auto start = std::chrono::steady_clock::now();
   MedialCurveStats stats;
-  const AxisRefinement k = AxisRefinement::build(field);
   const double margin = options.time_margin >= 0 ? options.time_margin : field.resolution();
   std::vector<bool> raw = raw_end_edges(k, options, margin);
   close_raw_ends(k, raw, options.closing_hops,

@@ -140,6 +140,8 @@ struct MedialCurves {
 };
 
 MedialCurves medial_curves(const BurningField& field, const MedialCurveOptions& options = {});
+// The same on a refinement already built from `field` (AxisRefinement::build(field)).
+MedialCurves medial_curves(const AxisRefinement& k, const BurningField& field, const MedialCurveOptions& options = {});
 
 // The pieces, exposed for tests and figures.
 // Step 1 on a refinement: per edge of K, whether it is a raw end.

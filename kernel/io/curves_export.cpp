@@ -40,6 +40,14 @@ nlohmann::json medial_curves_json(const MedialCurves& c, const std::string& inpu
   return j;
 }
 
+nlohmann::json shape_analysis_json(const ShapeAnalysis& a, double planar_tubularity) {
+  const ShapeSignature& s = a.signature;
+  return {{"planar_tubularity", planar_tubularity}, {"planar_area", s.planar_area},
+          {"tubular_area", s.tubular_area},         {"tubular_curve_length", s.tubular_curve_length},
+          {"planar_curve_length", s.planar_curve_length}, {"sheet_areas", s.sheet_areas},
+          {"curve_lengths", s.curve_lengths}};
+}
+
 PolylineSet medial_curves_polylines(const MedialCurves& c) {
   PolylineSet set;
   VertexField r{"R", {}}, bt{"BT", {}}, et{"ET", {}};

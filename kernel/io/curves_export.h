@@ -8,7 +8,10 @@
 //             medial_curves.h step 1) | "join" (kept to connect, or a dangling segment)
 //    "betti": [b0, b1],                                     of the graph
 //    "axis_betti": [b0, b1, b2],                            of the axis (simplicial homology)
-//    "options": {"arrive_cosine", "depart_cosine", "time_margin"}, "stats": {refinement and construction counts, seconds}}
+//    "options": {"arrive_cosine", "depart_cosine", "time_margin"}, "stats": {refinement and construction counts, seconds},
+//    "analysis": {"planar_tubularity", "planar_area", "tubular_area", "tubular_curve_length",
+//                 "planar_curve_length", "sheet_areas": [...], "curve_lengths": [...]}}
+// (burn3/shape_analysis.h: the split of 5.3 and the signature; lists sorted descending).
 // "bt" and "et" are null where the point never burns (BT = infinity); R is exact at the
 // axis' vertices and interpolated linearly elsewhere; numbers are doubles.
 // Polylines: each edge a 2-point line; scalars R, BT, ET per node (polyline_export.h).
@@ -28,11 +31,13 @@
 
 #include "burn3/burning_paths.h"
 #include "burn3/medial_curves.h"
+#include "burn3/shape_analysis.h"
 #include "io/polyline_export.h"
 
 namespace grassfire {
 
 nlohmann::json medial_curves_json(const MedialCurves& curves, const std::string& input);
+nlohmann::json shape_analysis_json(const ShapeAnalysis& analysis, double planar_tubularity);
 PolylineSet medial_curves_polylines(const MedialCurves& curves);
 
 nlohmann::json burning_paths_json(const std::vector<BurningPath>& paths, const std::string& input,
