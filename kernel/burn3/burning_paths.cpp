@@ -68,6 +68,30 @@ std::vector<BurningPath> paths_from_curve_nodes(const BurningField& field, const
   return out;
 }
 
+std::vector<BurningPath> paths_ending_on_curves(const BurningField& field, const MedialCurves& curves,
+                                                double arrive_cosine) {
+  const MedialComplex& mc = field.complex();
+  std::vector<BurningPath> out;
+  for (const CurveNode& n : curves.nodes) {
+    if (n.on == RefinedVertex::On::Triangle) {
+      out.push_back(make(field.path_in_triangle(n.cell, n.position), n.bt));
+      continue;
+    }
+    if (n.on != RefinedVertex::On::Edge) continue;
+    const Vec3d a = mc.vertex(mc.edge(n.cell).v[0]).approx, b = mc.vertex(mc.edge(n.cell).v[1]).approx;
+    const Vec3d along = v3::unit(v3::sub(b, a));
+    for (std::uint32_t t : mc.edge_triangles(n.cell)) {
+      const Vec3d apex = mc.vertex(third_vertex(mc.triangle(t), mc.edge(n.cell).v)).approx;
+      Vec3d out_dir = v3::sub(n.position, apex);
+      out_dir = v3::unit(v3::sub(out_dir, v3::scale(along, v3::dot(out_dir, along))));
+      const FieldSample s = field.sample_in_triangle(t, n.position);
+      if (std::isfinite(s.bt) && v3::dot(s.direction, out_dir) > arrive_cosine)
+        out.push_back(make(field.path_in_triangle(t, n.position), s.bt));
+    }
+  }
+  return out;
+}
+
 std::vector<BurningPath> paths_from_points(const BurningField& field, const std::vector<CellPoint>& points) {
   std::vector<BurningPath> out;
   for (const CellPoint& c : points) {

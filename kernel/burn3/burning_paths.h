@@ -4,7 +4,8 @@
 // polyline the fire followed to reach the point, traced back to where it started (a border
 // point burning at its own f, or a source):
 //  - from every vertex of the complex (the path of the vertex's own BT);
-//  - from every node of a medial curve graph (medial_curves.h): where the fire ended;
+//  - from every node of a medial curve graph (medial_curves.h): the path of the node's own
+//    BT, and the paths that end at the nodes (the arriving sides' paths);
 //  - from given points of the complex, each with the cell (triangle or dangling segment)
 //    holding it: the path seen from that cell (on a singular curve the side matters).
 // Each path carries BT at its first point and its length; along a path BT decreases at
@@ -37,6 +38,12 @@ struct CellPoint {
 
 std::vector<BurningPath> paths_from_vertices(const BurningField& field);
 std::vector<BurningPath> paths_from_curve_nodes(const BurningField& field, const MedialCurves& curves);
+// The paths that END on the curves (Fig. 5.2): at a node inside a triangle, its path; at a
+// node on an edge of M, the path seen from each triangle of that edge whose fire runs into
+// the edge (direction against the triangle's inward conormal at more than asin of
+// arrive_cosine: the sides whose fire stops there; medial_curves.h step 1).
+std::vector<BurningPath> paths_ending_on_curves(const BurningField& field, const MedialCurves& curves,
+                                                double arrive_cosine = 0.5);
 std::vector<BurningPath> paths_from_points(const BurningField& field, const std::vector<CellPoint>& points);
 
 // The nearest point of the complex to q (its triangles and dangling segments; isolated

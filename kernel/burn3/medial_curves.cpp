@@ -249,7 +249,7 @@ std::vector<bool> raw_end_edges(const AxisRefinement& k, const MedialCurveOption
 }
 
 // Closing and significance by length (step 1, second half; see header).
-void close_raw_ends(const AxisRefinement& k, std::vector<bool>& raw, int hops, double min_length) {
+void close_raw_ends(const AxisRefinement& k, std::vector<bool>& raw, int hops, double min_length, double min_et) {
   const std::size_t n = k.vertices.size();
   std::vector<std::vector<std::pair<std::uint32_t, std::uint32_t>>> adjacent(n);  // (vertex, edge)
   for (std::uint32_t e = 0; e < k.edges.size(); ++e) {
@@ -288,11 +288,27 @@ void close_raw_ends(const AxisRefinement& k, std::vector<bool>& raw, int hops, d
     }
     pieces.unite(a, found);
   }
-  std::unordered_map<std::uint32_t, double> length;
-  for (std::uint32_t e = 0; e < k.edges.size(); ++e)
-    if (raw[e]) length[pieces.find(k.edges[e].v[0])] += k.length(e);
-  for (std::uint32_t e = 0; e < k.edges.size(); ++e)
-    if (raw[e] && length[pieces.find(k.edges[e].v[0])] < min_length) raw[e] = false;
+  std::unordered_map<std::uint32_t, double> length, et;
+  for (std::uint32_t e = 0; e < k.edges.size(); ++e) {
+    if (!raw[e]) continue;
+    const std::uint32_t piece = pieces.find(k.edges[e].v[0]);
+    length[piece] += k.length(e);
+    double& best = et.emplace(piece, -1.0).first->second;
+    for (std::uint32_t v : k.edges[e].v) best = std::max(best, k.vertices[v].bt - k.vertices[v].radius);
+  }
+  for (std::uint32_t e = 0; e < k.edges.size(); ++e) {
+    if (!raw[e]) continue;
+    const std::uint32_t piece = pieces.find(k.edges[e].v[0]);
+    if (length[piece] < min_length || (min_et > 0 && et[piece] < min_et)) raw[e] = false;
+  }
+}
+
+// The largest finite ET = BT - R over the vertices of K.
+double largest_et(const AxisRefinement& k) {
+  double best = 0;
+  for (const RefinedVertex& v : k.vertices)
+    if (std::isfinite(v.bt)) best = std::max(best, v.bt - v.radius);
+  return best;
 }
 
 BettiNumbers complex_betti(const MedialComplex& mc) {
@@ -316,8 +332,8 @@ MedialCurves medial_curves(const AxisRefinement& k, const BurningField& field, c
   MedialCurveStats stats;
   const double margin = options.time_margin >= 0 ? options.time_margin : field.resolution();
   std::vector<bool> raw = raw_end_edges(k, options, margin);
-  close_raw_ends(k, raw, options.closing_hops,
-                 options.min_length >= 0 ? options.min_length : 3 * field.resolution());
+  close_raw_ends(k, raw, options.closing_hops, options.min_length >= 0 ? options.min_length : 3 * field.resolution(),
+                 options.min_et_fraction * largest_et(k));
   for (bool r : raw) stats.raw_end_edges += r ? 1 : 0;
   BurningCollapse collapse(k, raw, stats);
   collapse.puncture_cycles();

@@ -46,7 +46,10 @@
 //     raw ends, the shortest path of at most closing_hops edges of K to another piece
 //     is added (a ridge crossing K obliquely is a staircase whose steps meet at vertices or
 //     one edge apart), and pieces shorter than min_length are dropped (significance by
-//     length; a piece of one or two edges is discretisation noise at a corner).
+//     length; a piece of one or two edges is discretisation noise at a corner), and so
+//     are pieces whose largest ET = BT - R stays below min_et_fraction of the axis' largest
+//     ET (significance by erosion thickness, 3.4.1: fronts that meet right after they
+//     start, at the bumps of a sampled surface, carve no shape; 0 keeps them all).
 //  2. Punctures: the triangles of K that never burn (BT = infinity: the maximal closed
 //     subcomplex, Prop. 7) carry the 2-cycles of M. The triangles whose boundary columns
 //     reduce to zero over GF(2) are removed; there are b2 of them, and b0, b1 do not change
@@ -98,6 +101,8 @@ struct MedialCurveOptions {
   double time_margin = -1;     // step 1's time threshold; < 0: the field's resolution
   int closing_hops = 2;        // step 1: gaps of up to this many edges of K are closed
   double min_length = -1;      // step 1: shorter pieces are dropped; < 0: 3 x resolution
+  double min_et_fraction = 0;  // step 1: pieces whose largest ET is below this fraction of
+                               // the axis' largest ET are dropped (0: none)
 };
 
 struct CurveNode {
@@ -146,7 +151,7 @@ MedialCurves medial_curves(const AxisRefinement& k, const BurningField& field, c
 // The pieces, exposed for tests and figures.
 // Step 1 on a refinement: per edge of K, whether it is a raw end.
 std::vector<bool> raw_end_edges(const AxisRefinement& k, const MedialCurveOptions& options, double time_margin);
-void close_raw_ends(const AxisRefinement& k, std::vector<bool>& raw, int hops, double min_length);
+void close_raw_ends(const AxisRefinement& k, std::vector<bool>& raw, int hops, double min_length, double min_et = 0);
 // Betti numbers of M (vertices, triangles, dangling segments) over GF(2).
 BettiNumbers complex_betti(const MedialComplex& mc);
 

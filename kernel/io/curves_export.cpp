@@ -30,7 +30,8 @@ nlohmann::json medial_curves_json(const MedialCurves& c, const std::string& inpu
   j["axis_betti"] = {c.axis_betti.b0, c.axis_betti.b1, c.axis_betti.b2};
   j["options"] = {{"arrive_cosine", c.options.arrive_cosine},
                   {"depart_cosine", c.options.depart_cosine},
-                  {"time_margin", c.options.time_margin}};
+                  {"time_margin", c.options.time_margin},
+                  {"min_et_fraction", c.options.min_et_fraction}};
   const MedialCurveStats& s = c.stats;
   j["stats"] = {{"refined_vertices", s.refined_vertices}, {"refined_edges", s.refined_edges},
                 {"refined_triangles", s.refined_triangles}, {"raw_end_edges", s.raw_end_edges},

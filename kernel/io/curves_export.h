@@ -8,7 +8,7 @@
 //             medial_curves.h step 1) | "join" (kept to connect, or a dangling segment)
 //    "betti": [b0, b1],                                     of the graph
 //    "axis_betti": [b0, b1, b2],                            of the axis (simplicial homology)
-//    "options": {"arrive_cosine", "depart_cosine", "time_margin"}, "stats": {refinement and construction counts, seconds},
+//    "options": {"arrive_cosine", "depart_cosine", "time_margin", "min_et_fraction"}, "stats": {refinement and construction counts, seconds},
 //    "analysis": {"planar_tubularity", "planar_area", "tubular_area", "tubular_curve_length",
 //                 "planar_curve_length", "sheet_areas": [...], "curve_lengths": [...]}}
 // (burn3/shape_analysis.h: the split of 5.3 and the signature; lists sorted descending).
@@ -18,7 +18,7 @@
 //
 // Burning paths (burn3/burning_paths.h), format "grassfire-paths3d", version 1:
 //   {"format": "grassfire-paths3d", "version": 1, "input": NAME, "method": FIELD,
-//    "from": "vertices" | "curves" | "points",
+//    "from": "vertices" | "curves" | "ends" | "points",
 //    "paths": [{"bt", "length", "points": [[x, y, z], ...]}, ...]}
 // points[0] is the point the path leads to, the last point where its fire started; "bt"
 // is null where the point never burns (then the path is that point alone). Polylines: one

@@ -43,6 +43,8 @@ int run_curves3d(int argc, char** argv) {
   opt.option("arrive-cosine", "C", "a side arrives at an edge when its fire runs into it at an angle whose sine "
                                    "is above C (significance of a path end)", "0.5")
       .option("depart-cosine", "C", "a side departs when its fire leaves at an angle whose sine is above C", "0.1")
+      .option("min-et", "F", "drop pieces of path ends whose largest ET is below F times the axis' largest ET "
+                             "(significance by erosion thickness)", "0")
       .option("time-margin", "T", "a front arrived before the curve burned when earlier by more than T (default: "
                                   "the field's resolution, h for the discrete method)")
       .option("json", "OUT", "write the curve graph as JSON (format grassfire-curves3d)")
@@ -60,6 +62,8 @@ int run_curves3d(int argc, char** argv) {
   o.arrive_cosine = opt.get_double("arrive-cosine");
   o.depart_cosine = opt.get_double("depart-cosine");
   if (opt.has("time-margin")) o.time_margin = opt.get_double("time-margin");
+  o.min_et_fraction = opt.get_double("min-et");
+  if (!(o.min_et_fraction >= 0 && o.min_et_fraction <= 1)) throw std::runtime_error("--min-et must be in [0, 1]");
   if (!(o.arrive_cosine >= 0 && o.arrive_cosine < 1) || !(o.depart_cosine >= 0 && o.depart_cosine < 1))
     throw std::runtime_error("--arrive-cosine and --depart-cosine must be in [0, 1)");
   if (opt.has("time-margin") && !(o.time_margin >= 0)) throw std::runtime_error("--time-margin must be >= 0");

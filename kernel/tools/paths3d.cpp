@@ -2,7 +2,8 @@
 //
 // Builds the complex and its burning field (tools/field_input.h), then the burning paths
 // of the chosen points (burn3/burning_paths.h): every vertex, every node of the medial
-// curves (burn3/medial_curves.h; the curves are validated first), or the points of a file
+// curves (burn3/medial_curves.h; the curves are validated first), the paths that end on
+// the curves (one per arriving side at a node on an edge), or the points of a file
 // (one `x y z` or `x,y,z` per line, `#` comments), each taken to its nearest point of the
 // complex. Outputs (each written whole or not at all): --json (format grassfire-paths3d,
 // io/curves_export.h), --ply and --vtk (one polyline per path with BT along it).
@@ -50,8 +51,9 @@ int run_paths3d(int argc, char** argv) {
                          "reach chosen points, back to where it started (5.1.2).");
   opt.positional("INPUT", complex_input_help());
   declare_field_options(opt);
-  opt.option("from", "WHAT", "vertices (every vertex of the axis), curves (every node of the medial curves) or "
-                             "points (--points FILE)", "curves")
+  opt.option("from", "WHAT", "vertices (every vertex of the axis), curves (every node of the medial curves), ends "
+                             "(the paths that end on the medial curves: at a node on an edge of the axis, one per "
+                             "side whose fire runs into it) or points (--points FILE)", "ends")
       .option("points", "FILE", "points for --from points: one `x y z` per line; each goes to its nearest point of "
                                 "the axis")
       .option("json", "OUT", "write the paths as JSON (format grassfire-paths3d)")
@@ -60,8 +62,8 @@ int run_paths3d(int argc, char** argv) {
       .epilog("Example: grassfire paths3d board-fin --spacing 0.1 --from curves --vtk paths.vtk");
   if (!opt.parse(argc, argv)) return opt.exit_code();
   const std::string input = opt.arg("INPUT"), from = opt.get("from");
-  if (from != "vertices" && from != "curves" && from != "points")
-    throw std::runtime_error("--from must be vertices, curves or points");
+  if (from != "vertices" && from != "curves" && from != "ends" && from != "points")
+    throw std::runtime_error("--from must be vertices, curves, ends or points");
   if ((from == "points") != opt.has("points")) throw std::runtime_error("--points FILE goes with --from points");
   const std::vector<Vec3d> queries = from == "points" ? read_points(opt.get("points")) : std::vector<Vec3d>{};
   const FieldInput in = load_field(opt, input, "paths3d");
@@ -69,10 +71,10 @@ int run_paths3d(int argc, char** argv) {
   double farthest = 0;
   if (from == "vertices") {
     paths = paths_from_vertices(*in.field);
-  } else if (from == "curves") {
+  } else if (from == "curves" || from == "ends") {
     const MedialCurves curves = medial_curves(*in.field);
     curves.validate(*in.complex);
-    paths = paths_from_curve_nodes(*in.field, curves);
+    paths = from == "curves" ? paths_from_curve_nodes(*in.field, curves) : paths_ending_on_curves(*in.field, curves);
   } else {
     if (in.complex->triangle_count() == 0 && in.complex->count(EdgeStratum::Dangling) == 0)
       throw std::runtime_error(input + ": the complex has no triangle or segment to hold a point");
