@@ -93,3 +93,31 @@ void draw_mesh_flat(Renderer3d& r, const TriangleMesh3& mesh, const Rgb& color) 
 }
 
 }  // namespace grassfire::figures
+
+namespace grassfire::figures {
+
+void draw_surface_burning(Renderer3d& r, const TriangleMesh3& mesh, const AxisRefinement& k, int n, double lo, double hi) {
+  std::vector<Vec3d> points;
+  for (const auto& t : mesh.triangles) {
+    const Vec3d a = mesh.vertices[t[0]], b = mesh.vertices[t[1]], c = mesh.vertices[t[2]];
+    for (int i = 0; i <= n; ++i)
+      for (int j = 0; i + j <= n; ++j)
+        points.push_back(v3::add(a, v3::add(v3::scale(v3::sub(b, a), double(i) / n), v3::scale(v3::sub(c, a), double(j) / n))));
+  }
+  const SurfaceValues v = map_to_surface(k, points);
+  std::size_t base = 0;
+  for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
+    auto id = [&](int i, int j) { return base + static_cast<std::size_t>(i * (n + 1) - i * (i - 1) / 2 + j); };
+    auto tri = [&](std::size_t p, std::size_t q, std::size_t s) {
+      r.scalar_triangle({points[p], points[q], points[s]}, {v.bt[p], v.bt[q], v.bt[s]}, lo, hi, 1);
+    };
+    for (int i = 0; i < n; ++i)
+      for (int j = 0; i + j < n; ++j) {
+        tri(id(i, j), id(i + 1, j), id(i, j + 1));
+        if (i + j + 2 <= n) tri(id(i + 1, j), id(i + 1, j + 1), id(i, j + 1));
+      }
+    base += static_cast<std::size_t>((n + 1) * (n + 2) / 2);
+  }
+}
+
+}  // namespace grassfire::figures

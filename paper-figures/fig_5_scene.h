@@ -56,3 +56,11 @@ std::vector<T> every(const std::vector<T>& v, std::size_t n) {
 }
 
 }  // namespace grassfire::figures
+
+namespace grassfire::figures {
+
+// The mesh's triangles split n x n, each small triangle's corners coloured by the BT of
+// the medial ball touching them (shape_analysis.h: map_to_surface), hue lo..hi.
+void draw_surface_burning(Renderer3d& r, const TriangleMesh3& mesh, const AxisRefinement& k, int n, double lo, double hi);
+
+}  // namespace grassfire::figures

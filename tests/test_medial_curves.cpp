@@ -6,6 +6,7 @@
 #include <cmath>
 #include <memory>
 
+#include "burn3/curve_distance.h"
 #include "burn3/discrete_burning_field.h"
 #include "burn3/medial_curves.h"
 #include "complex3/builders/convex_polyhedron_axis.h"
@@ -257,4 +258,25 @@ TEST_CASE("validate catches broken curve graphs", "[curves]") {
     m.stats.residual_triangles = 3;
     CHECK_THROWS_WITH(m.validate(r.mc), Catch::Contains("not 1-dimensional"));
   }
+}
+
+TEST_CASE("Hausdorff distance between curve graphs: zero to itself, the offset of a parallel copy", "[curves]") {
+  const CurvesRun r(square_annulus({4, 2, 2}), 0.25);
+  MedialCurves moved = r.curves;  // the annulus' curves lie in z = 0; lifted by 0.3
+  for (CurveNode& n : moved.nodes) n.position[2] += 0.3;
+  CHECK(curve_hausdorff(r.curves, r.curves, 0.05) <= 1e-12);
+  CHECK(curve_hausdorff(r.curves, moved, 0.05) == Approx(0.3).margin(1e-12));
+  // Against brute force on a shifted copy (x + 0.17): every sample's nearest segment.
+  MedialCurves shifted = r.curves;
+  for (CurveNode& n : shifted.nodes) n.position[0] += 0.17;
+  double brute = 0;
+  for (const CurveNode& n : r.curves.nodes) {
+    double best = 1e300;
+    for (const CurveEdge& e : shifted.edges) {
+      const Segment s = {shifted.nodes[e.u].position, shifted.nodes[e.v].position};
+      best = std::min(best, to_segment(n.position, s));
+    }
+    brute = std::max(brute, best);
+  }
+  CHECK(directed_curve_distance(r.curves, shifted, 1e9) == Approx(brute).margin(1e-12));  // nodes only
 }

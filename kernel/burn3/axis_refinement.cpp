@@ -67,6 +67,7 @@ class Builder {
         rv.on = RefinedVertex::On::Edge;
         rv.cell = e;
         rv.index = i;
+        rv.weight = {1 - s, s, 0};
         rv.radius = r0 + s * (r1 - r0);
         rv.bt = f_.edge_point_burn_time(e, i);
         k_.vertices.push_back(rv);
@@ -131,6 +132,7 @@ class Builder {
       rv.position = v3::add(c0, v3::add(v3::scale(v3::sub(c1, c0), p.weight[1]), v3::scale(v3::sub(c2, c0), p.weight[2])));
       rv.on = RefinedVertex::On::Triangle;
       rv.cell = t;
+      rv.weight = p.weight;
       rv.radius = p.weight[0] * r[0] + p.weight[1] * r[1] + p.weight[2] * r[2];
       rv.bt = f_.sample_in_triangle(t, rv.position).bt;
       p.id = static_cast<std::uint32_t>(k_.vertices.size());

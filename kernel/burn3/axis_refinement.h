@@ -43,6 +43,11 @@ struct RefinedVertex {
   On on = On::Vertex;
   std::uint32_t cell = 0;   // vertex, edge or triangle of M
   std::uint32_t index = 0;  // On::Edge: the point's index i on the edge
+  // The point as a convex combination of its cell's vertices (exact rationals i / (n + 1)
+  // and j / L in principle; their nearest doubles): On::Triangle, of the triangle's
+  // corners v[0], v[1], v[2]; On::Edge, of the edge's ends v[0], v[1] (weight[2] = 0);
+  // On::Vertex, {1, 0, 0}.
+  std::array<double, 3> weight{1, 0, 0};
   double radius = 0;
   double bt = 0;
 };

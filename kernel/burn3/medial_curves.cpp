@@ -214,12 +214,12 @@ MedialCurves assemble(const AxisRefinement& k, const std::vector<bool>& alive, c
     if (!alive[v]) continue;
     node_of[v] = static_cast<std::uint32_t>(out.nodes.size());
     const RefinedVertex& rv = k.vertices[v];
-    out.nodes.push_back({rv.position, rv.radius, rv.bt, rv.on, rv.cell, rv.index});
+    out.nodes.push_back({rv.position, rv.radius, rv.bt, rv.on, rv.cell, rv.index, rv.weight});
   }
   for (std::uint32_t e = 0; e < k.edges.size(); ++e) {
     if (!kept[e]) continue;
     const RefinedEdge& re = k.edges[e];
-    out.edges.push_back({node_of[re.v[0]], node_of[re.v[1]], k.length(e), re.on_edge, re.in_triangle, raw[e]});
+    out.edges.push_back({node_of[re.v[0]], node_of[re.v[1]], k.length(e), re.on_edge, re.in_triangle, raw[e], re.segment});
   }
   out.curve_betti = graph_betti(out.nodes.size(), out.edges);
   return out;

@@ -76,10 +76,13 @@
 // paths; they are not computed as burning paths.
 //
 // Contract: a BurningField of a validated complex (any implementation, burning_field.h).
-// Guarantees checked by validate(): a graph (1-dimensional), every edge a segment of one
-// closed cell of M (a triangle, or an edge of M) -- exactly by construction, and its
-// double end points within 1e-9 of the bounding diagonal of that cell's plane and extent
-// --, and b0, b1 equal to those of M by simplicial homology over GF(2)
+// Guarantees checked by validate(): a graph (1-dimensional); every edge a segment of one
+// closed cell of M (a triangle, or an edge of M), exactly: both its nodes lie in that
+// cell's closure combinatorially (a vertex of it, a point of one of its edges, or a point
+// inside it), each node is a convex combination of its own cell's vertices (weights in
+// [0, 1] summing to 1, within 1e-12), and its double position is that combination within
+// 1e-9 of the bounding diagonal (a direct evaluation, well conditioned even on slivers);
+// and b0, b1 equal to those of M by simplicial homology over GF(2)
 // (complex3/builders/simplicial_homology.h), computed independently of the construction.
 // Complexity: O(K log K) for K triangles of the refinement, plus the GF(2) reduction of the
 // never-burning part (quadratic in its size in the worst case).
@@ -110,6 +113,7 @@ struct CurveNode {
   double radius = 0, bt = 0;  // ET = bt - radius
   RefinedVertex::On on = RefinedVertex::On::Vertex;  // where it lies in M (axis_refinement.h)
   std::uint32_t cell = 0, index = 0;
+  std::array<double, 3> weight{1, 0, 0};
 };
 
 struct CurveEdge {
@@ -118,6 +122,7 @@ struct CurveEdge {
   std::uint32_t on_edge = kNoIndex;      // parent cell in M: an edge of M, or
   std::uint32_t in_triangle = kNoIndex;  // the triangle of M it crosses
   bool raw_end = false;                  // a raw medial-curve edge (step 1), else a join
+  bool segment = false;                  // on a dangling segment of M (a 1-dimensional part)
 };
 
 struct MedialCurveStats {

@@ -16,28 +16,44 @@ namespace {
   throw std::logic_error("medial curves of " + mc.source() + ": " + what);
 }
 
-double segment_distance(const Vec3d& p, const Vec3d& a, const Vec3d& b) {
-  const Vec3d ab = v3::sub(b, a);
-  const double len2 = v3::dot(ab, ab);
-  const double s = len2 > 0 ? std::clamp(v3::dot(v3::sub(p, a), ab) / len2, 0.0, 1.0) : 0.0;
-  return v3::dist(p, v3::lerp(a, b, s));
+// The node as the convex combination of its cell's vertices (its weights).
+Vec3d from_weights(const MedialComplex& mc, const CurveNode& n) {
+  switch (n.on) {
+    case RefinedVertex::On::Vertex: return mc.vertex(n.cell).approx;
+    case RefinedVertex::On::Edge:
+      return v3::add(v3::scale(mc.vertex(mc.edge(n.cell).v[0]).approx, n.weight[0]),
+                     v3::scale(mc.vertex(mc.edge(n.cell).v[1]).approx, n.weight[1]));
+    case RefinedVertex::On::Triangle: {
+      const auto& v = mc.triangle(n.cell).v;
+      return v3::add(v3::scale(mc.vertex(v[0]).approx, n.weight[0]),
+                     v3::add(v3::scale(mc.vertex(v[1]).approx, n.weight[1]), v3::scale(mc.vertex(v[2]).approx, n.weight[2])));
+    }
+  }
+  return n.position;
 }
 
-// Distance from p to the closed triangle abc: to its plane when the projection falls
-// inside (barycentric signs), else to the nearest side.
-double triangle_distance(const Vec3d& p, const Vec3d& a, const Vec3d& b, const Vec3d& c) {
-  const Vec3d n = v3::cross(v3::sub(b, a), v3::sub(c, a));
-  const double n2 = v3::dot(n, n);
-  if (n2 > 0) {
-    const Vec3d ap = v3::sub(p, a);
-    const double along = v3::dot(ap, n) / n2;
-    const Vec3d q = v3::sub(p, v3::scale(n, along));
-    const double wa = v3::dot(v3::cross(v3::sub(b, q), v3::sub(c, q)), n);
-    const double wb = v3::dot(v3::cross(v3::sub(c, q), v3::sub(a, q)), n);
-    const double wc = v3::dot(v3::cross(v3::sub(a, q), v3::sub(b, q)), n);
-    if (wa >= 0 && wb >= 0 && wc >= 0) return std::abs(along) * std::sqrt(n2);
+bool cell_in_range(const MedialComplex& mc, const CurveNode& n) {
+  switch (n.on) {
+    case RefinedVertex::On::Vertex: return n.cell < mc.vertex_count();
+    case RefinedVertex::On::Edge: return n.cell < mc.edge_count();
+    case RefinedVertex::On::Triangle: return n.cell < mc.triangle_count();
   }
-  return std::min({segment_distance(p, a, b), segment_distance(p, b, c), segment_distance(p, c, a)});
+  return false;
+}
+
+// Does node n lie in the closure of the edge e of M, or of the triangle t of M?
+bool in_edge(const MedialComplex& mc, const CurveNode& n, std::uint32_t e) {
+  if (n.on == RefinedVertex::On::Vertex) return mc.edge(e).v[0] == n.cell || mc.edge(e).v[1] == n.cell;
+  return n.on == RefinedVertex::On::Edge && n.cell == e;
+}
+bool in_triangle(const MedialComplex& mc, const CurveNode& n, std::uint32_t t) {
+  const ComplexTriangle& tr = mc.triangle(t);
+  switch (n.on) {
+    case RefinedVertex::On::Vertex: return corner_of(tr, n.cell) >= 0;
+    case RefinedVertex::On::Edge: return tr.e[0] == n.cell || tr.e[1] == n.cell || tr.e[2] == n.cell;
+    case RefinedVertex::On::Triangle: return n.cell == t;
+  }
+  return false;
 }
 
 double bounding_diagonal(const MedialComplex& mc) {
@@ -53,6 +69,17 @@ void MedialCurves::validate(const MedialComplex& mc) const {
   if (stats.residual_triangles != 0)
     fail(mc, std::to_string(stats.residual_triangles) + " triangles could not be collapsed: not 1-dimensional");
   const double tolerance = 1e-9 * std::max(1.0, bounding_diagonal(mc));
+  for (std::size_t i = 0; i < nodes.size(); ++i) {
+    const CurveNode& n = nodes[i];
+    const std::string name = "node " + std::to_string(i);
+    if (!cell_in_range(mc, n)) fail(mc, name + ": its cell is out of range");
+    const double sum = n.weight[0] + n.weight[1] + n.weight[2];
+    for (double w : n.weight)
+      if (!(w >= -1e-12 && w <= 1 + 1e-12)) fail(mc, name + " is not a convex combination of its cell");
+    if (std::abs(sum - 1) > 1e-12) fail(mc, name + " is not a convex combination of its cell");
+    const double off = v3::dist(n.position, from_weights(mc, n));
+    if (off > tolerance) fail(mc, name + " leaves its cell of the axis by " + std::to_string(off));
+  }
   std::set<std::pair<std::uint32_t, std::uint32_t>> seen;
   for (std::size_t i = 0; i < edges.size(); ++i) {
     const CurveEdge& e = edges[i];
@@ -61,19 +88,12 @@ void MedialCurves::validate(const MedialComplex& mc) const {
     if (!seen.insert({std::min(e.u, e.v), std::max(e.u, e.v)}).second) fail(mc, name + " repeats an edge");
     const Vec3d a = nodes[e.u].position, b = nodes[e.v].position;
     if (std::abs(v3::dist(a, b) - e.length) > 1e-12 * std::max(1.0, e.length)) fail(mc, name + " has a wrong length");
-    double off = 0;
     if ((e.on_edge == kNoIndex) == (e.in_triangle == kNoIndex)) fail(mc, name + " has no single parent cell");
-    if (e.on_edge != kNoIndex) {
-      if (e.on_edge >= mc.edge_count()) fail(mc, name + ": parent edge out of range");
-      const Vec3d p = mc.vertex(mc.edge(e.on_edge).v[0]).approx, q = mc.vertex(mc.edge(e.on_edge).v[1]).approx;
-      off = std::max(segment_distance(a, p, q), segment_distance(b, p, q));
-    } else {
-      if (e.in_triangle >= mc.triangle_count()) fail(mc, name + ": parent triangle out of range");
-      const auto& t = mc.triangle(e.in_triangle).v;
-      const Vec3d p = mc.vertex(t[0]).approx, q = mc.vertex(t[1]).approx, r = mc.vertex(t[2]).approx;
-      off = std::max(triangle_distance(a, p, q, r), triangle_distance(b, p, q, r));
-    }
-    if (off > tolerance) fail(mc, name + " leaves its cell of the axis by " + std::to_string(off));
+    const bool inside = e.on_edge != kNoIndex
+                            ? e.on_edge < mc.edge_count() && in_edge(mc, nodes[e.u], e.on_edge) && in_edge(mc, nodes[e.v], e.on_edge)
+                            : e.in_triangle < mc.triangle_count() && in_triangle(mc, nodes[e.u], e.in_triangle) &&
+                                  in_triangle(mc, nodes[e.v], e.in_triangle);
+    if (!inside) fail(mc, name + " is not a segment of one cell of the axis");
   }
   UnionFind uf(nodes.size());
   for (const CurveEdge& e : edges) uf.unite(e.u, e.v);

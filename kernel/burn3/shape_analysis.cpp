@@ -79,7 +79,10 @@ ShapeAnalysis analyze_shape(const AxisRefinement& k, const MedialCurves& curves,
   a.tubular_edge.resize(curves.edges.size());
   for (std::uint32_t e = 0; e < curves.edges.size(); ++e) {
     const CurveNode &u = curves.nodes[curves.edges[e].u], &v = curves.nodes[curves.edges[e].v];
-    a.tubular_edge[e] = tubularity((u.radius + v.radius) / 2, (u.bt + v.bt) / 2) < options.planar_tubularity;
+    // On a dangling segment of M (a 1-dimensional part of the axis: a tube's axis itself)
+    // the edge is tubular by definition: ST would measure its length, not a sideways extent.
+    a.tubular_edge[e] =
+        curves.edges[e].segment || tubularity((u.radius + v.radius) / 2, (u.bt + v.bt) / 2) < options.planar_tubularity;
     (a.tubular_edge[e] ? a.signature.tubular_curve_length : a.signature.planar_curve_length) += curves.edges[e].length;
   }
   a.signature.sheet_areas = part_areas(k, a.planar);

@@ -12,8 +12,10 @@
 //    planar (zero-radius complexes are all sheet);
 //  - the signature: the areas of the planar parts (connected sets of planar triangles of
 //    K sharing edges; the medial sheets of the mixed-dimensional axis) and the lengths of
-//    the tubular branches of the medial curves (chains of curve edges whose midpoints lie
-//    in tubular triangles, cut at nodes of degree other than 2), each sorted descending,
+//    the tubular branches of the medial curves (chains of curve edges whose midpoints have
+//    ST below the threshold, or that lie on a dangling segment of M -- a 1-dimensional part
+//    of the axis is a tube's own axis --, cut at nodes of degree other than 2), each sorted
+//    descending,
 //    and their totals;
 //  - the surface values (Fig. 5.5): each surface point p takes BT, ET and R of the axis
 //    sample x (a vertex of K with finite BT) minimising |p - x| - R(x): the medial ball
