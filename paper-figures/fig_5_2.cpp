@@ -57,7 +57,7 @@ std::vector<FigureFile> fig_5_2(const FigureContext& ctx) {
     for (std::uint32_t t = 0; t < s.mc.triangle_count(); t += 37) {
       const auto& v = s.mc.triangle(t).v;
       const Vec3d c = v3::scale(v3::add(s.mc.vertex(v[0]).approx, v3::add(s.mc.vertex(v[1]).approx, s.mc.vertex(v[2]).approx)), 1.0 / 3);
-      if (in_board_fin_window(c) && c[1] > 0.5) grid.push_back({false, t, c, 0});
+      if (in_board_fin_window(c) && c[1] > 0.5) grid.push_back({CellPoint::Kind::Triangle, t, c, 0});
     }
     draw_paths(r, paths_from_points(*s.field, grid), kFlow, 0.7, 0.18);
     std::vector<BurningPath> ends = paths_ending_on_curves(*s.field, s.curves);

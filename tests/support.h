@@ -4,6 +4,7 @@
 #include <gmpxx.h>
 
 #include <cstdint>
+#include <exception>
 #include <string>
 #include <tuple>
 #include <vector>
@@ -34,6 +35,17 @@ struct CliRun {
   std::string output;
 };
 CliRun run_cli(const std::string& args);
+
+// The message of the exception f() throws, or "no error".
+template <class F>
+std::string error_of(F f) {
+  try {
+    f();
+  } catch (const std::exception& e) {
+    return e.what();
+  }
+  return "no error";
+}
 
 // A path in the temporary folder that no other test process uses at the same time
 // (CTest runs test cases in parallel): <tmp>/<pid>_<name>.

@@ -8,6 +8,7 @@
 
 #include "burn3/burning_paths.h"
 #include "burn3/discrete_burning_field.h"
+#include "burn3/point_sources.h"
 #include "complex3/synthetic_complexes.h"
 #include "complex3/synthetic_tubes.h"
 #include "complex3/vec3.h"
@@ -50,7 +51,7 @@ TEST_CASE("burning paths start on the border and carry BT as their length (R = 0
       const Vec3d a = mc.vertex(tv[0]).approx;
       const Vec3d p = v3::add(a, v3::add(v3::scale(v3::sub(mc.vertex(tv[1]).approx, a), u),
                                          v3::scale(v3::sub(mc.vertex(tv[2]).approx, a), v)));
-      points.push_back({false, t, p, 0});
+      points.push_back({CellPoint::Kind::Triangle, t, p, 0});
     }
     for (const BurningPath& p : paths_from_points(field, points)) paths.push_back(p);
     std::size_t checked = 0;
@@ -108,4 +109,26 @@ TEST_CASE("field samples are side times at graph points and 1-Lipschitz between 
   const FieldSample s = field.sample_in_triangle(t, centre);
   for (std::uint32_t v : tv) CHECK(std::abs(s.bt - d.vertex_bt[v]) <= v3::dist(centre, mc.vertex(v).approx) + 1e-12);
   CHECK(std::abs(v3::norm(s.direction) - 1) <= 1e-12);
+}
+
+TEST_CASE("burning paths from a point source end at the source", "[paths]") {
+  // A square sheet whose border never ignites, lit at a point inside a triangle: BT is the
+  // distance to the source and every path runs straight back to it.
+  const MedialComplex mc = built(without_border_ignition(square_annulus({4, 2, 1})));
+  const ComplexLocator locator(mc);
+  const ExactPoint3 q{mpq_class(7, 2), mpq_class(3, 10), mpq_class(0)};
+  DiscreteBurningOptions o;
+  o.spacing = 0.25;
+  o.sources.push_back({locator.locate(q), 0});
+  REQUIRE(o.sources[0].location.kind == ComplexPoint::Kind::Triangle);
+  const DiscreteBurning d = burn_discrete(mc, o);
+  const DiscreteBurningField field(mc, d);
+  std::size_t checked = 0;
+  for (const BurningPath& p : paths_from_vertices(field)) {
+    if (!std::isfinite(p.bt)) continue;
+    ++checked;
+    CHECK(v3::dist(p.points.back(), {3.5, 0.3, 0}) <= 1e-12);  // ends at the source
+    CHECK(p.bt == Approx(p.length).margin(1e-9));                 // t0 = 0
+  }
+  CHECK(checked > 20);
 }

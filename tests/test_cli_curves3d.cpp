@@ -56,7 +56,7 @@ TEST_CASE("paths3d writes the burning paths of curve nodes, vertices and given p
   const std::string json = temp_path("paths.json"), points = temp_path("paths_points.txt");
   {
     std::ofstream out(points);
-    out << "# x y z\n5 5 2\n-2, 3, 0\n";
+    out << "# points\nx,y,z\n5, 5, 2\n-2,3,0\n";
   }
   auto r = run_cli("paths3d board-fin --spacing 0.25 --from points --points " + points + " --json " + json);
   INFO(r.output);
@@ -86,11 +86,11 @@ TEST_CASE("curves3d and paths3d: bad input gives one message and no output", "[c
   CHECK(!exists(json));
   {
     std::ofstream out(points);
-    out << "1 2\n";
+    out << "x,y,z\n1,2\n";
   }
   r = run_cli("paths3d annulus --from points --points " + points + " --json " + json);
   CHECK(r.code == 1);
-  CHECK(r.output.find(":1: expected three finite numbers") != std::string::npos);
+  CHECK(r.output.find(points + ":2:") != std::string::npos);
   CHECK(!exists(json));
   r = run_cli("paths3d annulus --from nowhere");
   CHECK(r.code == 1);

@@ -6,8 +6,9 @@
 //  - from every vertex of the complex (the path of the vertex's own BT);
 //  - from every node of a medial curve graph (medial_curves.h): the path of the node's own
 //    BT, and the paths that end at the nodes (the arriving sides' paths);
-//  - from given points of the complex, each with the cell (triangle or dangling segment)
-//    holding it: the path seen from that cell (on a singular curve the side matters).
+//  - from given points of the complex, each with the cell (vertex, triangle or dangling
+//    segment) to see it from: the path seen from that cell (on a singular curve the side
+//    matters).
 // Each path carries BT at its first point and its length; along a path BT decreases at
 // unit rate, so BT = f(start) + length for the exact field, and for the baseline up to
 // double rounding (its BT is the sum of its moves).
@@ -20,6 +21,7 @@
 
 #include "burn3/burning_field.h"
 #include "burn3/medial_curves.h"
+#include "complex3/point_location.h"
 
 namespace grassfire {
 
@@ -30,8 +32,9 @@ struct BurningPath {
 };
 
 struct CellPoint {
-  bool on_segment = false;  // a dangling segment (cell = edge id, parameter s) or
-  std::uint32_t cell = 0;   // a triangle (cell = triangle id, point p)
+  enum class Kind : std::uint8_t { Vertex, Segment, Triangle };
+  Kind kind = Kind::Triangle;  // a vertex (cell = vertex id), a dangling segment (cell =
+  std::uint32_t cell = 0;      // edge id, parameter s) or a triangle (cell = triangle id)
   Vec3d p{};
   double s = 0;
 };
@@ -46,9 +49,11 @@ std::vector<BurningPath> paths_ending_on_curves(const BurningField& field, const
                                                 double arrive_cosine = 0.5);
 std::vector<BurningPath> paths_from_points(const BurningField& field, const std::vector<CellPoint>& points);
 
-// The nearest point of the complex to q (its triangles and dangling segments; isolated
-// vertices are skipped), in doubles: the located point and the cell holding it. For
-// drawing and for --points in paths3d; `distance` says how far q was.
-CellPoint nearest_cell_point(const MedialComplex& mc, const Vec3d& q, double* distance);
+// A located point of the complex (complex3/point_location.h) as the cell to see it from:
+// a vertex; a point of a dangling segment; a point of a triangle; a point of an edge with
+// triangles, seen from the triangle whose side time completes the link rule there (the
+// (k-1)-th earliest of k >= 3 sheets, the earliest of one or two), whose path is the
+// point's own.
+CellPoint cell_point(const BurningField& field, const ComplexPoint& x);
 
 }  // namespace grassfire

@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cmath>
 #include <queue>
+#include <stdexcept>
 
 #include "burn3/steiner_graph.h"
 
@@ -40,7 +41,9 @@ class Burner {
     done_.assign(g_.slot_total(), 0);
   }
 
-  void run() {
+  void run(const DiscreteBurningOptions& options) {
+    for (std::uint32_t i = 0; i < options.sources.size(); ++i) ignite(options.sources[i], i);
+    for (const PointSource& source : options.sources) out_.source_points.push_back(source.location.approx());
     for (std::uint32_t v = 0; v < nv_; ++v)
       if (std::isfinite(mc_.ignition_at_vertex(v))) heap_.push({mc_.ignition_at_vertex(v), v, kIgnite});
     for (std::uint32_t e = 0; e < mc_.edge_count(); ++e) {
@@ -56,6 +59,7 @@ class Burner {
       const Arrival a = heap_.top();
       heap_.pop();
       ++out_.stats.pops;
+      if (options.progress && (out_.stats.pops & 0xFFFF) == 0) options.progress(burned_, g_.node_count());
       if (std::isfinite(bt_[a.node])) continue;
       if (a.slot == kIgnite) {
         out_.burn_slot[a.node] = DiscreteBurning::kIgnited;
@@ -99,16 +103,42 @@ class Burner {
 
   void burn(std::uint32_t node, double time) {
     bt_[node] = time;
-    g_.for_each_move(node, [&](std::uint32_t y, std::uint32_t local, double length) {
-      if (std::isfinite(bt_[y])) return;
-      const std::uint64_t s = slot(y, local);
-      const double t = time + length;
-      if (!(t < out_.arrival_time[s])) return;
-      out_.arrival_time[s] = t;
-      out_.arrival_from[s] = node;
-      heap_.push({t, y, local});
-      ++out_.stats.pushes;
-    });
+    ++burned_;
+    g_.for_each_move(node, [&](std::uint32_t y, std::uint32_t local, double length) { arrive(y, local, time + length, node); });
+  }
+
+  // `from`: the graph point that emitted the fire, or DiscreteBurning::kFromSource + i for
+  // the moves of point source i (recorded for the burning paths).
+  void arrive(std::uint32_t y, std::uint32_t local, double t, std::uint32_t from) {
+    if (std::isfinite(bt_[y])) return;
+    const std::uint64_t s = slot(y, local);
+    if (!(t < out_.arrival_time[s])) return;
+    out_.arrival_time[s] = t;
+    out_.arrival_from[s] = from;
+    heap_.push({t, y, local});
+    ++out_.stats.pushes;
+  }
+
+  // A point source: its graph point ignites, or its straight moves carry fire to the graph
+  // points of its closed triangles (see DiscreteBurningOptions::sources).
+  void ignite(const PointSource& source, std::uint32_t index) {
+    const double t0 = source.t0.get_d();
+    const ComplexPoint& x = source.location;
+    const std::uint32_t from = DiscreteBurning::kFromSource + index;
+    auto move = [&](std::uint32_t y, std::uint32_t local, double length) { arrive(y, local, t0 + length, from); };
+    if (x.kind == ComplexPoint::Kind::Vertex) {
+      heap_.push({t0, x.id, kIgnite});
+    } else if (x.kind == ComplexPoint::Kind::Triangle) {
+      g_.for_each_move_from_triangle_point(x.approx(), x.id, move);
+    } else {
+      const mpq_class scaled = x.parameter * (g_.steiner_count(x.id) + 1);
+      const mpz_class lower = scaled.get_num() / scaled.get_den();  // floor: scaled > 0
+      const auto i = static_cast<std::uint32_t>(lower.get_ui());
+      if (scaled == lower)
+        heap_.push({t0, g_.steiner_node(x.id, i), kIgnite});
+      else
+        g_.for_each_move_from_edge_point(x.approx(), x.id, i, move);
+    }
   }
 
   const SteinerGraph& g_;
@@ -116,6 +146,7 @@ class Burner {
   DiscreteBurning& out_;
   const std::uint32_t nv_;
   std::vector<double> bt_;
+  std::uint64_t burned_ = 0;
   std::vector<std::uint8_t> done_;
   std::priority_queue<Arrival, std::vector<Arrival>, std::greater<Arrival>> heap_;
 };
@@ -151,7 +182,10 @@ DiscreteBurning burn_discrete(const MedialComplex& mc, const DiscreteBurningOpti
   const SteinerGraph graph(mc, options.spacing, options.max_points);
   Burner burner(graph, out);
   burner.layout();
-  burner.run();
+  for (const PointSource& s : options.sources)
+    if (sgn(s.location.snap_squared) != 0)
+      throw std::invalid_argument(mc.source() + ": a point source does not lie on the complex");
+  burner.run(options);
   burner.finish();
   out.stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return out;

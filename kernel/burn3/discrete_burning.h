@@ -40,14 +40,17 @@
 // shrinks linearly in h (experiments/study_board_fin_convergence.cpp).
 // Contract: a validated MedialComplex; spacing h > 0 and the point budget respected.
 // Complexity: O(N log N + sum over triangles of (points on its boundary)^2) with N graph
-// points; memory O(N (2 + average edge degree)).
+// points; memory O(N (2 + average edge degree)). BT at points that are not graph points:
+// discrete_query.h.
 #pragma once
 
 #include <array>
 #include <cstdint>
+#include <functional>
 #include <limits>
 #include <vector>
 
+#include "burn3/point_sources.h"
 #include "complex3/medial_complex.h"
 
 namespace grassfire {
@@ -55,6 +58,15 @@ namespace grassfire {
 struct DiscreteBurningOptions {
   double spacing = 0.25;                   // h
   std::uint64_t max_points = 200'000'000;  // refuse (std::invalid_argument) above this
+  // Points that ignite at their t0 (point_sources.h), besides the border. A source at a
+  // vertex or exactly at a Steiner point ignites that graph point; a source inside an edge
+  // or a triangle is joined by straight moves to the graph points of the closed triangles
+  // that hold it (SteinerGraph::for_each_move_from_*_point), which it reaches at
+  // t0 + distance through the link element of that move. Every such move is a
+  // non-crossing segment, so the upper-bound argument above holds unchanged.
+  std::vector<PointSource> sources{};
+  // Called now and then during the run with (graph points burned, graph points in all).
+  std::function<void(std::uint64_t, std::uint64_t)> progress{};
 };
 
 struct DiscreteBurningStats {
@@ -100,10 +112,14 @@ class DiscreteBurning {
   // Burning paths (burning_field.h): per slot, the graph point whose move gave the slot's
   // recorded arrival (kNoIndex when arrival_time is kInfinity); per graph point (vertices,
   // then Steiner points edge by edge), the local slot of the arrival that burned it, or
-  // kIgnited when it burned at its own ignition f (a border point), kNoIndex if never.
+  // kIgnited when it burned at its own ignition f (a border point, or a source at the
+  // point), kNoIndex if never. An arrival carried from point source i straight to a graph
+  // point records kFromSource + i (its position: source_points[i]).
   // Following arrival_from[slot(x, burn_slot[x])] from x back to an ignited point is the
   // discrete burning path of x (a polygonal non-crossing path, Definition 9).
   static constexpr std::uint32_t kIgnited = std::numeric_limits<std::uint32_t>::max() - 1;
+  static constexpr std::uint32_t kFromSource = 0x80000000u;  // graph points stay below 2^31
+  std::vector<Vec3d> source_points;
   std::vector<std::uint32_t> arrival_from;
   std::vector<std::uint32_t> burn_slot;
 };

@@ -30,6 +30,10 @@ std::string DiscreteBurningField::method() const {
   return buf;
 }
 
+Vec3d DiscreteBurningField::position(std::uint32_t node) const {
+  return is_source(node) ? d_.source_points[node - DiscreteBurning::kFromSource] : g_.position(node);
+}
+
 double DiscreteBurningField::node_bt(std::uint32_t node) const {
   return g_.is_vertex(node) ? d_.vertex_bt[node] : d_.steiner_bt[node - g_.vertex_count()];
 }
@@ -120,8 +124,8 @@ Vec3d DiscreteBurningField::chord_step(const Vec3d& at, const Vec3d& q, double& 
 // burning path (or the path's end when it is shorter).
 Vec3d DiscreteBurningField::chord_start(Vec3d at, std::uint32_t node, double left) const {
   for (std::uint64_t guard = 0; node != kNoIndex && left > 0 && guard <= g_.node_count(); ++guard) {
-    at = chord_step(at, g_.position(node), left);
-    node = own(node).next;
+    at = chord_step(at, position(node), left);
+    node = is_source(node) ? kNoIndex : own(node).next;
   }
   return at;
 }
@@ -164,8 +168,8 @@ FieldSample DiscreteBurningField::sample_on_segment(std::uint32_t e, double s) c
 // point (BT strictly decreases along a path up to ties, and a graph point is burned once).
 void DiscreteBurningField::append_path(std::uint32_t node, std::vector<Vec3d>& path) const {
   for (std::uint64_t guard = 0; node != kNoIndex && guard <= g_.node_count(); ++guard) {
-    path.push_back(g_.position(node));
-    node = own(node).next;
+    path.push_back(position(node));
+    node = is_source(node) ? kNoIndex : own(node).next;
   }
 }
 

@@ -17,6 +17,8 @@
 //    alone is off by up to 60 degrees near the triangle's boundary, a chord over 6 h by
 //    about 5 (it cuts corners within 6 h after a real turn);
 //  - on a dangling segment: the same from the graph points of the segment.
+// Point sources (DiscreteBurningOptions::sources): a path that came straight from a source
+// ends at the source's point.
 // Ties between equal candidates go to the first graph point in the order: t's corners,
 // then the Steiner points of t.e[0], t.e[1], t.e[2] (deterministic).
 // Error: that of the baseline (discrete_burning.h): BT_t is an upper bound of the true
@@ -67,6 +69,10 @@ class DiscreteBurningField final : public BurningField {
   };
   BorderFoot nearest_ignition(std::uint32_t t, const Vec3d& p) const;
   double node_bt(std::uint32_t node) const;
+  // A path step is a graph point, or a point source (DiscreteBurning::kFromSource + i),
+  // where the path ends.
+  static bool is_source(std::uint32_t step) { return step != kNoIndex && step >= DiscreteBurning::kFromSource; }
+  Vec3d position(std::uint32_t step) const;
   Side own(std::uint32_t node) const;
   Side through_triangle(std::uint32_t node, std::uint32_t t) const;
   Side through_slot(std::uint32_t node, std::uint32_t local) const;

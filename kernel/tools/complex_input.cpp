@@ -1,4 +1,4 @@
-// complex_input.cpp -- INPUT of the 3D commands (see header).
+// complex_input.cpp -- see complex_input.h.
 #include "tools/complex_input.h"
 
 #include <iostream>
@@ -6,8 +6,8 @@
 
 #include "complex3/builders/medial_axis_input.h"
 #include "complex3/synthetic_complexes.h"
+#include "io/complex_json.h"
 #include "io/complex_ma.h"
-#include "io/complex_text.h"
 #include "io/mesh_io.h"
 
 namespace grassfire::cli {
@@ -22,9 +22,17 @@ bool is_synthetic(const std::string& input) {
 
 }  // namespace
 
+std::string complex_input_help() {
+  return "a complex (.json in the grassfire-complex format, .ma medial axis); a shape whose medial axis is built as "
+         "by `grassfire medial3d`: a closed mesh (.off/.ply/.obj: exact for convex meshes, else from its inner polar "
+         "balls), a half-space list (.hs) or a ball list (.cin/.balls, exact); or a synthetic complex: board-fin, "
+         "board-cylinder, book:K, y-junction, tetrahedron, octahedron, double-cone, tetrahedron-flap, box:A:B:C";
+}
+
 RawComplex load_complex(const std::string& input, bool mesh_is_complex, const std::string& command) {
   if (is_synthetic(input)) return synthetic_complex(input);
   const std::string ext = file_extension(input);
+  if (ext == "json") return read_complex_json(input);
   if (ext == "ma") return read_ma(input);
   if (mesh_is_complex) {
     if (ext != "off" && ext != "ply" && ext != "obj")
@@ -40,14 +48,8 @@ RawComplex load_complex(const std::string& input, bool mesh_is_complex, const st
   std::string names;
   for (const std::string& n : synthetic_complex_names()) names += " " + n;
   throw std::runtime_error("'" + input + "' is neither a synthetic complex (" + names.substr(1) +
-                           ") nor a file with extension .ma, .off, .ply, .obj, .hs, .halfspaces, .cin or .balls");
-}
-
-std::string complex_input_help() {
-  return "a .ma medial axis; a shape whose medial axis is built as by `grassfire medial3d`: a closed mesh "
-         "(.off/.ply/.obj: exact for convex meshes, else from its inner polar balls), a half-space list (.hs) or a "
-         "ball list (.cin/.balls, exact); or a synthetic complex: board-fin, board-cylinder, book:K, y-junction, "
-         "tetrahedron, octahedron, double-cone, tetrahedron-flap, box:A:B:C, tube, annulus, torus";
+                           ") nor a file with extension .json, .ma, .off, .ply, .obj, .hs, .halfspaces, .cin or "
+                           ".balls");
 }
 
 }  // namespace grassfire::cli
