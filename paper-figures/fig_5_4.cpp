@@ -7,6 +7,7 @@
 #include <cmath>
 
 #include "caption_printf.h"
+#include "number/exact_sum.h"
 #include "complex3/builders/union_of_balls_axis.h"
 #include "fig_4_scene.h"
 #include "fig_5_scene.h"
@@ -29,8 +30,8 @@ BallSet paddle() {
   };
   for (int i = -8; i <= 8; ++i)
     for (int j = -8; j <= 8; ++j)
-      if (i * i + j * j <= 64) add(mpq_class(i, 2), mpq_class(j, 2), 1);  // the plate: |c| <= 4
-  for (int k = 0; k <= 12; ++k) add(mpq_class(9 + k, 2), 0, mpq_class(16, 25));  // the handle
+      if (i * i + j * j <= 64) add(make_rational(i, 2), make_rational(j, 2), 1);  // the plate: |c| <= 4
+  for (int k = 0; k <= 12; ++k) add(make_rational(9 + k, 2), 0, make_rational(16, 25));  // the handle
   return b;
 }
 

@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "complex3/complex_builder.h"
+#include "number/exact_sum.h"
 #include "complex3/synthetic_complexes.h"
 
 namespace grassfire {
@@ -82,7 +83,7 @@ RawComplex square_annulus(const AnnulusOptions& o) {
   const int g = o.cells_per_unit, n = (o.outer - o.inner) * g;
   std::vector<std::uint32_t> previous;
   for (int m = 0; m <= n; ++m) {
-    const std::vector<std::uint32_t> ring = ids(b, square_ring(o.inner + mpq_class(m, g), 2 * (o.inner * g + m), 0));
+    const std::vector<std::uint32_t> ring = ids(b, square_ring(o.inner + make_rational(m, g), 2 * (o.inner * g + m), 0));
     if (m > 0) join_square_rings(b, previous, ring);
     previous = ring;
   }
