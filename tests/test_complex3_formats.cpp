@@ -21,7 +21,7 @@ namespace {
 
 std::string data(const std::string& name) { return std::string(GF_TEST_DATA) + "/3d/" + name; }
 
-std::string temp_path(const std::string& name) { return "/tmp/grassfire_complex3_" + name; }
+std::string temp_path(const std::string& name) { return grassfire::testing::temp_path("grassfire_complex3_" + name); }
 
 // Each file must be rejected by `read` with a message containing the expected text.
 template <class Read>
