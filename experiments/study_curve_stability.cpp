@@ -10,7 +10,9 @@
 // ET reaches a tenth of the axis' largest ("significant", 0.1). Compared with the
 // unperturbed mesh's curves (same settings):
 //   hausdorff = the Hausdorff distance between the curve graphs (burn3/curve_distance.h,
-//               sampled every h / 2), and ratio = hausdorff / (a D);
+//               sampled every h / 2), and ratio = hausdorff / (a D); its two directions:
+//               extra = from the perturbed curves to the original (new branches, hair),
+//               missing = from the original to the perturbed (branches lost or moved);
 //   topology  = whether the curves' (b0, b1) equal the unperturbed ones (they always equal
 //               their own axis'; the pole axis itself may change topology under noise);
 //   length    = total curve length, against the unperturbed;
@@ -116,7 +118,7 @@ int main(int argc, char** argv) {
                                                : std::vector<double>{0.00125, 0.0025, 0.005, 0.01, 0.02, 0.04};
   const int seeds = quick ? 1 : 3;
   std::ofstream csv(out + "/curve_stability.csv");
-  csv << "mesh,setting,amplitude_fraction,amplitude,seed,status,hausdorff,ratio,b0,b1,b0_original,b1_original,"
+  csv << "mesh,setting,amplitude_fraction,amplitude,seed,status,hausdorff,ratio,extra,missing,b0,b1,b0_original,b1_original,"
          "topology_kept,axis_b0,axis_b1,axis_b2,length,length_original,nodes,axis_hausdorff,seconds\n";
   // (mesh, setting, amplitude) -> ratios, and kept counts.
   std::map<std::tuple<std::string, std::string, double>, std::vector<double>> ratios;
@@ -139,18 +141,19 @@ int main(int argc, char** argv) {
           const MedialCurves& b0 = raw ? base.raw : base.significant;
           char line[512];
           if (!run.ok) {
-            std::snprintf(line, sizeof line, "%s,%s,%g,%.6g,%d,%s,,,,,%ld,%ld,,,,,,%.6g,,,%.3f\n", m.name.c_str(), setting, a,
+            std::snprintf(line, sizeof line, "%s,%s,%g,%.6g,%d,%s,,,,,,,%ld,%ld,,,,,,%.6g,,,%.3f\n", m.name.c_str(), setting, a,
                           a * diagonal, seed, run.status.c_str(), b0.curve_betti.b0, b0.curve_betti.b1, b0.total_length(),
                           seconds);
             csv << line;
             continue;
           }
           const MedialCurves& c = raw ? run.raw : run.significant;
-          const double d = curve_hausdorff(b0, c, h / 2), ratio = d / (a * diagonal);
+          const double extra = directed_curve_distance(c, b0, h / 2), missing = directed_curve_distance(b0, c, h / 2);
+          const double d = std::max(extra, missing), ratio = d / (a * diagonal);
           const bool same = c.curve_betti.b0 == b0.curve_betti.b0 && c.curve_betti.b1 == b0.curve_betti.b1;
           const double axis_d = curve_hausdorff(base.axis_points, run.axis_points, h);
-          std::snprintf(line, sizeof line, "%s,%s,%g,%.6g,%d,ok,%.6g,%.4g,%ld,%ld,%ld,%ld,%d,%ld,%ld,%ld,%.6g,%.6g,%zu,%.6g,%.3f\n",
-                        m.name.c_str(), setting, a, a * diagonal, seed, d, ratio, c.curve_betti.b0, c.curve_betti.b1,
+          std::snprintf(line, sizeof line, "%s,%s,%g,%.6g,%d,ok,%.6g,%.4g,%.6g,%.6g,%ld,%ld,%ld,%ld,%d,%ld,%ld,%ld,%.6g,%.6g,%zu,%.6g,%.3f\n",
+                        m.name.c_str(), setting, a, a * diagonal, seed, d, ratio, extra, missing, c.curve_betti.b0, c.curve_betti.b1,
                         b0.curve_betti.b0, b0.curve_betti.b1, same ? 1 : 0, run.axis.b0, run.axis.b1, run.axis.b2,
                         c.total_length(), b0.total_length(), c.nodes.size(), axis_d, seconds);
           csv << line;
