@@ -8,7 +8,8 @@ set -euo pipefail
 cd "$(dirname "$0")"
 
 PACKAGES=(cmake make g++ libcgal-dev libgmp-dev libmpfr-dev libboost-graph-dev catch2
-          nlohmann-json3-dev librsvg2-bin libflint-arb-dev)
+          nlohmann-json3-dev librsvg2-bin libflint-arb-dev libpng-dev libgif-dev
+          pybind11-dev python3-dev python3-numpy)
 JOBS=${JOBS:-2}
 BUILD_DIR=${BUILD_DIR:-build}
 
@@ -33,7 +34,7 @@ build() {
 main_job() {
   local out=paper-figures/out
   mkdir -p "$out"
-  "$BUILD_DIR"/proofs-checks/proof_checks --markdown "$out/proof-checks.md" --html "$out/proof-checks.html" \
+  "$BUILD_DIR"/proofs-checks/proof_checks --mutants --markdown "$out/proof-checks.md" --html "$out/proof-checks.html" \
     | tee "$out/proof-checks.txt"
   local checks=${PIPESTATUS[0]}
   "$BUILD_DIR"/paper-figures/paper_figures --out "$out"

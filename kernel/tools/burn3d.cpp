@@ -1,157 +1,101 @@
 // burn3d.cpp -- `grassfire burn3d`: burning time on the medial axis of a 3D shape (ch. 4).
+//
+// The pipeline (pipeline/burn3d.h, shared with the Python module): load and validate the
+// complex (pipeline/complex_input.h); read the point sources (--sources, x,y,z,t0) and the
+// queries (--at, x,y,z), locating each exactly on the complex (complex3/point_location.h:
+// a source must lie on it, a query snaps to its nearest point); burn by the chosen method
+// (pipeline/burn3d_methods.h). This file writes every output through a temporary file
+// renamed when complete (io/atomic_file.h), so a failure leaves no partial file. Long
+// stages report progress on stderr (io/progress.h).
+//
+// --csv OUT: header `x,y,z,bt,bt_error,snap`, one row per query in query order; x,y,z
+// are the query's own text; bt is the burning time at the located point (`inf` where it
+// never burns); bt_error bounds |bt - BT| (`inf` for the discrete method, whose bt is an
+// upper bound only); snap is the distance from the query to the point located (0 when the
+// query lies on the complex; nearest double).
 #include <cmath>
-#include <fstream>
 #include <iostream>
 #include <nlohmann/json.hpp>
+#include <sstream>
 
-#include "burn3/discrete_burning.h"
-#include "complex3/builders/medial_axis_input.h"
-#include "complex3/medial_complex.h"
-#include "complex3/synthetic_complexes.h"
+#include "io/atomic_file.h"
 #include "io/complex_export.h"
-#include "io/complex_ma.h"
 #include "io/complex_text.h"
-#include "io/mesh_io.h"
+#include "io/point_csv.h"
+#include "pipeline/burn3d.h"
+#include "pipeline/complex_input.h"
 #include "tools/commands.h"
 #include "tools/options.h"
 
 namespace grassfire::cli {
 namespace {
 
-bool is_synthetic(const std::string& input) {
-  for (const std::string& n : synthetic_complex_names())
-    if (input == n || (n == "book:K" && input.rfind("book:", 0) == 0) || (n == "box:A:B:C" && input.rfind("box:", 0) == 0))
-      return true;
-  return false;
-}
+std::string number_text(double x) { return std::isinf(x) ? (x > 0 ? "inf" : "-inf") : shortest_double(x); }
 
-// The complex to burn: a synthetic complex, a .ma medial axis, a mesh burned as itself
-// (--mesh-is-complex), or the medial axis of a shape built as `grassfire medial3d` builds
-// it (complex3/builders/medial_axis_input.h: convex meshes and half-spaces exactly, ball
-// lists exactly, other closed meshes through their inner polar balls).
-RawComplex load_complex(const std::string& input, bool mesh_is_complex) {
-  if (is_synthetic(input)) return synthetic_complex(input);
-  const std::string ext = file_extension(input);
-  if (ext == "ma") return read_ma(input);
-  if (mesh_is_complex) {
-    if (ext != "off" && ext != "ply" && ext != "obj")
-      throw std::runtime_error(input + ": --mesh-is-complex needs a mesh (.off, .ply or .obj)");
-    return mesh_as_complex(read_triangle_mesh(input));
+std::string query_csv(const Burn3dRun& run) {
+  std::ostringstream os;
+  os << "x,y,z,bt,bt_error,snap\n";
+  for (std::size_t i = 0; i < run.query_rows.size(); ++i) {
+    const CsvPoint& row = run.query_rows[i];
+    const BurnValue& value = run.outcome.query_values[i];
+    os << row.text[0] << ',' << row.text[1] << ',' << row.text[2] << ',' << number_text(value.bt) << ','
+       << number_text(value.bt_error) << ',' << number_text(run.queries[i].snap()) << '\n';
   }
-  if (ext == "off" || ext == "ply" || ext == "obj" || ext == "hs" || ext == "halfspaces" || ext == "cin" ||
-      ext == "balls") {
-    MedialAxisBuild axis = build_medial_axis(input, MedialInputKind::Auto);
-    std::cerr << "burn3d: " << input << ": medial axis by the " << axis.kind << " builder\n";
-    return std::move(axis.complex);
-  }
-  std::string names;
-  for (const std::string& n : synthetic_complex_names()) names += " " + n;
-  throw std::runtime_error("'" + input + "' is neither a synthetic complex (" + names.substr(1) +
-                           ") nor a file with extension .ma, .off, .ply, .obj, .hs, .halfspaces, .cin or .balls");
-}
-
-nlohmann::json finite_or_null(const std::vector<double>& values) {
-  nlohmann::json a = nlohmann::json::array();
-  for (double v : values) a.push_back(std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr));
-  return a;
-}
-
-nlohmann::json report(const std::string& input, const MedialComplex& mc, const DiscreteBurning& d) {
-  nlohmann::json j;
-  j["input"] = input;
-  j["method"] = "discrete";
-  j["spacing"] = d.spacing;
-  j["complex"] = {{"vertices", mc.vertex_count()},
-                  {"edges", mc.edge_count()},
-                  {"triangles", mc.triangle_count()},
-                  {"segments", mc.count(EdgeStratum::Dangling)},
-                  {"border_edges", mc.count(EdgeStratum::Border)},
-                  {"singular_edges", mc.count(EdgeStratum::Singular)},
-                  {"singular_points", mc.count(VertexKind::SingularPoint)},
-                  {"sheets", mc.sheets().size()}};
-  j["stats"] = {{"steiner_points", d.stats.steiner_points},
-                {"arrivals_pushed", d.stats.pushes},
-                {"arrivals_popped", d.stats.pops},
-                {"seconds", d.stats.seconds}};
-  std::size_t unburned = 0;
-  double max_bt = 0, max_et = 0;
-  for (std::uint32_t v = 0; v < mc.vertex_count(); ++v) {
-    if (!std::isfinite(d.vertex_bt[v])) {
-      ++unburned;
-      continue;
-    }
-    max_bt = std::max(max_bt, d.vertex_bt[v]);
-    max_et = std::max(max_et, d.vertex_et[v]);
-  }
-  j["summary"] = {{"burned_vertices", mc.vertex_count() - unburned},
-                  {"unburned_vertices", unburned},
-                  {"max_bt", max_bt},
-                  {"max_et", max_et}};
-  std::vector<double> x, y, z, r;
-  for (const ComplexVertex& v : mc.vertices()) {
-    x.push_back(v.approx[0]), y.push_back(v.approx[1]), z.push_back(v.approx[2]), r.push_back(v.radius);
-  }
-  j["vertex_values"] = {{"x", x}, {"y", y}, {"z", z}, {"R", r}, {"BT", finite_or_null(d.vertex_bt)},
-                        {"ET", finite_or_null(d.vertex_et)}};
-  return j;
+  return os.str();
 }
 
 int run_burn3d(int argc, char** argv) {
   Options opt("burn3d", "Burning time BT (Definitions 9-10) and ET = BT - R on the medial axis of a 3D shape.");
-  opt.positional("INPUT", "a .ma medial axis; a shape whose medial axis is built as by `grassfire medial3d`: a "
-                          "closed mesh (.off/.ply/.obj: exact for convex meshes, else from its inner polar balls), "
-                          "a half-space list (.hs) or a ball list (.cin/.balls, exact); or a synthetic "
-                          "complex: board-fin, board-cylinder, book:K, y-junction, tetrahedron, octahedron, "
-                          "double-cone, tetrahedron-flap")
-      .option("method", "NAME", "discrete (Dijkstra over vertices and Steiner points with the link rule)", "discrete")
-      .option("spacing", "H", "Steiner point spacing h (default: 1/100 of the bounding box diagonal)")
-      .option("max-points", "N", "refuse to place more than N graph points", "50000000")
+  opt.positional("INPUT", complex_input_help())
+      .option("method", "NAME", "discrete (Dijkstra over vertices and Steiner points with the link rule) or exact "
+                                "(the window-propagation engine, when built)", "discrete")
+      .option("spacing", "H", "discrete: Steiner point spacing h (default: 1/100 of the bounding box diagonal)")
+      .option("max-points", "N", "discrete: refuse to place more than N graph points", "50000000")
       .flag("mesh-is-complex", "burn a mesh itself as a 2-complex (R = 0) instead of its medial axis")
+      .flag("no-border-ignition", "the border never ignites (every border rule set to never): only --sources burn")
+      .option("sources", "FILE", "CSV `x,y,z,t0`: points of the complex that ignite at time t0 (exact decimals)")
+      .option("at", "FILE", "CSV `x,y,z`: query points, each located exactly on the complex, else at its nearest point")
+      .option("csv", "OUT", "with --at: one row per query `x,y,z,bt,bt_error,snap` (inf where it never burns)")
       .option("ply", "OUT", "write the complex with per-vertex R, BT, ET as PLY")
       .option("vtk", "OUT", "write the complex with per-vertex R, BT, ET as legacy VTK")
       .option("json", "OUT", "write a JSON report (counts, timings, per-vertex x y z R BT ET; null = never burns)")
-      .epilog("The discrete method over-estimates BT by O(h) (see kernel/burn3/discrete_burning.h).\n"
-              "Example: grassfire burn3d board-fin --spacing 0.1 --vtk board_fin.vtk");
+      .epilog("The discrete method over-estimates BT by O(h) (kernel/burn3/discrete_burning.h); at --at points its\n"
+              "bt is an upper bound from the graph points of the point's triangles (kernel/burn3/discrete_query.h).\n"
+              "Every output is written to a temporary file and renamed when complete.\n"
+              "Example: grassfire burn3d board-fin --spacing 0.1 --vtk board_fin.vtk\n"
+              "         grassfire burn3d data/meshes/cube.off --mesh-is-complex --sources s.csv --at q.csv --csv bt.csv");
   if (!opt.parse(argc, argv)) return opt.exit_code();
-  if (opt.get("method") != "discrete")
-    throw std::runtime_error("method '" + opt.get("method") + "' is not available: only 'discrete' (the exact "
-                             "sweep-event engine is not part of this build)");
-  const std::string input = opt.arg("INPUT");
-  const MedialComplex mc(load_complex(input, opt.has("mesh-is-complex")));
-  mc.validate();
-  DiscreteBurningOptions o;
-  if (opt.has("spacing")) {
-    o.spacing = opt.get_double("spacing");
-  } else {
-    Vec3d lo = mc.vertex(0).approx, hi = lo;
-    for (const ComplexVertex& v : mc.vertices())
-      for (int i = 0; i < 3; ++i) lo[i] = std::min(lo[i], v.approx[i]), hi[i] = std::max(hi[i], v.approx[i]);
-    o.spacing = std::hypot(hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]) / 100;
-    if (!(o.spacing > 0)) o.spacing = 1;
-  }
-  if (!(o.spacing > 0) || !std::isfinite(o.spacing)) throw std::runtime_error("--spacing must be a positive number");
-  o.max_points = static_cast<std::uint64_t>(opt.get_long("max-points", 1, 2'000'000'000L));
-  const DiscreteBurning d = burn_discrete(mc, o);
-  const nlohmann::json j = report(input, mc, d);
-  const std::vector<VertexField> fields = {{"R", j["vertex_values"]["R"].get<std::vector<double>>()},
-                                           {"BT", d.vertex_bt},
-                                           {"ET", d.vertex_et}};
+  Burn3dSetup setup;
+  setup.input = opt.arg("INPUT");
+  setup.method = opt.get("method");
+  burn_method(setup.method);  // an unknown method is refused before anything is read
+  if (opt.has("csv") && !opt.has("at")) throw std::runtime_error("--csv needs --at (the query points)");
+  setup.mesh_is_complex = opt.has("mesh-is-complex");
+  setup.no_border_ignition = opt.has("no-border-ignition");
+  if (opt.has("spacing")) setup.spacing = opt.get_double("spacing");
+  setup.max_points = static_cast<std::uint64_t>(opt.get_long("max-points", 1, 2'000'000'000L));
+  if (opt.has("sources")) setup.sources.file = opt.get("sources");
+  if (opt.has("at")) setup.queries.file = opt.get("at");
+  const Burn3dRun run = burn3d(setup);
+  const MedialComplex& mc = *run.mc;
+  std::vector<double> r;
+  for (const ComplexVertex& v : mc.vertices()) r.push_back(v.radius);
+  const std::vector<VertexField> fields = {{"R", r}, {"BT", run.outcome.vertex_bt}, {"ET", run.et}};
+  if (opt.has("csv")) write_file_atomically(opt.get("csv"), query_csv(run));
   if (opt.has("ply")) write_complex_ply(mc, fields, opt.get("ply"));
   if (opt.has("vtk")) write_complex_vtk(mc, fields, opt.get("vtk"));
-  if (opt.has("json")) {
-    std::ofstream out(opt.get("json"));
-    out << j.dump(1) << '\n';
-    if (!out) throw std::runtime_error(opt.get("json") + ": cannot write");
-  }
-  std::cout << "burn3d " << input << ": " << mc.vertex_count() << " vertices, " << mc.triangle_count() << " triangles, "
-            << mc.count(EdgeStratum::Singular) << " singular edges, " << mc.sheets().size() << " sheets\n"
-            << "discrete h = " << d.spacing << ": " << d.stats.steiner_points << " Steiner points, "
-            << d.stats.seconds << " s; " << j["summary"]["unburned_vertices"] << " vertices never burn; max BT "
-            << j["summary"]["max_bt"] << ", max ET " << j["summary"]["max_et"] << '\n';
+  if (opt.has("json")) write_file_atomically(opt.get("json"), run.report.dump(1) + "\n");
+  if (opt.has("quiet")) return 0;
+  const nlohmann::json& summary = run.report["summary"];
+  std::cout << "burn3d " << setup.input << ": " << mc.vertex_count() << " vertices, " << mc.triangle_count()
+            << " triangles, " << mc.count(EdgeStratum::Singular) << " singular edges, " << mc.sheets().size() << " sheets, "
+            << run.sources.size() << " point sources, " << run.queries.size() << " queries\n"
+            << run.outcome.summary << "; " << summary["unburned_vertices"] << " vertices never burn; max BT "
+            << summary["max_bt"] << ", max ET " << summary["max_et"] << '\n';
   return 0;
 }
 
-GF_REGISTER_COMMAND("burn3d", "burning time on the medial axis of a 3D shape (discrete baseline)", run_burn3d);
+GF_REGISTER_COMMAND("burn3d", "burning time on the medial axis of a 3D shape or a given complex", run_burn3d);
 
 }  // namespace
 }  // namespace grassfire::cli

@@ -5,7 +5,9 @@
 #include "complex3/builders/medial_axis_input.h"
 #include "complex3/medial_complex.h"
 #include "io/complex_export.h"
+#include "io/complex_json.h"
 #include "io/complex_ma.h"
+#include "io/progress.h"
 #include "tools/commands.h"
 #include "tools/options.h"
 
@@ -25,6 +27,7 @@ int run_medial3d(int argc, char** argv) {
                               "while the topology allows (0: no angle test)", "0")
       .option("refinements", "N", "mesh kind: at most N halvings of the spacing", "5")
       .option("ma", "OUT", "write the axis as .ma (Q-MAT format: v x y z r, e i j, f i j k)")
+      .option("complex", "OUT", "write the axis in the grassfire-complex JSON format (exact; burn3d reads it)")
       .option("ply", "OUT", "write the axis with per-vertex R as PLY")
       .option("json", "OUT", "write a JSON report (counts, exactness, error bounds, Betti numbers, timings)")
       .epilog("Nothing is written unless the whole axis was built and its complex validated.\n"
@@ -37,11 +40,18 @@ int run_medial3d(int argc, char** argv) {
   mesh.max_refinements = static_cast<int>(opt.get_long("refinements", 0, 12));
   if (!(mesh.samples_per_edge > 0 && mesh.samples_per_edge <= 1024)) throw std::invalid_argument("--samples must be in (0, 1024]");
   if (!(mesh.angle_degrees >= 0 && mesh.angle_degrees < 180)) throw std::invalid_argument("--angle must be in [0, 180)");
+  Progress progress("medial3d " + input, 3);
+  progress.stage("building the medial axis");
   const MedialAxisBuild axis = build_medial_axis(input, parse_medial_input_kind(opt.get("kind")), mesh);
+  progress.advance();
+  progress.stage("building and validating the complex");
   const MedialComplex mc(axis.complex);
   mc.validate();
+  progress.advance();
+  progress.stage("writing");
+  if (opt.has("complex")) write_complex_json(axis.complex, opt.get("complex"));
   if (opt.has("ma") && !write_ma_file(axis.complex, opt.get("ma")))
-    std::cerr << "medial3d: " << opt.get("ma") << ": some values are irrational and were written as nearest doubles\n";
+    note("medial3d: " + opt.get("ma") + ": some values are irrational and were written as nearest doubles");
   if (opt.has("ply")) {
     std::vector<double> r;
     for (const ComplexVertex& v : mc.vertices()) r.push_back(v.radius);
@@ -52,6 +62,8 @@ int run_medial3d(int argc, char** argv) {
     out << axis.report.dump(1) << '\n';
     if (!out) throw std::runtime_error(opt.get("json") + ": cannot write");
   }
+  progress.done();
+  if (opt.has("quiet")) return 0;
   const nlohmann::json& a = axis.report["axis"];
   std::cout << "medial3d " << input << " (" << axis.kind << "): " << a["vertices"] << " vertices, " << a["triangles"]
             << " triangles, " << a["segments"] << " segments, " << mc.count(EdgeStratum::Singular)
