@@ -64,6 +64,37 @@ void sample_interior(const P3& a, const P3& b, const P3& c, double h, Collector&
   }
 }
 
+// The corners (a, b, d) of a triangle with ab its longest edge, a < b: ties between edges
+// and the order within the edge broken by comparing the points lexicographically, so that
+// neither the labels nor the corner order of the mesh changes the interior samples.
+std::array<P3, 3> longest_edge_first(const P3& x, const P3& y, const P3& z) {
+  std::array<std::array<P3, 3>, 3> candidates = {{{std::min(x, y), std::max(x, y), z},
+                                                  {std::min(y, z), std::max(y, z), x},
+                                                  {std::min(z, x), std::max(z, x), y}}};
+  const auto longer = [](const std::array<P3, 3>& u, const std::array<P3, 3>& v) {
+    const double lu = distance(u[0], u[1]), lv = distance(v[0], v[1]);
+    return lu != lv ? lu > lv : u < v;
+  };
+  return *std::min_element(candidates.begin(), candidates.end(), longer);
+}
+
+// Sample ids in lexicographic order of the lattice points: everything built on the samples
+// (the triangulation's insertion order, cell and face ids, the order of the pruning) is
+// then a function of the sample set alone, not of the mesh's labels.
+void sort_samples(SurfaceSamples* s) {
+  std::vector<std::uint32_t> order(s->lattice.size());
+  for (std::uint32_t i = 0; i < order.size(); ++i) order[i] = i;
+  std::sort(order.begin(), order.end(), [&](std::uint32_t i, std::uint32_t j) { return s->lattice[i] < s->lattice[j]; });
+  std::vector<std::uint32_t> rank(order.size());
+  std::vector<L3> sorted(order.size());
+  for (std::uint32_t r = 0; r < order.size(); ++r) {
+    rank[order[r]] = r;
+    sorted[r] = s->lattice[order[r]];
+  }
+  s->lattice = std::move(sorted);
+  for (std::uint32_t& id : s->on_triangle) id = rank[id];
+}
+
 std::uint64_t edge_key(std::uint32_t a, std::uint32_t b) {
   return (static_cast<std::uint64_t>(std::min(a, b)) << 32) | std::max(a, b);
 }
@@ -126,8 +157,9 @@ SurfaceSamples sample_surface(const TriangleMesh3& mesh, const std::vector<doubl
   std::sort(edges.begin(), edges.end());  // sample ids independent of the hash order
   std::unordered_map<std::uint64_t, std::vector<std::uint32_t>> edge_samples;
   for (const auto& [key, h] : edges) {
-    const P3& p = mesh.vertices[key >> 32];
-    const P3& q = mesh.vertices[key & 0xffffffffu];
+    // From the lexicographically smaller end: the points do not depend on the labels.
+    const P3& p = std::min(mesh.vertices[key >> 32], mesh.vertices[key & 0xffffffffu]);
+    const P3& q = std::max(mesh.vertices[key >> 32], mesh.vertices[key & 0xffffffffu]);
     const long n = parts(distance(p, q), h);
     std::vector<std::uint32_t>& ids = edge_samples[key];
     for (long i = 1; i < n; ++i) ids.push_back(c.add(lerp(p, q, static_cast<double>(i) / static_cast<double>(n))));
@@ -140,13 +172,11 @@ SurfaceSamples sample_surface(const TriangleMesh3& mesh, const std::vector<doubl
       const auto& e = edge_samples.at(edge_key(tri[k], tri[(k + 1) % 3]));
       out.on_triangle.insert(out.on_triangle.end(), e.begin(), e.end());
     }
-    const P3 *a = &mesh.vertices[tri[0]], *b = &mesh.vertices[tri[1]], *d = &mesh.vertices[tri[2]];
-    // Longest edge first: (a, b), apex d.
-    if (distance(*b, *d) > distance(*a, *b) && distance(*b, *d) >= distance(*d, *a)) std::swap(a, d);
-    else if (distance(*d, *a) > distance(*a, *b)) std::swap(b, d);
-    sample_interior(*a, *b, *d, spacing[t], c, &out.on_triangle);
+    const auto [a, b, d] = longest_edge_first(mesh.vertices[tri[0]], mesh.vertices[tri[1]], mesh.vertices[tri[2]]);
+    sample_interior(a, b, d, spacing[t], c, &out.on_triangle);
     out.offset.push_back(static_cast<std::uint32_t>(out.on_triangle.size()));
   }
+  sort_samples(&out);
   return out;
 }
 

@@ -12,6 +12,11 @@
 // small and exact (the circumcentres of lattice points are quotients of 128-bit integers,
 // inner_voronoi.h). Each triangle lists the samples on it (vertices, edges, inside), so
 // that a refinement can be driven per triangle.
+// Canonical: edges are split from their lexicographically smaller end, rows run parallel
+// to the longest edge (ties broken by comparing points), and the samples are numbered in
+// lexicographic order of their lattice points; so renumbering the mesh's vertices,
+// reordering its triangles or rotating their corners gives the same samples with the same
+// ids, and everything built on them (mesh_axis.h) is the same.
 // Density: every point of a triangle is within about h_t of a sample, and samples are
 // about h_t apart, so the count is about 2 area / h_t^2 (more on triangles thinner than h_t).
 // Contract: spacings positive and finite, one per triangle; finite coordinates.
