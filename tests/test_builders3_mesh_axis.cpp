@@ -31,15 +31,6 @@ namespace {
 
 TriangleMesh3 project_mesh(const std::string& name) { return read_triangle_mesh(std::string(GF_PROJECT_DATA) + "/meshes/" + name); }
 
-std::vector<Voxel> hollow_cube(int n) {  // an n^3 block with its inner (n-2)^3 cells empty
-  std::vector<Voxel> v;
-  for (int x = 0; x < n; ++x)
-    for (int y = 0; y < n; ++y)
-      for (int z = 0; z < n; ++z)
-        if (x == 0 || y == 0 || z == 0 || x == n - 1 || y == n - 1 || z == n - 1) v.push_back({x, y, z});
-  return v;
-}
-
 std::vector<Voxel> scattered_cubes(int count) {
   std::vector<Voxel> v;
   for (int i = 0; i < count; ++i) v.push_back({2 * (i % 5), 2 * ((i / 5) % 5), 2 * (i / 25)});
@@ -109,7 +100,7 @@ void check_axis(const TriangleMesh3& mesh, const BettiNumbers& expected, const M
 
 TEST_CASE("solid locator: exact inside, boundary, outside against a definition-level parity", "[mesh_axis]") {
   const TriangleMesh3 meshes[] = {voxel_mesh({{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {1, 1, 1}}, 1, "L block"),
-                                  voxel_mesh(hollow_cube(3), 1, "hollow cube"), project_mesh("tripod.off")};
+                                  voxel_mesh(hollow_block_voxels(3), 1, "hollow cube"), project_mesh("tripod.off")};
   std::mt19937 rng(7);
   for (const TriangleMesh3& m : meshes) {
     CAPTURE(m.source);
@@ -143,11 +134,11 @@ TEST_CASE("solid topology from the mesh: components, genus, cavities by nesting"
   CHECK(solid_topology(torus_mesh(2, 0.5, 12, 8)).betti == BettiNumbers{1, 1, 0});
   CHECK(solid_topology(plate_with_holes(7, 3, {{1, 1}, {3, 1}, {5, 1}})).betti == BettiNumbers{1, 3, 0});
   CHECK(solid_topology(voxel_mesh(scattered_cubes(26))).betti == BettiNumbers{26, 0, 0});
-  const SolidTopology hollow = solid_topology(voxel_mesh(hollow_cube(3)));
+  const SolidTopology hollow = solid_topology(voxel_mesh(hollow_block_voxels(3)));
   CHECK(hollow.betti == BettiNumbers{1, 0, 1});
   REQUIRE(hollow.shells.size() == 2);
   CHECK(hollow.shells[0].depth + hollow.shells[1].depth == 1);
-  std::vector<Voxel> nested = hollow_cube(5);  // a cube floating in the cavity of a hollow cube
+  std::vector<Voxel> nested = hollow_block_voxels(5);  // a cube floating in the cavity of a hollow cube
   nested.push_back({2, 2, 2});
   CHECK(solid_topology(voxel_mesh(nested)).betti == BettiNumbers{2, 0, 1});
   // The even-odd rule needs no orientation: the inside-out mesh bounds the same solid.
@@ -161,7 +152,7 @@ TEST_CASE("mesh axes have the solid's Betti numbers", "[mesh_axis]") {
   check_axis(torus_mesh(2, 0.5, 24, 12), {1, 1, 0});
   check_axis(torus_mesh(2, 0.3, 16, 6), {1, 1, 0});  // thin: a 1-dimensional axis
   check_axis(plate_with_holes(5, 3, {{1, 1}, {3, 1}}), {1, 2, 0});
-  check_axis(voxel_mesh(hollow_cube(3), 1, "hollow cube"), {1, 0, 1});
+  check_axis(voxel_mesh(hollow_block_voxels(3), 1, "hollow cube"), {1, 0, 1});
   check_axis(voxel_mesh(scattered_cubes(26), 1, "26 cubes"), {26, 0, 0});
   check_axis(project_mesh("tripod.off"), {1, 0, 0});
   check_axis(project_mesh("cross.off"), {1, 0, 0});

@@ -49,15 +49,6 @@ void check_same_counts(const MeshAxis& a, const MeshAxis& b) {
   CHECK(b.refinements() == a.refinements());
 }
 
-std::vector<Voxel> hollow_block(int n) {  // an n^3 block of voxels with its inner (n-2)^3 empty
-  std::vector<Voxel> v;
-  for (int x = 0; x < n; ++x)
-    for (int y = 0; y < n; ++y)
-      for (int z = 0; z < n; ++z)
-        if (x == 0 || y == 0 || z == 0 || x == n - 1 || y == n - 1 || z == n - 1) v.push_back({x, y, z});
-  return v;
-}
-
 }  // namespace
 
 TEST_CASE("mesh axis under an exact rigid motion: the inner Voronoi complex moves exactly", "[mesh_axis]") {
@@ -146,7 +137,7 @@ TEST_CASE("mesh axis of nested shells: a solid in a cavity keeps both and the ca
   // A 5^3 block hollowed to a 3^3 cavity with one voxel floating at its centre: two solids
   // (b0 = 2) and the cavity between them (b2 = 1). The axis keeps the cavity as a closed
   // surface around the inner solid's axis: the solid's Betti numbers, b2 included.
-  std::vector<Voxel> nested = hollow_block(5);
+  std::vector<Voxel> nested = hollow_block_voxels(5);
   nested.push_back({2, 2, 2});
   const TriangleMesh3 mesh = voxel_mesh(nested, 1, "nested shells");
   const MeshAxis a = mesh_medial_axis(mesh);

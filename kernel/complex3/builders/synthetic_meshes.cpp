@@ -80,6 +80,15 @@ TriangleMesh3 prism_mesh(const std::vector<std::array<double, 2>>& polygon, doub
   return mesh;
 }
 
+std::vector<Voxel> hollow_block_voxels(int n) {
+  std::vector<Voxel> v;
+  for (int x = 0; x < n; ++x)
+    for (int y = 0; y < n; ++y)
+      for (int z = 0; z < n; ++z)
+        if (x == 0 || y == 0 || z == 0 || x == n - 1 || y == n - 1 || z == n - 1) v.push_back({x, y, z});
+  return v;
+}
+
 TriangleMesh3 plate_with_holes(int nx, int ny, const std::vector<std::array<int, 2>>& holes) {
   const std::set<std::array<int, 2>> removed(holes.begin(), holes.end());
   std::vector<Voxel> cells;

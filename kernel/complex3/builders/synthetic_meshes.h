@@ -32,6 +32,9 @@ TriangleMesh3 voxel_mesh(const std::vector<Voxel>& filled, double size = 1, cons
 // which the top and bottom are fanned from) between z = 0 and z = height.
 TriangleMesh3 prism_mesh(const std::vector<std::array<double, 2>>& polygon, double height, const std::string& name = "prism");
 
+// The voxels of an n x n x n block whose inner (n - 2)^3 cells are empty (a cavity, n >= 3).
+std::vector<Voxel> hollow_block_voxels(int n);
+
 // A box of nx x ny x 1 voxels with the listed (x, y) cells removed: genus = holes when the
 // holes are interior and do not touch each other.
 TriangleMesh3 plate_with_holes(int nx, int ny, const std::vector<std::array<int, 2>>& holes);
