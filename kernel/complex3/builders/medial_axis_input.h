@@ -8,8 +8,9 @@
 //  - a closed mesh: the inner Voronoi axis of surface samples, refined until its Betti
 //    numbers are the solid's (mesh_axis.h) -- an approximation with exact vertices;
 // and a JSON report of what was computed (counts, exactness and error bounds, timings,
-// Betti numbers of the shape and of the axis where known). Kind Auto picks by extension;
-// for a mesh it takes the convex builder when the mesh is convex, else the mesh axis builder.
+// Betti numbers of the shape and of the axis where known; for meshes "mesh_input": what the
+// reader welded and dropped, io/mesh_weld.h, "repairs" its one-line summary). Kind Auto
+// picks by extension; for a mesh it takes the convex builder when the mesh is convex, else the mesh axis builder.
 // Contract: errors are exceptions whose message names the file and the problem (readers:
 // ComplexFormatError; geometry: std::invalid_argument); nothing is written here.
 // Complexity: that of the builder used.
