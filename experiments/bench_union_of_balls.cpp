@@ -21,6 +21,10 @@ using namespace grassfire;
 
 namespace {
 
+// The stages of UnionOfBallsAxis::stage_seconds, in order.
+const std::vector<const char*> kStages = {"regular triangulation", "alpha complex", "betti numbers", "boundary vertices",
+                                          "voronoi cells in tetrahedra", "assembly", "output values"};
+
 double seconds(std::chrono::steady_clock::time_point t) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
 }
@@ -34,7 +38,7 @@ std::vector<double> measure(std::size_t n) {
   const UnionOfBallsAxis a = union_of_balls_axis(balls);
   const double axis = seconds(t);
   const ClipStats& s = a.stats;
-  return {rt,
+  std::vector<double> v = {rt,
           axis,
           double(a.complex.vertices.size()),
           double(a.complex.triangles.size()),
@@ -51,6 +55,8 @@ std::vector<double> measure(std::size_t n) {
           a.triangulation_seconds,
           double(a.tetrahedra_candidates),
           double(a.voronoi_cells)};
+  for (const auto& stage : a.stage_seconds) v.push_back(stage.second);  // the profile, CPU seconds
+  return v;
 }
 
 }  // namespace
@@ -67,6 +73,9 @@ int main(int argc, char** argv) {
                 "sign tests %.0f (filter %.0f, structural %.0f, exact %.0f), max coordinate error %.3g, "
                 "triangulation inside the axis %.3f s, candidates per tetrahedron %.1f, cells clipped per tetrahedron %.1f\n",
                 n, v[4], v[5], v[6], v[7], v[8], v[9], v[10], v[11], v[12], v[13], v[14], v[15] / v[5], v[16] / v[5]);
+    std::printf("# n=%zu profile (CPU s):", n);
+    for (std::size_t k = 0; k < kStages.size(); ++k) std::printf(" %s %.3f;", kStages[k], v[17 + k]);
+    std::printf("\n");
     std::fflush(stdout);
   }
   return 0;
