@@ -1,0 +1,70 @@
+// exact_burning.h -- the burning time BT on a medial complex by exact window propagation
+// (4.2.3, Definitions 9-10; 5.2 "sweep-event engine"; DESIGN.md 5, 5a; issue 8).
+//
+// Computes BT as an exact piecewise function: per triangle, the windows that can realise
+// it (each a pseudo-source image, an offset and a wedge; windows.h), built by
+// WindowPropagation from point sources and the border ignition rules, with singular edges
+// as walls in this part. From it:
+//  - burn_time(t, x): a certified enclosure of BT at a point of a triangle (the minimum of
+//    the enclosures of every window whose closed wedge contains x; membership certified
+//    by Certifier::side, and an undecided membership widens the upper end by twice the
+//    certified distance to the wedge ray, which keeps the enclosure rigorous because BT
+//    and each window's time are 1-Lipschitz there);
+//  - exact_burn_time(t, x): BT as an exact sum of square roots where every candidate
+//    window is exact (planar sheets with rational sources; ties proved exactly), else none;
+//  - per-vertex values (BT and ET = BT - R, +infinity where nothing burns);
+//  - counts of windows, events and certification stages.
+// Contract: a validated MedialComplex that outlives this object; sources added before
+// run(); queries after run(). Points given to queries lie in the closed triangle
+// (std::invalid_argument otherwise, checked exactly).
+// Complexity: see window_propagation.h; a query costs O(windows of the triangle).
+#pragma once
+
+#include <memory>
+#include <optional>
+
+#include "burn3/exact/window_propagation.h"
+
+namespace grassfire {
+
+struct QueryCounts {
+  std::uint64_t queries = 0;
+  std::uint64_t candidates = 0;  // windows tested
+  std::uint64_t widened = 0;     // memberships no stage decided (enclosure widened)
+};
+
+class ExactBurning {
+ public:
+  explicit ExactBurning(const MedialComplex& mc, const ExactBurningOptions& o = {});
+  ~ExactBurning();
+
+  void add_point_source(std::uint32_t triangle, const ExactPoint3& point, const mpq_class& start);
+  void add_border_ignition();
+  void run();
+
+  Interval burn_time(std::uint32_t t, const Target& x);
+  Interval burn_time(std::uint32_t t, const ExactPoint3& x) { return burn_time(t, Target{kNoIndex, &x}); }
+  std::optional<ExactSum> exact_burn_time(std::uint32_t t, const ExactPoint3& x);
+  Interval vertex_burn_time(std::uint32_t v);
+  std::vector<Interval> vertex_burn_times();
+
+  const MedialComplex& complex() const { return mc_; }
+  const Unfolding& unfolding() const { return *unfolding_; }
+  const WindowPropagation& propagation() const { return *prop_; }
+  const CertificationCounts& certification() const { return prop_->certifier().counts; }
+  const QueryCounts& query_counts() const { return queries_; }
+  // The live windows covering triangle t (roots and entered windows).
+  std::vector<std::uint32_t> triangle_windows(std::uint32_t t) const;
+
+ private:
+  void index_windows();
+  int membership(std::uint32_t w, const Target& x, double* widen);
+
+  const MedialComplex& mc_;
+  std::unique_ptr<Unfolding> unfolding_;
+  std::unique_ptr<WindowPropagation> prop_;
+  std::vector<std::uint32_t> first_, list_;  // CSR: windows per triangle
+  QueryCounts queries_;
+};
+
+}  // namespace grassfire

@@ -1,0 +1,90 @@
+// sector_geometry.cpp -- see sector_geometry.h.
+#include "burn3/exact/sector_geometry.h"
+
+#include <algorithm>
+
+#include "complex3/exact_predicates3.h"
+#include "number/ball_rational.h"
+
+namespace grassfire {
+
+namespace {
+
+using UV = std::array<mpq_class, 2>;
+
+// The other end of edge e from vertex v.
+std::uint32_t other_end(const MedialComplex& mc, std::uint32_t e, std::uint32_t v) {
+  return mc.edge(e).v[0] == v ? mc.edge(e).v[1] : mc.edge(e).v[0];
+}
+
+// An open fan in a planar frame: its angle exceeds pi iff the turn from its first end edge
+// to its last, in the fan's sense of rotation, is reflex (exactly pi: a straight border).
+bool planar_open_fan_bends(const Unfolding& u, const Sector& s) {
+  const MedialComplex& mc = u.complex();
+  const std::uint32_t f = u.frame(s.triangles[0]), v = s.apex;
+  const UV& o = u.vertex_uv(f, v);
+  auto dir = [&](std::uint32_t e) {
+    const UV& p = u.vertex_uv(f, other_end(mc, e, v));
+    return UV{p[0] - o[0], p[1] - o[1]};
+  };
+  const auto first_edges = edges_at(mc.triangle(s.triangles[0]), v);
+  const std::uint32_t next = first_edges[0] == s.ends[0] ? first_edges[1] : first_edges[0];
+  const UV a = dir(s.ends[0]), b = dir(s.ends[1]), c = dir(next);
+  const int sense = sgn(a[0] * c[1] - a[1] * c[0]);
+  const int turn = sgn(a[0] * b[1] - a[1] * b[0]) * sense;
+  if (turn != 0) return turn < 0;
+  return sgn(a[0] * b[0] + a[1] * b[1]) > 0;  // the two ends coincide: a full turn (2 pi)
+}
+
+// The fan's angle against pi (open) or 2 pi (closed) in Arb: -1 below, +1 above, 0 undecided.
+int compare_fan_angle(const MedialComplex& mc, const Sector& s) {
+  for (long bits = 64; bits <= 256; bits *= 2) {
+    BallPrecision guard(bits);
+    Ball sum(0.0);
+    for (std::uint32_t t : s.triangles) {
+      const auto es = edges_at(mc.triangle(t), s.apex);
+      const ExactPoint3& o = mc.vertex(s.apex).exact;
+      const ExactPoint3 a = mc.vertex(other_end(mc, es[0], s.apex)).exact - o;
+      const ExactPoint3 b = mc.vertex(other_end(mc, es[1], s.apex)).exact - o;
+      const ExactPoint3 c = cross(a, b);
+      const Ball y = sqrt(ball_of(dot(c, c))), x = ball_of(dot(a, b));
+      Ball angle;
+      arb_atan2(angle.get(), y.get(), x.get(), bits);
+      sum += angle;
+    }
+    Ball limit;
+    arb_const_pi(limit.get(), bits);
+    if (s.closed) limit = limit + limit;
+    const int sg = (sum - limit).sign();
+    if (sg == 1 || sg == -1) return sg;
+  }
+  return 0;
+}
+
+}  // namespace
+
+SectorGeometry sector_geometry(const Unfolding& u) {
+  const MedialComplex& mc = u.complex();
+  SectorGeometry g;
+  g.corner_sector.assign(3 * mc.triangle_count(), kNoIndex);
+  for (std::uint32_t t = 0; t < mc.triangle_count(); ++t)
+    for (int i = 0; i < 3; ++i) {
+      const std::uint32_t v = mc.triangle(t).v[i];
+      g.corner_sector[3 * t + i] = mc.link_elements(v)[mc.corner_element(t, i)].id;
+    }
+  g.bends.assign(mc.sectors().size(), true);
+  for (std::size_t k = 0; k < mc.sectors().size(); ++k) {
+    const Sector& s = mc.sectors()[k];
+    const std::uint32_t f0 = u.frame(s.triangles[0]);
+    if (std::all_of(s.triangles.begin(), s.triangles.end(), [&](std::uint32_t t) { return u.frame(t) == f0; })) {
+      g.bends[k] = !s.closed && planar_open_fan_bends(u, s);
+      continue;
+    }
+    const int c = compare_fan_angle(mc, s);
+    if (c == 0) ++g.undecided_angles;
+    g.bends[k] = c >= 0;
+  }
+  return g;
+}
+
+}  // namespace grassfire

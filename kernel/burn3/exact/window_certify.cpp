@@ -1,0 +1,425 @@
+// window_certify.cpp -- see window_certify.h.
+#include "burn3/exact/window_certify.h"
+
+#include <algorithm>
+#include <stdexcept>
+
+#include "burn3/exact/window_values.h"
+#include "complex3/exact_predicates3.h"
+#include "number/ball_rational.h"
+#include "number/sqrt_field.h"
+
+namespace grassfire {
+
+void CertificationCounts::merge(const CertificationCounts& o) {
+  filter += o.filter, exact += o.exact, arb += o.arb, exact_equal += o.exact_equal;
+  structural_equal += o.structural_equal, kept_undecided += o.kept_undecided, uncertified += o.uncertified;
+  max_bits = std::max(max_bits, o.max_bits);
+}
+
+namespace {
+
+using XV = Certifier::ExactVector;
+
+// A coordinate that grows past this many terms is given up (then Arb decides).
+constexpr std::size_t kMaxTerms = 64;
+
+ExactSum q(const mpq_class& x) { return ExactSum::rational(x); }
+XV xv(const std::array<mpq_class, 2>& a) { return {q(a[0]), q(a[1])}; }
+XV sub(const XV& a, const XV& b) { return {a[0] - b[0], a[1] - b[1]}; }
+ExactSum mul(const ExactSum& a, const ExactSum& b) {
+  ExactSum r = multiply(a, b);
+  r.simplify();
+  return r;
+}
+ExactSum scaled(ExactSum a, const mpq_class& c) {
+  a.scale(c);
+  return a;
+}
+ExactSum cross_xv(const XV& a, const XV& b) { return mul(a[0], b[1]) - mul(a[1], b[0]); }
+ExactSum metric_dot(const XV& a, const XV& b, const mpq_class& g1, const mpq_class& g2) {
+  return scaled(mul(a[0], b[0]), g1) + scaled(mul(a[1], b[1]), g2);
+}
+bool small(const XV& a) { return a[0].term_count() <= kMaxTerms && a[1].term_count() <= kMaxTerms; }
+
+// X' = P(X) + k beta(X) w (Unfolding::ExactCrossing); `affine` false for directions.
+XV cross_over(const Unfolding::ExactCrossing& c, const ExactSum& k, const XV& x, bool affine) {
+  ExactSum beta = scaled(x[0], c.b0) + scaled(x[1], c.b1);
+  XV r{scaled(x[0], c.p00) + scaled(x[1], c.p01), scaled(x[0], c.p10) + scaled(x[1], c.p11)};
+  if (affine) beta += q(c.bc), r[0] += q(c.p0), r[1] += q(c.p1);
+  const ExactSum kb = mul(k, beta);
+  r[0] += scaled(kb, c.w0), r[1] += scaled(kb, c.w1);
+  r[0].simplify(), r[1].simplify();
+  return r;
+}
+
+Ball ball_cross(const BallPoint& a, const BallPoint& b) { return a.x * b.y - a.y * b.x; }
+BallPoint ball_sub(const BallPoint& a, const BallPoint& b) { return {a.x - b.x, a.y - b.y}; }
+
+int ball_sign(const Ball& b) {
+  const int s = b.sign();
+  return s == kUndecided ? kUndecided : s;
+}
+
+}  // namespace
+
+DiscPoint Certifier::target_disc(std::uint32_t t, const Target& x) const {
+  return x.point ? u_.point_image(t, *x.point) : u_.vertex_image(t, x.vertex);
+}
+
+Interval Certifier::time_interval(std::uint32_t w, const Target& x) const {
+  const Window& win = s_.windows[w];
+  return window_time(win, ipoint(target_disc(win.triangle, x)));
+}
+
+XV Certifier::target_uv(std::uint32_t f, const Target& x) const {
+  return xv(x.point ? u_.point_uv(f, *x.point) : u_.vertex_uv(f, x.vertex));
+}
+
+// ---- stage 4: Arb re-evaluation of the chain -------------------------------------------
+
+Ball Certifier::sigma_ball(std::uint32_t p) {
+  if (memo_bits_ != BallPrecision::bits()) sigma_memo_.clear(), memo_bits_ = BallPrecision::bits();
+  if (auto it = sigma_memo_.find(p); it != sigma_memo_.end()) return it->second;
+  const PseudoSource& ps = s_.pseudo[p];
+  Ball r(0.0);
+  bool any = false;
+  auto take = [&](const Ball& b) {
+    if (any) arb_min(r.get(), r.get(), b.get(), BallPrecision::bits());
+    else r = b;
+    any = true;
+  };
+  if (ps.exact >= 0) take(ball_of(s_.exact[ps.exact].sigma));
+  else if (ps.origin == SourceOrigin::GivenPoint) take(ball_of(s_.given[ps.data].start));
+  if (ps.origin == SourceOrigin::Vertex && ps.spawn != kNoIndex) {
+    take(time_ball(ps.spawn, Target{ps.vertex, nullptr}));
+    for (std::uint32_t w : ps.tied_spawns) take(time_ball(w, Target{ps.vertex, nullptr}));
+  }
+  if (!any && ps.origin != SourceOrigin::BorderPoint && ps.origin != SourceOrigin::BorderPlane)
+    throw std::logic_error("Certifier: pseudo-source without an offset");
+  sigma_memo_.emplace(p, r);
+  return r;
+}
+
+WindowBall Certifier::evaluate(std::uint32_t w) {
+  std::vector<std::uint32_t> chain;
+  for (std::uint32_t x = w; x != kNoIndex; x = s_.windows[x].parent) chain.push_back(x);
+  std::reverse(chain.begin(), chain.end());
+  const Window& first = s_.windows[chain[0]];
+  const Window& last = s_.windows[w];
+  const bool point_kind = s_.pseudo[first.pseudo].origin == SourceOrigin::GivenPoint ||
+                          s_.pseudo[first.pseudo].origin == SourceOrigin::Vertex ||
+                          s_.pseudo[first.pseudo].origin == SourceOrigin::BorderPoint;
+  const RootBall r = root_ball(u_, s_, first.pseudo, first.triangle, point_kind ? sigma_ball(first.pseudo) : Ball(0.0));
+  WindowBall b{r.source, r.offset, {}, r.plane};
+  std::array<bool, 2> taken{false, false};
+  for (std::size_t i = 0; i < chain.size(); ++i) {
+    const Window& wi = s_.windows[chain[i]];
+    if (i > 0) {
+      const Window& prev = s_.windows[chain[i - 1]];
+      if (!u_.same_frame(prev.triangle, wi.triangle)) {
+        const BallMotion m = u_.crossing_ball(wi.edge, prev.triangle, wi.triangle);
+        if (b.plane) {
+          b.source = m.apply_vector(b.source);
+          b.offset = b.offset - (b.source.x * m.t0 + b.source.y * m.t1);
+        } else {
+          b.source = m.apply(b.source);
+        }
+        for (int j = 0; j < 2; ++j)
+          if (taken[j]) b.image[j] = m.apply(b.image[j]);
+      }
+    }
+    for (int j = 0; j < 2; ++j)
+      if (!taken[j] && last.bound[j] != kNoIndex && last.bound_depth[j] == i) {
+        b.image[j] = u_.vertex_ball(wi.triangle, last.bound[j]);
+        taken[j] = true;
+      }
+  }
+  return b;
+}
+
+Ball Certifier::time_ball(std::uint32_t w, const Target& x) {
+  const WindowBall b = evaluate(w);
+  const std::uint32_t t = s_.windows[w].triangle;
+  const BallPoint p = x.point ? u_.point_ball(t, *x.point) : u_.vertex_ball(t, x.vertex);
+  if (b.plane) return b.offset + b.source.x * p.x + b.source.y * p.y;
+  const BallPoint d = ball_sub(p, b.source);
+  return b.offset + sqrt(d.x * d.x + d.y * d.y);
+}
+
+template <class F>
+int Certifier::escalate(long cap, F&& sign_at_precision) {
+  for (long bits = 128; bits <= cap; bits *= 2) {
+    BallPrecision guard(bits);
+    const int s = sign_at_precision();
+    if (s != kUndecided) {
+      ++counts.arb;
+      counts.max_bits = std::max(counts.max_bits, bits);
+      return s;
+    }
+  }
+  return kUndecided;
+}
+
+// ---- stage 2: structural equality ------------------------------------------------------
+
+bool Certifier::same_expression(std::uint32_t w1, std::uint32_t w2, const Target& x) const {
+  const Window &a0 = s_.windows[w1], &b0 = s_.windows[w2];
+  if (a0.pseudo != b0.pseudo) return false;
+  const SourceOrigin origin = s_.pseudo[a0.pseudo].origin;
+  const bool point_kind = origin == SourceOrigin::Vertex || origin == SourceOrigin::GivenPoint;
+  if (a0.parent == kNoIndex && b0.parent == kNoIndex && !x.point && point_kind) {
+    // Two first windows of one point source: at a vertex of both triangles the time is
+    // sigma + |x - S| measured in 3D (a straight segment inside each triangle).
+    const MedialComplex& mc = u_.complex();
+    if (corner_of(mc.triangle(a0.triangle), x.vertex) >= 0 && corner_of(mc.triangle(b0.triangle), x.vertex) >= 0)
+      return true;
+  }
+  // Equal sequences of frame changes give the same source image.
+  std::uint32_t p = a0.anchor, q = b0.anchor;
+  for (;;) {
+    if (p == q) return true;
+    const Window &a = s_.windows[p], &b = s_.windows[q];
+    if (u_.frame(a.triangle) != u_.frame(b.triangle)) return false;
+    if (a.parent == kNoIndex || b.parent == kNoIndex) return a.parent == b.parent && point_kind;
+    if (a.edge != b.edge || a.triangle != b.triangle || s_.windows[a.parent].triangle != s_.windows[b.parent].triangle)
+      return false;
+    p = s_.windows[a.parent].anchor, q = s_.windows[b.parent].anchor;
+  }
+}
+
+bool Certifier::bound_fixed(std::uint32_t w, int j, std::uint32_t v) const {
+  const Window& last = s_.windows[w];
+  if (last.bound[j] != v) return false;
+  const MedialComplex& mc = u_.complex();
+  for (std::uint32_t x = w; x != kNoIndex; x = s_.windows[x].parent) {
+    if (corner_of(mc.triangle(s_.windows[x].triangle), v) < 0) return false;
+    if (s_.windows[x].depth == last.bound_depth[j]) return true;
+  }
+  return false;
+}
+
+// ---- stage 3: exact (rational frames and crossings) -------------------------------------
+
+const ExactSum* Certifier::exact_sigma(std::uint32_t p) {
+  if (auto it = exact_sigma_memo_.find(p); it != exact_sigma_memo_.end()) return it->second.get();
+  const PseudoSource& ps = s_.pseudo[p];
+  std::unique_ptr<ExactSum> r;
+  bool exact = true;
+  auto take = [&](std::optional<ExactSum> v) {
+    if (!v) exact = false;
+    else if (!r) r = std::make_unique<ExactSum>(std::move(*v));
+    else if (exact_sign(*v - *r) < 0) *r = std::move(*v);
+  };
+  if (ps.exact >= 0) take(s_.exact[ps.exact].sigma);
+  if (ps.origin == SourceOrigin::Vertex && ps.spawn != kNoIndex) {
+    take(exact_time(ps.spawn, Target{ps.vertex, nullptr}));
+    for (std::uint32_t w : ps.tied_spawns) take(exact_time(w, Target{ps.vertex, nullptr}));
+  }
+  if (!exact) r.reset();
+  return exact_sigma_memo_.emplace(p, std::move(r)).first->second.get();
+}
+
+const Certifier::ExactWindow* Certifier::exact_window(std::uint32_t w) {
+  if (auto it = exact_memo_.find(w); it != exact_memo_.end()) return it->second.get();
+  auto r = build_exact_window(w);
+  return exact_memo_.emplace(w, std::move(r)).first->second.get();
+}
+
+std::unique_ptr<Certifier::ExactWindow> Certifier::build_exact_window(std::uint32_t w) {
+  std::vector<std::uint32_t> chain;
+  for (std::uint32_t x = w; x != kNoIndex; x = s_.windows[x].parent) chain.push_back(x);
+  std::reverse(chain.begin(), chain.end());
+  const Window& first = s_.windows[chain[0]];
+  const Window& last = s_.windows[w];
+  const PseudoSource& ps = s_.pseudo[first.pseudo];
+  const MedialComplex& mc = u_.complex();
+  auto e = std::make_unique<ExactWindow>();
+  e->frame = u_.frame(first.triangle);
+  if (ps.origin == SourceOrigin::BorderPoint) return nullptr;
+  if (ps.origin == SourceOrigin::BorderPlane) {
+    if (ps.exact < 0) return nullptr;
+    const std::uint32_t edge = s_.exact[ps.exact].edge;
+    const auto& ev = mc.edge(edge).v;
+    e->line = true;
+    e->p = xv(u_.vertex_uv(e->frame, ev[0]));
+    e->d = sub(xv(u_.vertex_uv(e->frame, ev[1])), e->p);
+    const XV c = xv(u_.vertex_uv(e->frame, third_vertex(mc.triangle(border_triangle(mc, edge)), ev)));
+    e->inner = exact_sign(cross_xv(e->d, sub(c, e->p)));
+  } else {
+    e->s = xv(ps.origin == SourceOrigin::Vertex ? u_.vertex_uv(e->frame, ps.vertex)
+                                                 : u_.point_uv(e->frame, s_.given[ps.data].point));
+  }
+  std::array<bool, 2> taken{false, false};
+  for (std::size_t i = 0; i < chain.size(); ++i) {
+    const Window& wi = s_.windows[chain[i]];
+    const std::uint32_t prev = i > 0 ? s_.windows[chain[i - 1]].triangle : kNoIndex;
+    if (i > 0 && !u_.same_frame(prev, wi.triangle)) {
+      const Unfolding::ExactCrossing& c = u_.exact_crossing(wi.edge, prev, wi.triangle);
+      ExactSum k = ExactSum::sqrt_of(c.kk);
+      k.scale(-1);
+      k.simplify();
+      if (e->line) {
+        e->p = cross_over(c, k, e->p, true), e->d = cross_over(c, k, e->d, false);
+        if (u_.crossing(wi.edge, prev, wi.triangle).reflect) e->inner = -e->inner;
+        if (!small(e->p) || !small(e->d)) return nullptr;
+      } else {
+        e->s = cross_over(c, k, e->s, true);
+        if (!small(e->s)) return nullptr;
+      }
+      for (int j = 0; j < 2; ++j)
+        if (taken[j]) e->image[j] = cross_over(c, k, e->image[j], true);
+      e->frame = u_.frame(wi.triangle);
+    }
+    for (int j = 0; j < 2; ++j)
+      if (!taken[j] && last.bound[j] != kNoIndex && last.bound_depth[j] == i) {
+        e->image[j] = xv(u_.vertex_uv(e->frame, last.bound[j]));
+        taken[j] = true;
+      }
+  }
+  return e;
+}
+
+int Certifier::exact_side(const ExactWindow& e, int j, const Target& x) const {
+  const XV p = target_uv(e.frame, x);
+  if (!e.line) return exact_sign(cross_xv(sub(e.image[j], e.s), sub(p, e.s)));
+  // side = cross(u, X - B) with u the inner unit normal: sign = -inner * sign(E . (X - B)),
+  // the dot product in the frame's metric.
+  return -e.inner * exact_sign(metric_dot(e.d, sub(p, e.image[j]), u_.g1(e.frame), u_.g2(e.frame)));
+}
+
+std::optional<ExactSum> Certifier::exact_time(std::uint32_t w, const Target& x) {
+  const ExactWindow* e = exact_window(w);
+  if (!e) return std::nullopt;
+  const ExactSum* sigma = exact_sigma(s_.windows[w].pseudo);
+  if (!sigma) return std::nullopt;
+  const XV p = target_uv(e->frame, x);
+  const mpq_class &g1 = u_.g1(e->frame), &g2 = u_.g2(e->frame);
+  ExactSum r = *sigma;
+  if (!e->line) {
+    const XV d = sub(p, e->s);
+    ExactSum d2 = metric_dot(d, d, g1, g2);
+    d2.simplify();
+    if (d2.sqrt_terms().empty()) {
+      r += ExactSum::sqrt_of(d2.rational_part());
+    } else if (auto root = sqrt_of_sum(d2)) {
+      r += *root;
+    } else {
+      return std::nullopt;
+    }
+  } else {
+    // distance to the line = inner * cross(d, X - p) * sqrt(g1 g2 / |d|^2)
+    ExactSum n2 = metric_dot(e->d, e->d, g1, g2);
+    n2.simplify();
+    if (!n2.sqrt_terms().empty()) return std::nullopt;
+    const ExactSum dist = mul(ExactSum::sqrt_of(g1 * g2 / n2.rational_part()), cross_xv(e->d, sub(p, e->p)));
+    r += e->inner > 0 ? dist : q(0) - dist;
+  }
+  r.simplify();
+  return r;
+}
+
+// Directions at v in local coordinates: a point source's v - S (cross products scale by
+// sqrt(g1 g2) > 0), a line's inner normal u, for which cross(u, Y) = -inner (E . Y) / |E|.
+int Certifier::exact_direction_cross(const ExactWindow& a, const ExactWindow& b, std::uint32_t v) const {
+  const mpq_class &g1 = u_.g1(a.frame), &g2 = u_.g2(a.frame);
+  const XV x = xv(u_.vertex_uv(a.frame, v));
+  if (!a.line && !b.line) return exact_sign(cross_xv(sub(x, a.s), sub(x, b.s)));
+  if (a.line && !b.line) return -a.inner * exact_sign(metric_dot(a.d, sub(x, b.s), g1, g2));
+  if (!a.line && b.line) return b.inner * exact_sign(metric_dot(b.d, sub(x, a.s), g1, g2));
+  return a.inner * b.inner * exact_sign(cross_xv(a.d, b.d));
+}
+
+// ---- the staged decisions ---------------------------------------------------------------
+
+void Certifier::trim_memos() {
+  if (exact_memo_.size() > 200000) exact_memo_.clear();
+}
+
+int Certifier::side(std::uint32_t w, int j, const Target& x) {
+  trim_memos();
+  const Window& win = s_.windows[w];
+  const int s = certified_sign(window_side(win, ipoint(win.image[j]), ipoint(target_disc(win.triangle, x))));
+  if (s != kUndecided) {
+    ++counts.filter;
+    return s;
+  }
+  if (!x.point && bound_fixed(w, j, x.vertex)) {
+    ++counts.structural_equal;
+    return 0;
+  }
+  if (const ExactWindow* ew = exact_window(w)) {
+    const int e = exact_side(*ew, j, x);
+    ++(e == 0 ? counts.exact_equal : counts.exact);
+    return e;
+  }
+  const int a = escalate(max_bits_, [&] {
+    const WindowBall b = evaluate(w);
+    const std::uint32_t t = win.triangle;
+    const BallPoint p = x.point ? u_.point_ball(t, *x.point) : u_.vertex_ball(t, x.vertex);
+    if (b.plane) return ball_sign(ball_cross(b.source, ball_sub(p, b.image[j])));
+    return ball_sign(ball_cross(ball_sub(b.image[j], b.source), ball_sub(p, b.source)));
+  });
+  if (a != kUndecided) return a;
+  ++counts.uncertified;
+  return 0;
+}
+
+int Certifier::compare_times(std::uint32_t w1, const Target& x1, std::uint32_t w2, const Target& x2) {
+  trim_memos();
+  const int s = certified_sign(time_interval(w1, x1) - time_interval(w2, x2));
+  if (s != kUndecided) {
+    ++counts.filter;
+    return s;
+  }
+  const bool same_target = x1.point == x2.point && x1.vertex == x2.vertex;
+  if (same_target && same_expression(w1, w2, x1)) {
+    ++counts.structural_equal;
+    return 0;
+  }
+  if (exact_window(w1) && exact_window(w2)) {
+    const auto t1 = exact_time(w1, x1), t2 = exact_time(w2, x2);
+    if (t1 && t2) {
+      const int e = exact_sign(*t1 - *t2);
+      ++(e == 0 ? counts.exact_equal : counts.exact);
+      return e;
+    }
+  }
+  const int r = escalate(prune_bits_, [&] { return ball_sign(time_ball(w1, x1) - time_ball(w2, x2)); });
+  if (r == kUndecided) ++counts.kept_undecided;
+  return r;
+}
+
+int Certifier::compare_directions(std::uint32_t w1, std::uint32_t w2, std::uint32_t v) {
+  trim_memos();
+  const Window &a = s_.windows[w1], &b = s_.windows[w2];
+  const IPoint x = ipoint(u_.vertex_image(a.triangle, v));
+  const IPoint d1 = window_direction(a, x), d2 = window_direction(b, x);
+  const int s = certified_sign(icross(d1.x, d1.y, d2.x, d2.y));
+  if (s != kUndecided) {
+    ++counts.filter;
+    return s;
+  }
+  if (same_expression(w1, w2, Target{v, nullptr})) {
+    ++counts.structural_equal;
+    return 0;
+  }
+  const ExactWindow* ea = exact_window(w1);
+  const ExactWindow* eb = ea ? exact_window(w2) : nullptr;
+  if (ea && eb && ea->frame == eb->frame) {
+    const int e = exact_direction_cross(*ea, *eb, v);
+    ++(e == 0 ? counts.exact_equal : counts.exact);
+    return e;
+  }
+  const int r = escalate(prune_bits_, [&] {
+    const WindowBall ba = evaluate(w1), bb = evaluate(w2);
+    const BallPoint p = u_.vertex_ball(a.triangle, v);
+    const BallPoint da = ba.plane ? ba.source : ball_sub(p, ba.source);
+    const BallPoint db = bb.plane ? bb.source : ball_sub(p, bb.source);
+    return ball_sign(ball_cross(da, db));
+  });
+  if (r == kUndecided) ++counts.kept_undecided;
+  return r;
+}
+
+}  // namespace grassfire
