@@ -28,7 +28,7 @@ void ExactBurning::run() {
 void ExactBurning::index_windows() {
   const auto& ws = prop_->store().windows;
   first_.assign(mc_.triangle_count() + 1, 0);
-  auto live = [](const Window& w) { return !w.dead() && !(w.flags & Window::kArrival); };
+  auto live = [](const Window& w) { return !w.dead(); };
   for (const Window& w : ws)
     if (live(w)) ++first_[w.triangle + 1];
   for (std::size_t t = 0; t < mc_.triangle_count(); ++t) first_[t + 1] += first_[t];

@@ -10,10 +10,14 @@
 //  - fans inside one coplanar patch (unfolding.h): a closed fan is flat (exactly 2 pi); an open fan turns
 //    from its first end edge to its last, and its angle exceeds pi iff that turn is
 //    reflex, decided by exact rational orientation (a straight border has exactly pi);
-//  - other fans: the sum of the corner angles atan2(|a x b|, a . b) in Arb at 64, 128 and
-//    256 bits against pi or 2 pi; a sum no precision separates from it is taken to bend.
+//  - other fans: the corner angles' sum Theta against pi or 2 pi: the sum in doubles places
+//    Theta within pi of the limit (atan2 errs by a few ulps, the margin is 1e-6), then the
+//    sign of the imaginary part of the product of the unit complex numbers of the corners,
+//    in Interval arithmetic, decides; if that cannot, Arb (atan2 at 64, 128, 256 bits);
+//    a sum that no stage separates from the limit is taken to bend.
 // Also the map from a triangle corner to its sector.
-// Contract: a validated MedialComplex. Complexity: O(corners) Arb operations.
+// Contract: a validated MedialComplex. Complexity: O(corners) Interval operations (Arb
+// only for fans whose angle equals the limit or nearly).
 #pragma once
 
 #include <cstdint>

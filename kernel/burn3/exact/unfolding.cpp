@@ -29,6 +29,10 @@ std::array<Interval, 3> sub3(const std::array<Interval, 3>& a, const std::array<
   return {a[0] - b[0], a[1] - b[1], a[2] - b[2]};
 }
 
+std::array<Interval, 3> cross3(const std::array<Interval, 3>& a, const std::array<Interval, 3>& b) {
+  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+}
+
 
 // The rigid motion that maps the directed segment A->B (frame of t) onto A2->B2 (frame of
 // t2), proper or reflecting; N is Interval or Ball.
@@ -65,7 +69,15 @@ Unfolding::Unfolding(const MedialComplex& mc) : mc_(mc) {
   build_patches();
   frame_iv_.resize(frames_.size());
   for (std::size_t f = 0; f < frames_.size(); ++f) {
-    const PlanarFrame& fr = frames_[f];
+    if (!frames_[f]) {  // one triangle abc: origin a, e1 = b - a, e2 = ((b - a) x (c - a)) x (b - a)
+      const auto& tv = mc_.triangle(frame_triangle_[f]).v;
+      const auto a = vertex_iv_[tv[0]], e1 = sub3(vertex_iv_[tv[1]], a), ac = sub3(vertex_iv_[tv[2]], a);
+      const auto e2 = cross3(cross3(e1, ac), e1);
+      const Interval s1 = sqrt(dot3(e1, e1)), s2 = sqrt(dot3(e2, e2));
+      frame_iv_[f] = {a, {e1[0] / s1, e1[1] / s1, e1[2] / s1}, {e2[0] / s2, e2[1] / s2, e2[2] / s2}};
+      continue;
+    }
+    const PlanarFrame& fr = *frames_[f];
     const Interval s1 = sqrt(enclose(fr.e1_norm2)), s2 = sqrt(enclose(fr.e2_norm2));
     const auto e1 = enclose3(fr.e1), e2 = enclose3(fr.e2);
     frame_iv_[f] = {enclose3(fr.origin), {e1[0] / s1, e1[1] / s1, e1[2] / s1}, {e2[0] / s2, e2[1] / s2, e2[2] / s2}};
@@ -97,16 +109,28 @@ void Unfolding::build_patches() {
   for (std::uint32_t t = 0; t < T; ++t) {
     const std::uint32_t r = uf.find(t);
     if (triangle_frame_[r] == kNoIndex) {
-      const auto& tv = mc_.triangle(r).v;
-      triangle_frame_[r] = static_cast<std::uint32_t>(frames_.size());
-      frames_.push_back(frame_of_triangle(mc_.vertex(tv[0]).exact, mc_.vertex(tv[1]).exact, mc_.vertex(tv[2]).exact));
+      triangle_frame_[r] = static_cast<std::uint32_t>(frame_triangle_.size());
+      frame_triangle_.push_back(r);
       size.push_back(0);
     }
     triangle_frame_[t] = triangle_frame_[r];
     ++size[triangle_frame_[t]];
   }
+  frames_.resize(frame_triangle_.size());
   shared_.resize(frames_.size());
-  for (std::size_t f = 0; f < frames_.size(); ++f) shared_[f] = size[f] > 1;
+  for (std::size_t f = 0; f < frames_.size(); ++f) {
+    shared_[f] = size[f] > 1;
+    if (shared_[f]) planar_frame(static_cast<std::uint32_t>(f));
+  }
+}
+
+const PlanarFrame& Unfolding::planar_frame(std::uint32_t f) const {
+  if (!frames_[f]) {
+    const auto& tv = mc_.triangle(frame_triangle_[f]).v;
+    frames_[f] = std::make_unique<PlanarFrame>(
+        frame_of_triangle(mc_.vertex(tv[0]).exact, mc_.vertex(tv[1]).exact, mc_.vertex(tv[2]).exact));
+  }
+  return *frames_[f];
 }
 
 void Unfolding::compute_corners() {
@@ -200,12 +224,12 @@ const RigidMotion2& Unfolding::crossing(std::uint32_t e, std::uint32_t t, std::u
 }
 
 std::array<Ball, 2> Unfolding::frame_scale_ball(std::uint32_t t) const {
-  const PlanarFrame& f = frames_[triangle_frame_[t]];
+  const PlanarFrame& f = planar_frame(triangle_frame_[t]);
   return {sqrt(ball_of(f.e1_norm2)), sqrt(ball_of(f.e2_norm2))};
 }
 
 BallPoint Unfolding::point_ball(std::uint32_t t, const ExactPoint3& p) const {
-  const PlanarFrame& f = frames_[triangle_frame_[t]];
+  const PlanarFrame& f = planar_frame(triangle_frame_[t]);
   const ExactPoint3 d = p - f.origin;
   const auto s = frame_scale_ball(t);
   return {ball_of(dot(d, f.e1)) / s[0], ball_of(dot(d, f.e2)) / s[1]};
@@ -237,11 +261,11 @@ BallMotion Unfolding::crossing_ball(std::uint32_t e, std::uint32_t t, std::uint3
 const std::array<mpq_class, 2>& Unfolding::vertex_uv(std::uint32_t f, std::uint32_t v) const {
   const std::uint64_t key = (static_cast<std::uint64_t>(f) << 32) | v;
   auto it = uv_cache_.find(key);
-  if (it == uv_cache_.end()) it = uv_cache_.emplace(key, frames_[f].local(mc_.vertex(v).exact)).first;
+  if (it == uv_cache_.end()) it = uv_cache_.emplace(key, planar_frame(f).local(mc_.vertex(v).exact)).first;
   return it->second;
 }
 
-std::array<mpq_class, 2> Unfolding::point_uv(std::uint32_t f, const ExactPoint3& p) const { return frames_[f].local(p); }
+std::array<mpq_class, 2> Unfolding::point_uv(std::uint32_t f, const ExactPoint3& p) const { return planar_frame(f).local(p); }
 
 // X (in t's plane) = A + alpha E + beta N with N the part of C - A orthogonal to E; the
 // unfolding sends it to A + alpha E + k beta N2, k = -|N| / |N2| (t onto the side opposite
@@ -260,7 +284,7 @@ const Unfolding::ExactCrossing& Unfolding::exact_crossing(std::uint32_t e, std::
   };
   const ExactPoint3 N = perpendicular(t), N2 = perpendicular(t2);
   const mpq_class n2 = dot(N, N);
-  const PlanarFrame &f = frames_[triangle_frame_[t]], &f2 = frames_[triangle_frame_[t2]];
+  const PlanarFrame &f = planar_frame(triangle_frame_[t]), &f2 = planar_frame(triangle_frame_[t2]);
   auto localvec = [&](const ExactPoint3& v) { return std::array<mpq_class, 2>{dot(v, f2.e1) / f2.e1_norm2, dot(v, f2.e2) / f2.e2_norm2}; };
   const ExactPoint3 oa = f.origin - A;
   auto r = std::make_unique<ExactCrossing>();

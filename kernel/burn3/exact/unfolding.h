@@ -83,9 +83,12 @@ class Unfolding {
   // diagonal: |p - q|^2 = g1 du^2 + g2 dv^2.
   const std::array<mpq_class, 2>& vertex_uv(std::uint32_t f, std::uint32_t v) const;
   std::array<mpq_class, 2> point_uv(std::uint32_t f, const ExactPoint3& p) const;
-  const mpq_class& g1(std::uint32_t f) const { return frames_[f].e1_norm2; }
-  const mpq_class& g2(std::uint32_t f) const { return frames_[f].e2_norm2; }
+  const mpq_class& g1(std::uint32_t f) const { return planar_frame(f).e1_norm2; }
+  const mpq_class& g2(std::uint32_t f) const { return planar_frame(f).e2_norm2; }
   std::size_t frame_count() const { return frames_.size(); }
+  // The exact frame f (the frame of its patch's first triangle; built on first use for
+  // one-triangle patches, whose double data come from interval arithmetic directly).
+  const PlanarFrame& planar_frame(std::uint32_t f) const;
 
   // The crossing in exact local coordinates: X' = P(X) + k beta(X) w with P affine and
   // beta an affine functional, both rational, w rational and k = -sqrt(kk), kk rational
@@ -96,6 +99,9 @@ class Unfolding {
     mpq_class w0, w1, kk;
   };
   const ExactCrossing& exact_crossing(std::uint32_t e, std::uint32_t t, std::uint32_t t2) const;
+
+  // Interval enclosure of a vertex's coordinates.
+  const std::array<Interval, 3>& vertex_interval(std::uint32_t v) const { return vertex_iv_[v]; }
 
   // Double images of an exact point in t's plane.
   DiscPoint point_image(std::uint32_t t, const ExactPoint3& p) const;
@@ -108,7 +114,8 @@ class Unfolding {
   int exact_orientation(std::uint32_t t) const;
 
   const MedialComplex& mc_;
-  std::vector<PlanarFrame> frames_;
+  mutable std::vector<std::unique_ptr<PlanarFrame>> frames_;
+  std::vector<std::uint32_t> frame_triangle_;  // the triangle whose frame_of_triangle it is
   std::vector<std::uint32_t> triangle_frame_;
   std::vector<bool> shared_;
   std::vector<int> orientation_;

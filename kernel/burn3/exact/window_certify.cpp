@@ -22,7 +22,8 @@ namespace {
 using XV = Certifier::ExactVector;
 
 // A coordinate that grows past this many terms is given up (then Arb decides).
-constexpr std::size_t kMaxTerms = 64;
+constexpr std::size_t kMaxTerms = 32;
+constexpr int kMaxIrrationalCrossings = 4;
 
 ExactSum q(const mpq_class& x) { return ExactSum::rational(x); }
 XV xv(const std::array<mpq_class, 2>& a) { return {q(a[0]), q(a[1])}; }
@@ -101,7 +102,7 @@ Ball Certifier::sigma_ball(std::uint32_t p) {
   return r;
 }
 
-WindowBall Certifier::evaluate(std::uint32_t w) {
+WindowBall Certifier::evaluate(std::uint32_t w, bool with_offset) {
   std::vector<std::uint32_t> chain;
   for (std::uint32_t x = w; x != kNoIndex; x = s_.windows[x].parent) chain.push_back(x);
   std::reverse(chain.begin(), chain.end());
@@ -110,7 +111,8 @@ WindowBall Certifier::evaluate(std::uint32_t w) {
   const bool point_kind = s_.pseudo[first.pseudo].origin == SourceOrigin::GivenPoint ||
                           s_.pseudo[first.pseudo].origin == SourceOrigin::Vertex ||
                           s_.pseudo[first.pseudo].origin == SourceOrigin::BorderPoint;
-  const RootBall r = root_ball(u_, s_, first.pseudo, first.triangle, point_kind ? sigma_ball(first.pseudo) : Ball(0.0));
+  const RootBall r =
+      root_ball(u_, s_, first.pseudo, first.triangle, point_kind && with_offset ? sigma_ball(first.pseudo) : Ball(0.0));
   WindowBall b{r.source, r.offset, {}, r.plane};
   std::array<bool, 2> taken{false, false};
   for (std::size_t i = 0; i < chain.size(); ++i) {
@@ -139,7 +141,7 @@ WindowBall Certifier::evaluate(std::uint32_t w) {
 }
 
 Ball Certifier::time_ball(std::uint32_t w, const Target& x) {
-  const WindowBall b = evaluate(w);
+  const WindowBall b = evaluate(w, true);
   const std::uint32_t t = s_.windows[w].triangle;
   const BallPoint p = x.point ? u_.point_ball(t, *x.point) : u_.vertex_ball(t, x.vertex);
   if (b.plane) return b.offset + b.source.x * p.x + b.source.y * p.y;
@@ -212,6 +214,7 @@ const ExactSum* Certifier::exact_sigma(std::uint32_t p) {
     else if (exact_sign(*v - *r) < 0) *r = std::move(*v);
   };
   if (ps.exact >= 0) take(s_.exact[ps.exact].sigma);
+  if (ps.origin == SourceOrigin::BorderPoint) take(ExactSum());
   if (ps.origin == SourceOrigin::Vertex && ps.spawn != kNoIndex) {
     take(exact_time(ps.spawn, Target{ps.vertex, nullptr}));
     for (std::uint32_t w : ps.tied_spawns) take(exact_time(w, Target{ps.vertex, nullptr}));
@@ -236,8 +239,24 @@ std::unique_ptr<Certifier::ExactWindow> Certifier::build_exact_window(std::uint3
   const MedialComplex& mc = u_.complex();
   auto e = std::make_unique<ExactWindow>();
   e->frame = u_.frame(first.triangle);
-  if (ps.origin == SourceOrigin::BorderPoint) return nullptr;
-  if (ps.origin == SourceOrigin::BorderPlane) {
+  if (ps.origin == SourceOrigin::BorderPoint) {
+    // S = A + alpha E - sqrt(h^2 / |N|^2) N, N the part of C - A orthogonal to E (sources.h),
+    // all rational in local coordinates but the one square root.
+    const std::uint32_t edge = ps.data;
+    const auto& ev = mc.edge(edge).v;
+    const RotatedPoint rp = rotated_point(mc, edge);
+    const auto a = u_.vertex_uv(e->frame, ev[0]), b = u_.vertex_uv(e->frame, ev[1]);
+    const auto c = u_.vertex_uv(e->frame, third_vertex(mc.triangle(first.triangle), ev));
+    const mpq_class g1 = u_.g1(e->frame), g2 = u_.g2(e->frame);
+    const std::array<mpq_class, 2> E{b[0] - a[0], b[1] - a[1]}, AC{c[0] - a[0], c[1] - a[1]};
+    const mpq_class e2 = g1 * E[0] * E[0] + g2 * E[1] * E[1];
+    const mpq_class along = (g1 * AC[0] * E[0] + g2 * AC[1] * E[1]) / e2;
+    const std::array<mpq_class, 2> N{AC[0] - along * E[0], AC[1] - along * E[1]};
+    ExactSum k = ExactSum::sqrt_of(rp.h2 / (g1 * N[0] * N[0] + g2 * N[1] * N[1]));
+    k.simplify();
+    e->s = {q(a[0] + rp.alpha * E[0]) - scaled(k, N[0]), q(a[1] + rp.alpha * E[1]) - scaled(k, N[1])};
+    e->s[0].simplify(), e->s[1].simplify();
+  } else if (ps.origin == SourceOrigin::BorderPlane) {
     if (ps.exact < 0) return nullptr;
     const std::uint32_t edge = s_.exact[ps.exact].edge;
     const auto& ev = mc.edge(edge).v;
@@ -251,6 +270,7 @@ std::unique_ptr<Certifier::ExactWindow> Certifier::build_exact_window(std::uint3
                                                  : u_.point_uv(e->frame, s_.given[ps.data].point));
   }
   std::array<bool, 2> taken{false, false};
+  int generators = 0;
   for (std::size_t i = 0; i < chain.size(); ++i) {
     const Window& wi = s_.windows[chain[i]];
     const std::uint32_t prev = i > 0 ? s_.windows[chain[i - 1]].triangle : kNoIndex;
@@ -259,6 +279,8 @@ std::unique_ptr<Certifier::ExactWindow> Certifier::build_exact_window(std::uint3
       ExactSum k = ExactSum::sqrt_of(c.kk);
       k.scale(-1);
       k.simplify();
+      // Each irrational crossing may double the terms: past a few, give up (Arb decides).
+      if (!k.sqrt_terms().empty() && ++generators > kMaxIrrationalCrossings) return nullptr;
       if (e->line) {
         e->p = cross_over(c, k, e->p, true), e->d = cross_over(c, k, e->d, false);
         if (u_.crossing(wi.edge, prev, wi.triangle).reflect) e->inner = -e->inner;
@@ -354,7 +376,7 @@ int Certifier::side(std::uint32_t w, int j, const Target& x) {
     return e;
   }
   const int a = escalate(max_bits_, [&] {
-    const WindowBall b = evaluate(w);
+    const WindowBall b = evaluate(w, false);
     const std::uint32_t t = win.triangle;
     const BallPoint p = x.point ? u_.point_ball(t, *x.point) : u_.vertex_ball(t, x.vertex);
     if (b.plane) return ball_sign(ball_cross(b.source, ball_sub(p, b.image[j])));
@@ -412,7 +434,7 @@ int Certifier::compare_directions(std::uint32_t w1, std::uint32_t w2, std::uint3
     return e;
   }
   const int r = escalate(prune_bits_, [&] {
-    const WindowBall ba = evaluate(w1), bb = evaluate(w2);
+    const WindowBall ba = evaluate(w1, false), bb = evaluate(w2, false);
     const BallPoint p = u_.vertex_ball(a.triangle, v);
     const BallPoint da = ba.plane ? ba.source : ball_sub(p, ba.source);
     const BallPoint db = bb.plane ? bb.source : ball_sub(p, bb.source);

@@ -62,7 +62,9 @@ class Certifier {
   DiscPoint target_disc(std::uint32_t t, const Target& x) const;
   Interval time_interval(std::uint32_t w, const Target& x) const;
   Ball time_ball(std::uint32_t w, const Target& x);
-  WindowBall evaluate(std::uint32_t w);
+  // The chain re-evaluated in Arb; the offset only when asked (it recurses through the
+  // offsets of the vertex sources the chain descends from).
+  WindowBall evaluate(std::uint32_t w, bool with_offset);
   // The window's geometry in exact local coordinates of its frame (sums of square roots),
   // when its pseudo-source's position is exact and its chain's unfoldings keep the
   // coordinates small (see 3.); its offset is exact_sigma(pseudo), when that exists.

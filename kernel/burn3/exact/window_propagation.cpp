@@ -24,7 +24,6 @@ WindowPropagation::WindowPropagation(const Unfolding& u, const ExactBurningOptio
   best_window_.assign(S, kNoIndex);
   best_hi_.assign(S, kInf);
   sector_source_.assign(S, kNoIndex);
-  arrivals_.assign(mc_.edge_count(), {});
   stats_.undecided_angles = sectors_.undecided_angles;
 }
 
@@ -393,16 +392,7 @@ void WindowPropagation::make_child(std::uint32_t w, int exit_slot, int icw, int 
   c.key = std::max(W.key, window_lower_bound(W, x0, x1));
   c.flags = static_cast<std::uint8_t>(W.flags & Window::kPlane);
   c.anchor = W.anchor;
-  if (ed.stratum == EdgeStratum::Singular) {
-    c.triangle = t;
-    c.source = W.source;
-    c.offset = W.offset;
-    c.image = {b0.image, b1.image};
-    c.flags |= Window::kArrival;
-    const std::uint32_t id = new_window(c);
-    s_.windows[id].next_sibling = s_.windows[w].first_child;
-    s_.windows[w].first_child = id;
-    arrivals_[E].push_back(id);
+  if (ed.stratum == EdgeStratum::Singular) {  // a wall (part 1): the front stops here
     ++stats_.wall_arrivals;
     return;
   }

@@ -2,8 +2,9 @@
 // propagated across the sheets of a medial complex (4.2.3, 5.2; DESIGN.md 5).
 //
 // Computes: every window that can realise the burning time BT inside the sheets, from the
-// caller's point sources and the border ignition rules, with singular edges as walls (the
-// windows that reach a wall are kept as arrival records per sheet side; issue 8, part 1).
+// caller's point sources and the border ignition rules, with singular edges as walls
+// (issue 8, part 1). The arrival of fire at a wall through one of its sheet sides t is the
+// minimum of t's windows along the edge (fronts often graze a wall rather than cross it).
 // The method is Chen and Han's window propagation with the improvements of Xin and Wang
 // 2009 (ICH, as in CGAL's Surface_mesh_shortest_path): a priority queue ordered by a
 // certified lower bound of each window's times (so that, as in Dijkstra's algorithm, every
@@ -45,7 +46,7 @@ namespace grassfire {
 struct ExactBurningOptions {
   bool vertex_filter = true;          // the vertex filter (tests switch it off to compare)
   bool one_angle_one_split = true;
-  long max_bits = 1024;               // Arb precision cap of the certified stages
+  long max_bits = 512;                // Arb precision cap of the certified stages
   std::uint64_t max_windows = 400'000'000;  // iteration bound (std::runtime_error beyond)
 };
 
@@ -58,7 +59,7 @@ struct PropagationStats {
   std::uint64_t pseudo_sources = 0;
   std::uint64_t ties_absorbed = 0;    // unprovable ties folded into an existing vertex source
   std::uint64_t vertex_events = 0;    // a window reaching a vertex
-  std::uint64_t wall_arrivals = 0;    // arrival records on singular edges
+  std::uint64_t wall_arrivals = 0;    // children stopped by a wall (singular edge)
   std::uint64_t border_arrivals = 0;  // children that reached a border edge
   std::uint64_t undecided_angles = 0; // sectors taken to bend without a certified angle
   double seconds = 0.0;
@@ -78,8 +79,6 @@ class WindowPropagation {
   Certifier& certifier() { return cert_; }
   const PropagationStats& stats() const { return stats_; }
   const SectorGeometry& sectors() const { return sectors_; }
-  // Arrival records on singular edge e (windows flagged kArrival; the side is .triangle).
-  const std::vector<std::uint32_t>& arrivals(std::uint32_t e) const { return arrivals_[e]; }
 
  private:
   struct QueueEntry {
@@ -125,7 +124,6 @@ class WindowPropagation {
   std::vector<std::uint32_t> best_window_;   // per sector: the earliest known arrival at its apex
   std::vector<double> best_hi_;              // per sector: upper bound of a real path's time to the apex
   std::vector<std::uint32_t> sector_source_; // per sector: its current vertex pseudo-source
-  std::vector<std::vector<std::uint32_t>> arrivals_;
 };
 
 }  // namespace grassfire

@@ -10,8 +10,7 @@
 // from S in t's frame) and B1; it covers t's points in the closed wedge, entering through
 // its entry edge (or starting inside t: a root window). Windows live on (edge, side)
 // pairs: the entry edge and the triangle entered (one window set per sheet side of an edge,
-// as the junction rules of 4.2 need). Windows that reach a wall (singular edge) from t are
-// kept as arrival records on (edge, t).
+// as the junction rules of 4.2 need).
 // Exact definition (what the certified stages re-evaluate): S is the root position mapped
 // by the unfoldings of the windows' chain (parent links back to the pseudo-source's first
 // window); bound j is the vertex bound[j] taken exactly in the frame of the chain window at
@@ -79,7 +78,6 @@ struct GivenSource {
 struct Window {
   static constexpr std::uint8_t kPlane = 1;      // plane wave: source = unit direction u
   static constexpr std::uint8_t kDead = 2;       // dominated (evicted); skipped everywhere
-  static constexpr std::uint8_t kArrival = 4;    // arrival record on a wall, never processed
   static constexpr std::uint8_t kProcessed = 16;
 
   std::uint32_t pseudo = kNoIndex;
