@@ -113,10 +113,27 @@ std::optional<ExactSum> ExactBurning::exact_burn_time(std::uint32_t t, const Exa
 
 Interval ExactBurning::vertex_burn_time(std::uint32_t v) {
   const double inf = std::numeric_limits<double>::infinity();
+  if (prop_->is_link_rule_vertex(v)) {
+    const std::uint32_t t = prop_->link_burn_time(v);
+    return t == kNoIndex ? Interval::infinity() : prop_->store().times[t].value;
+  }
   Interval best(inf, inf);
   for (std::uint32_t t : mc_.vertex_triangles(v)) {
     const Interval b = burn_time(t, Target{v, nullptr});
     best = {std::min(best.lo, b.lo), std::min(best.hi, b.hi)};
+  }
+  return best;
+}
+
+Interval ExactBurning::segment_burn_time(std::uint32_t e, double s) {
+  if (mc_.edge(e).stratum != EdgeStratum::Dangling) throw std::invalid_argument("segment_burn_time: not a segment");
+  const Interval len = sqrt(enclose(prop_->certifier().edge_length2(e)));
+  Interval best = Interval::infinity();
+  for (int j = 0; j < 2; ++j) {
+    const Interval end = vertex_burn_time(mc_.edge(e).v[j]);
+    if (end.is_infinite()) continue;
+    const Interval t = end + len * (j == 0 ? Interval(s) : Interval(1.0) - Interval(s));
+    best = best.is_infinite() ? t : Interval(std::min(best.lo, t.lo), std::min(best.hi, t.hi));
   }
   return best;
 }

@@ -46,6 +46,9 @@ class ExactBurning {
   Interval burn_time(std::uint32_t t, const ExactPoint3& x) { return burn_time(t, Target{kNoIndex, &x}); }
   std::optional<ExactSum> exact_burn_time(std::uint32_t t, const ExactPoint3& x);
   Interval vertex_burn_time(std::uint32_t v);
+  // BT at the point (1 - s) v0 + s v1 of a segment (dangling edge), 0 <= s <= 1: fire runs
+  // along it from its burned ends (the 2D rule, 3.3.1).
+  Interval segment_burn_time(std::uint32_t e, double s);
   std::vector<Interval> vertex_burn_times();
 
   const MedialComplex& complex() const { return mc_; }

@@ -80,26 +80,32 @@ XV Certifier::target_uv(std::uint32_t f, const Target& x) const {
 // ---- stage 4: Arb re-evaluation of the chain -------------------------------------------
 
 Ball Certifier::sigma_ball(std::uint32_t p) {
-  if (memo_bits_ != BallPrecision::bits()) sigma_memo_.clear(), memo_bits_ = BallPrecision::bits();
-  if (auto it = sigma_memo_.find(p); it != sigma_memo_.end()) return it->second;
-  const PseudoSource& ps = s_.pseudo[p];
-  Ball r(0.0);
-  bool any = false;
-  auto take = [&](const Ball& b) {
-    if (any) arb_min(r.get(), r.get(), b.get(), BallPrecision::bits());
-    else r = b;
-    any = true;
-  };
-  if (ps.exact >= 0) take(ball_of(s_.exact[ps.exact].sigma));
-  else if (ps.origin == SourceOrigin::GivenPoint) take(ball_of(s_.given[ps.data].start));
-  if (ps.origin == SourceOrigin::Vertex && ps.spawn != kNoIndex) {
-    take(time_ball(ps.spawn, Target{ps.vertex, nullptr}));
-    for (std::uint32_t w : ps.tied_spawns) take(time_ball(w, Target{ps.vertex, nullptr}));
+  const std::uint32_t t = s_.pseudo[p].time;
+  return t == kNoIndex ? Ball(0.0) : expr_ball(t);
+}
+
+Ball Certifier::expr_ball(std::uint32_t i) {
+  if (memo_bits_ != BallPrecision::bits()) time_memo_.clear(), memo_bits_ = BallPrecision::bits();
+  if (auto it = time_memo_.find(i); it != time_memo_.end()) return it->second;
+  const TimeExpr& e = s_.times[i];
+  Ball r;
+  switch (e.kind) {
+    case TimeExpr::Kind::Exact: r = ball_of(s_.exact_times[e.a]); break;
+    case TimeExpr::Kind::WindowAt: r = time_ball(e.a, Target{e.b, nullptr}); break;
+    case TimeExpr::Kind::Plus: r = expr_ball(e.a) + sqrt(ball_of(edge_length2(e.b))); break;
+    case TimeExpr::Kind::Min: {
+      const Ball x = expr_ball(e.a), y = expr_ball(e.b);
+      arb_min(r.get(), x.get(), y.get(), BallPrecision::bits());
+      break;
+    }
   }
-  if (!any && ps.origin != SourceOrigin::BorderPoint && ps.origin != SourceOrigin::BorderPlane)
-    throw std::logic_error("Certifier: pseudo-source without an offset");
-  sigma_memo_.emplace(p, r);
+  time_memo_.emplace(i, r);
   return r;
+}
+
+mpq_class Certifier::edge_length2(std::uint32_t e) const {
+  const auto& ev = u_.complex().edge(e).v;
+  return squared_distance(u_.complex().vertex(ev[0]).exact, u_.complex().vertex(ev[1]).exact);
 }
 
 WindowBall Certifier::evaluate(std::uint32_t w, bool with_offset) {
@@ -204,23 +210,57 @@ bool Certifier::bound_fixed(std::uint32_t w, int j, std::uint32_t v) const {
 // ---- stage 3: exact (rational frames and crossings) -------------------------------------
 
 const ExactSum* Certifier::exact_sigma(std::uint32_t p) {
-  if (auto it = exact_sigma_memo_.find(p); it != exact_sigma_memo_.end()) return it->second.get();
   const PseudoSource& ps = s_.pseudo[p];
-  std::unique_ptr<ExactSum> r;
-  bool exact = true;
-  auto take = [&](std::optional<ExactSum> v) {
-    if (!v) exact = false;
-    else if (!r) r = std::make_unique<ExactSum>(std::move(*v));
-    else if (exact_sign(*v - *r) < 0) *r = std::move(*v);
-  };
-  if (ps.exact >= 0) take(s_.exact[ps.exact].sigma);
-  if (ps.origin == SourceOrigin::BorderPoint) take(ExactSum());
-  if (ps.origin == SourceOrigin::Vertex && ps.spawn != kNoIndex) {
-    take(exact_time(ps.spawn, Target{ps.vertex, nullptr}));
-    for (std::uint32_t w : ps.tied_spawns) take(exact_time(w, Target{ps.vertex, nullptr}));
+  if (ps.time == kNoIndex) {
+    static const ExactSum zero;
+    return &zero;
   }
-  if (!exact) r.reset();
-  return exact_sigma_memo_.emplace(p, std::move(r)).first->second.get();
+  return exact_expr(ps.time);
+}
+
+const ExactSum* Certifier::exact_expr(std::uint32_t i) {
+  if (auto it = exact_time_memo_.find(i); it != exact_time_memo_.end()) return it->second.get();
+  const TimeExpr& e = s_.times[i];
+  std::optional<ExactSum> r;
+  switch (e.kind) {
+    case TimeExpr::Kind::Exact: r = s_.exact_times[e.a]; break;
+    case TimeExpr::Kind::WindowAt: r = exact_time(e.a, Target{e.b, nullptr}); break;
+    case TimeExpr::Kind::Plus:
+      if (const ExactSum* x = exact_expr(e.a)) r = *x + ExactSum::sqrt_of(edge_length2(e.b));
+      break;
+    case TimeExpr::Kind::Min: {
+      const ExactSum* x = exact_expr(e.a);
+      const ExactSum* y = x ? exact_expr(e.b) : nullptr;
+      if (x && y) r = exact_sign(*x - *y) <= 0 ? *x : *y;
+      break;
+    }
+  }
+  if (r) r->simplify();
+  std::unique_ptr<ExactSum> owned = r ? std::make_unique<ExactSum>(std::move(*r)) : nullptr;
+  return exact_time_memo_.emplace(i, std::move(owned)).first->second.get();
+}
+
+int Certifier::compare_time_exprs(std::uint32_t a, std::uint32_t b) {
+  trim_memos();
+  const int s = certified_sign(s_.times[a].value - s_.times[b].value);
+  if (s != kUndecided) {
+    ++counts.filter;
+    return s;
+  }
+  if (a == b) {
+    ++counts.structural_equal;
+    return 0;
+  }
+  const ExactSum* x = exact_expr(a);
+  const ExactSum* y = x ? exact_expr(b) : nullptr;
+  if (x && y) {
+    const int e = exact_sign(*x - *y);
+    ++(e == 0 ? counts.exact_equal : counts.exact);
+    return e;
+  }
+  const int r = escalate(max_bits_, [&] { return ball_sign(expr_ball(a) - expr_ball(b)); });
+  if (r == kUndecided) ++counts.kept_undecided;
+  return r;
 }
 
 const Certifier::ExactWindow* Certifier::exact_window(std::uint32_t w) {

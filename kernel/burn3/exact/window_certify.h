@@ -82,6 +82,12 @@ class Certifier {
   // the line's length) is rational or denests.
   std::optional<ExactSum> exact_time(std::uint32_t w, const Target& x);
   const ExactSum* exact_sigma(std::uint32_t pseudo);
+  // Time expressions (windows.h): Arb and exact values, and the staged comparison
+  // (kUndecided when no stage decides).
+  Ball expr_ball(std::uint32_t expr);
+  const ExactSum* exact_expr(std::uint32_t expr);
+  int compare_time_exprs(std::uint32_t a, std::uint32_t b);
+  mpq_class edge_length2(std::uint32_t e) const;
 
   CertificationCounts counts;
 
@@ -101,9 +107,9 @@ class Certifier {
   const WindowStore& s_;
   long max_bits_, prune_bits_;
   long memo_bits_ = 0;
-  std::unordered_map<std::uint32_t, Ball> sigma_memo_;
+  std::unordered_map<std::uint32_t, Ball> time_memo_;  // per TimeExpr, at memo_bits_
   std::unordered_map<std::uint32_t, std::unique_ptr<ExactWindow>> exact_memo_;
-  std::unordered_map<std::uint32_t, std::unique_ptr<ExactSum>> exact_sigma_memo_;
+  std::unordered_map<std::uint32_t, std::unique_ptr<ExactSum>> exact_time_memo_;
 };
 
 }  // namespace grassfire

@@ -25,6 +25,7 @@ WindowPropagation::WindowPropagation(const Unfolding& u, const ExactBurningOptio
   best_hi_.assign(S, kInf);
   sector_source_.assign(S, kNoIndex);
   stats_.undecided_angles = sectors_.undecided_angles;
+  init_links();
 }
 
 std::uint32_t WindowPropagation::new_window(Window w) {
@@ -74,39 +75,47 @@ void WindowPropagation::add_border_window(std::uint32_t pseudo, std::uint32_t e)
   queue_.push({w.key, id});
 }
 
-std::uint32_t WindowPropagation::spawn_vertex_source(std::uint32_t v, std::uint32_t sector, std::uint32_t spawn,
-                                                     const Interval& sigma, const ExactSum* exact_sigma) {
+std::uint32_t WindowPropagation::new_time(TimeExpr e) {
+  s_.times.push_back(e);
+  return static_cast<std::uint32_t>(s_.times.size() - 1);
+}
+
+std::uint32_t WindowPropagation::exact_time(const ExactSum& x) {
+  s_.exact_times.push_back(x);
+  TimeExpr e;
+  e.a = static_cast<std::uint32_t>(s_.exact_times.size() - 1);
+  e.value = x.approx();
+  return new_time(e);
+}
+
+std::uint32_t WindowPropagation::window_time_at(std::uint32_t w, std::uint32_t v) {
+  TimeExpr e;
+  e.kind = TimeExpr::Kind::WindowAt;
+  e.a = w, e.b = v;
+  e.value = cert_.time_interval(w, Target{v, nullptr});
+  return new_time(e);
+}
+
+std::uint32_t WindowPropagation::spawn_vertex_source(std::uint32_t v, std::uint32_t sector, std::uint32_t time) {
   PseudoSource ps;
   ps.origin = SourceOrigin::Vertex;
   ps.vertex = v;
   ps.sector = sector;
-  ps.spawn = spawn;
-  ps.sigma = sigma;
-  if (exact_sigma) {
-    ExactSource es;
-    es.vertex = v;
-    es.sigma = *exact_sigma;
-    ps.exact = static_cast<std::int32_t>(s_.exact.size());
-    s_.exact.push_back(std::move(es));
-  }
+  ps.time = time;
+  ps.sigma = s_.times[time].value;
+  ExactSource es;
+  es.vertex = v;
+  ps.exact = static_cast<std::int32_t>(s_.exact.size());
+  s_.exact.push_back(std::move(es));
   const auto p = static_cast<std::uint32_t>(s_.pseudo.size());
   ps.first_root = static_cast<std::uint32_t>(s_.windows.size());
   s_.pseudo.push_back(ps);
   for (std::uint32_t t : mc_.sectors()[sector].triangles)
-    add_root(p, t, static_cast<std::uint8_t>(1u << corner_of(mc_.triangle(t), v)), sigma.lo);
+    add_root(p, t, static_cast<std::uint8_t>(1u << corner_of(mc_.triangle(t), v)), ps.sigma.lo);
   s_.pseudo[p].root_count = static_cast<std::uint32_t>(s_.windows.size()) - ps.first_root;
   sector_source_[sector] = p;
   ++stats_.pseudo_sources;
   return p;
-}
-
-// A vertex that burns at a given time (ignition, a point source on it): one vertex source
-// per sector, each the sector's best arrival.
-static std::vector<std::uint32_t> sectors_of(const MedialComplex& mc, std::uint32_t v) {
-  std::vector<std::uint32_t> r;
-  for (const LinkElement& el : mc.link_elements(v))
-    if (!el.is_pole) r.push_back(el.id);
-  return r;
 }
 
 void WindowPropagation::add_point_source(std::uint32_t t, const ExactPoint3& point, const mpq_class& start) {
@@ -123,25 +132,20 @@ void WindowPropagation::add_point_source(std::uint32_t t, const ExactPoint3& poi
     if (side[i] < 0) throw std::invalid_argument("point source: outside its triangle");
   }
   const int zeros = (side[0] == 0) + (side[1] == 0) + (side[2] == 0);
-  const ExactSum sigma = ExactSum::rational(start);
+  const std::uint32_t time = exact_time(ExactSum::rational(start));
   if (zeros == 2) {  // on a vertex
     const int i = side[0] != 0 ? 0 : side[1] != 0 ? 1 : 2;
-    const std::uint32_t v = tr.v[i];
-    for (std::uint32_t sec : sectors_of(mc_, v)) {
-      const std::uint32_t p = spawn_vertex_source(v, sec, kNoIndex, enclose(start), &sigma);
-      best_window_[sec] = s_.pseudo[p].first_root;
-      best_hi_[sec] = std::min(best_hi_[sec], enclose(start).hi);
-    }
+    burn_vertex_at(tr.v[i], time);
     return;
   }
   s_.given.push_back({t, point, start});
   PseudoSource ps;
   ps.origin = SourceOrigin::GivenPoint;
   ps.data = static_cast<std::uint32_t>(s_.given.size() - 1);
-  ps.sigma = enclose(start);
+  ps.time = time;
+  ps.sigma = s_.times[time].value;
   ExactSource es;
   es.point = point;
-  es.sigma = sigma;
   ps.exact = static_cast<std::int32_t>(s_.exact.size());
   s_.exact.push_back(std::move(es));
   const auto p = static_cast<std::uint32_t>(s_.pseudo.size());
@@ -176,8 +180,9 @@ void WindowPropagation::add_border_ignition() {
         ExactSource es;
         es.line = true;
         es.edge = e;
-        es.sigma = ExactSum::sqrt_of(r2);
-        es.sigma.simplify();
+        ExactSum r = ExactSum::sqrt_of(r2);
+        r.simplify();
+        ps.time = exact_time(r);
         ps.exact = static_cast<std::int32_t>(s_.exact.size());
         s_.exact.push_back(std::move(es));
       }
@@ -194,16 +199,8 @@ void WindowPropagation::add_border_ignition() {
     ++stats_.pseudo_sources;
     add_border_window(static_cast<std::uint32_t>(s_.pseudo.size() - 1), e);
   }
-  for (std::uint32_t v = 0; v < mc_.vertex_count(); ++v) {
-    const std::optional<ExactSum> f = exact_vertex_ignition(mc_, v);
-    if (!f) continue;
-    const Interval sigma = f->approx();
-    for (std::uint32_t sec : sectors_of(mc_, v)) {
-      const std::uint32_t p = spawn_vertex_source(v, sec, kNoIndex, sigma, &*f);
-      best_window_[sec] = s_.pseudo[p].first_root;
-      best_hi_[sec] = std::min(best_hi_[sec], sigma.hi);
-    }
-  }
+  for (std::uint32_t v = 0; v < mc_.vertex_count(); ++v)
+    if (const std::optional<ExactSum> f = exact_vertex_ignition(mc_, v)) burn_vertex_at(v, exact_time(*f));
 }
 
 // ---- the event loop -------------------------------------------------------------------------
@@ -213,7 +210,11 @@ void WindowPropagation::run() {
   while (!queue_.empty()) {
     const QueueEntry top = queue_.top();
     queue_.pop();
-    process(top.window);
+    switch (top.kind) {
+      case EventKind::Window: process(top.id); break;
+      case EventKind::SegmentArrival: process_segment_arrival(top.id); break;
+      case EventKind::VertexBurn: process_burn(top.id, top.key); break;
+    }
   }
   stats_.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
@@ -321,15 +322,23 @@ void WindowPropagation::vertex_arrival(std::uint32_t w, std::uint32_t v, std::ui
   if (best != kNoIndex) c = cert_.compare_times(w, at, best, at);
   if (c == 0 || c == 1) return;
   if (c == -1) best_window_[sector] = w;
+  if (is_link_vertex(v)) {
+    const ComplexTriangle& tr = mc_.triangle(s_.windows[w].triangle);
+    link_arrival(v, mc_.corner_element(s_.windows[w].triangle, corner_of(tr, v)), window_time_at(w, v));
+  }
   if (!sectors_.bends[sector]) return;
   if (c == kUndecided && sector_source_[sector] != kNoIndex) {
     // An unprovable tie with the sector's vertex source: when that source's offset
     // enclosure already holds the new time's lower end, its windows stay enclosures of
     // min(sigma, new time), so the source absorbs the arrival instead of a duplicate.
     PseudoSource& ps = s_.pseudo[sector_source_[sector]];
-    if (ps.sigma.lo <= tv.lo && (ps.spawn != kNoIndex || ps.exact >= 0)) {
-      if (ps.spawn == kNoIndex) ps.spawn = w;
-      else ps.tied_spawns.push_back(w);
+    if (ps.sigma.lo <= tv.lo) {
+      TimeExpr m;
+      m.kind = TimeExpr::Kind::Min;
+      m.a = ps.time;
+      m.b = window_time_at(w, v);
+      m.value = Interval(std::min(s_.times[m.a].value.lo, tv.lo), std::min(s_.times[m.a].value.hi, tv.hi));
+      s_.pseudo[sector_source_[sector]].time = new_time(m);
       ++stats_.ties_absorbed;
       return;
     }
@@ -338,7 +347,7 @@ void WindowPropagation::vertex_arrival(std::uint32_t w, std::uint32_t v, std::ui
     const PseudoSource& old = s_.pseudo[sector_source_[sector]];
     for (std::uint32_t r = old.first_root; r < old.first_root + old.root_count; ++r) kill_subtree(r);
   }
-  spawn_vertex_source(v, sector, w, tv, nullptr);  // its exact offset, when needed, comes from w
+  spawn_vertex_source(v, sector, window_time_at(w, v));
 }
 
 // ---- children -------------------------------------------------------------------------------

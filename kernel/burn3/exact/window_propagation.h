@@ -60,6 +60,8 @@ struct PropagationStats {
   std::uint64_t ties_absorbed = 0;    // unprovable ties folded into an existing vertex source
   std::uint64_t vertex_events = 0;    // a window reaching a vertex
   std::uint64_t wall_arrivals = 0;    // children stopped by a wall (singular edge)
+  std::uint64_t vertex_burns = 0;     // vertices burned by the link rule
+  std::uint64_t segment_arrivals = 0; // fire reaching a vertex along a segment
   std::uint64_t border_arrivals = 0;  // children that reached a border edge
   std::uint64_t undecided_angles = 0; // sectors taken to bend without a certified angle
   double seconds = 0.0;
@@ -79,12 +81,38 @@ class WindowPropagation {
   Certifier& certifier() { return cert_; }
   const PropagationStats& stats() const { return stats_; }
   const SectorGeometry& sectors() const { return sectors_; }
+  // The burn time (TimeExpr) of a vertex decided by the link rule (vertices with
+  // segments), kNoIndex otherwise or if it never burns.
+  std::uint32_t link_burn_time(std::uint32_t v) const {
+    return link_of_[v] == kNoIndex ? kNoIndex : links_[link_of_[v]].burned;
+  }
+  bool is_link_rule_vertex(std::uint32_t v) const { return link_of_[v] != kNoIndex; }
 
  private:
+  // Events: a window to propagate, fire arriving at a vertex along a segment, a vertex
+  // burning by the link rule. At equal keys arrivals come before burns (a burn's key is an
+  // upper bound of its time: every arrival below it must have been seen).
+  enum class EventKind : std::uint8_t { Window = 0, SegmentArrival = 1, VertexBurn = 2 };
   struct QueueEntry {
     double key;
-    std::uint32_t window;
-    bool operator>(const QueueEntry& o) const { return key > o.key || (key == o.key && window > o.window); }
+    std::uint32_t id;
+    EventKind kind = EventKind::Window;
+    bool operator>(const QueueEntry& o) const {
+      if (key != o.key) return key > o.key;
+      if (kind != o.kind) return kind > o.kind;
+      return id > o.id;
+    }
+  };
+  // The link rule's state at a vertex with segments (part 1) or poles (part 2): the first
+  // arrival per link element (TimeExpr, kNoIndex: none yet), the ignition (fixed), and the
+  // burn time once decided.
+  struct LinkState {
+    std::vector<std::uint32_t> arrival;
+    std::uint32_t fixed = kNoIndex;
+    std::uint32_t burned = kNoIndex;
+  };
+  struct SegmentArrival {
+    std::uint32_t vertex, element, time;
   };
   // A wedge bound while building a child: a vertex, its image in the parent's frame, and
   // the depth at which that image is exact.
@@ -103,14 +131,29 @@ class WindowPropagation {
                   const IPoint* third, std::uint32_t third_vertex);
   bool filtered(std::uint32_t w, std::uint32_t a, std::uint32_t b, const IPoint& x0, const IPoint& x1,
                 const IPoint* third, std::uint32_t third_vertex);
-  std::uint32_t spawn_vertex_source(std::uint32_t v, std::uint32_t sector, std::uint32_t spawn, const Interval& sigma,
-                                    const ExactSum* exact_sigma);
+  std::uint32_t spawn_vertex_source(std::uint32_t v, std::uint32_t sector, std::uint32_t time);
+  std::uint32_t new_time(TimeExpr e);
+  std::uint32_t exact_time(const ExactSum& x);
+  std::uint32_t window_time_at(std::uint32_t w, std::uint32_t v);
+  // Vertex v burns at the given time (ignition, a point source on it, the link rule):
+  // every sector (and segment) receives fire from it.
+  void burn_vertex_at(std::uint32_t v, std::uint32_t time);
   std::uint32_t new_window(Window w);
   void add_root(std::uint32_t pseudo, std::uint32_t t, std::uint8_t exits, double key);
   void add_border_window(std::uint32_t pseudo, std::uint32_t e);
   void kill_subtree(std::uint32_t w);
   void kill_child_through(std::uint32_t w, std::uint32_t edge);
   double vertex_bound(std::uint32_t t, std::uint32_t v) const;
+
+  void init_links();
+  bool is_link_vertex(std::uint32_t v) const { return link_of_[v] != kNoIndex; }
+  void link_arrival(std::uint32_t v, std::uint32_t element, std::uint32_t time);
+  std::uint32_t link_candidate(std::uint32_t v);
+  void schedule_burn(std::uint32_t v);
+  void process_burn(std::uint32_t v, double key);
+  void process_segment_arrival(std::uint32_t a);
+  void emit_from_vertex(std::uint32_t v, std::uint32_t time);
+  std::uint32_t min_time(std::uint32_t a, std::uint32_t b);
 
   const Unfolding& u_;
   const MedialComplex& mc_;
@@ -124,6 +167,9 @@ class WindowPropagation {
   std::vector<std::uint32_t> best_window_;   // per sector: the earliest known arrival at its apex
   std::vector<double> best_hi_;              // per sector: upper bound of a real path's time to the apex
   std::vector<std::uint32_t> sector_source_; // per sector: its current vertex pseudo-source
+  std::vector<std::uint32_t> link_of_;       // vertex -> index into links_, or kNoIndex
+  std::vector<LinkState> links_;
+  std::vector<SegmentArrival> segment_arrivals_;
 };
 
 }  // namespace grassfire

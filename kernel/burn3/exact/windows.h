@@ -38,18 +38,29 @@ enum class SourceOrigin : std::uint8_t {
   BorderPlane   // Linear with |slope| < 1: a plane wave (data = border edge)
 };
 
+// A time as an exact expression (the offsets of vertex sources, the burn times of
+// vertices): evaluated as an Interval (cached), in Arb, and exactly when its parts are.
+struct TimeExpr {
+  enum class Kind : std::uint8_t {
+    Exact,     // exact_times[a]: an ignition f(v), a source's start, 0
+    WindowAt,  // the time of window a at vertex b
+    Plus,      // time a plus the length of edge b (fire along a segment)
+    Min        // min(time a, time b): an unprovable tie kept as both
+  };
+  Kind kind = Kind::Exact;
+  std::uint32_t a = kNoIndex, b = kNoIndex;
+  Interval value;
+};
+
 struct PseudoSource {
   SourceOrigin origin = SourceOrigin::GivenPoint;
   std::uint32_t vertex = kNoIndex;  // Vertex
-  std::uint32_t spawn = kNoIndex;   // Vertex: the window whose value at `vertex` is sigma
-  // Vertex: more windows whose arrival at `vertex` no stage told apart from sigma's (an
-  // unprovable tie); sigma is the minimum of all of them (and of the ExactSource's).
-  std::vector<std::uint32_t> tied_spawns;
   std::uint32_t data = kNoIndex;    // GivenPoint: source index; Border*: edge id
   std::uint32_t sector = kNoIndex;  // Vertex: the sector it emits into
+  std::uint32_t time = kNoIndex;    // its offset as a TimeExpr (plane waves: their R at the edge)
   std::int32_t exact = -1;          // index of its ExactSource, or -1
   std::uint32_t first_root = kNoIndex, root_count = 0;  // its first windows, consecutive
-  Interval sigma;                   // time at the source (not used by plane waves)
+  Interval sigma;                   // the offset's enclosure given to its windows
 };
 
 // A pseudo-source with rational data (DESIGN.md 5a): a point (a vertex, or a rational 3D
@@ -57,14 +68,13 @@ struct PseudoSource {
 // sigma + distance to the line of a border edge, on its triangle's side). A window whose
 // chain crosses only rational unfoldings (Unfolding::rational_crossing; none at all inside
 // a planar sheet) is evaluated exactly from it: rational local coordinates, squared
-// distances rational, times in ExactSum. Vertex sources spawned by a window get their
-// exact offset lazily, from that window.
+// distances rational, times in ExactSum (the offset comes from the pseudo-source's
+// TimeExpr, exactly when its parts are exact).
 struct ExactSource {
   bool line = false;
   std::uint32_t vertex = kNoIndex;  // point: a vertex, else `point`
   ExactPoint3 point;
   std::uint32_t edge = kNoIndex;    // line: the border edge
-  ExactSum sigma;
 };
 
 // A caller's point source, located in a triangle (closed), igniting at `start`.
@@ -107,6 +117,8 @@ struct WindowStore {
   std::vector<ExactSource> exact;
   std::vector<Window> windows;
   std::vector<GivenSource> given;
+  std::vector<TimeExpr> times;
+  std::vector<ExactSum> exact_times;
 };
 
 // Per-stage counts of the certified decisions (DESIGN.md 3).
