@@ -71,11 +71,17 @@ void WindowPropagation::burn_vertex_at(std::uint32_t v, std::uint32_t time) {
     schedule_burn(v);
     return;
   }
-  for (std::uint32_t sec : sectors_of(mc_, v)) {
-    const std::uint32_t p = spawn_vertex_source(v, sec, time);
-    best_window_[sec] = s_.pseudo[p].first_root;
-    best_hi_[sec] = std::min(best_hi_[sec], s_.times[time].value.hi);
-  }
+  for (std::uint32_t sec : sectors_of(mc_, v)) claim_sector(sec, time);
+}
+
+// The sector's apex burns at `time` (given, or by the link rule): it becomes the sector's
+// best arrival, and its vertex source is made when that is final.
+void WindowPropagation::claim_sector(std::uint32_t sector, std::uint32_t time) {
+  best_hi_[sector] = std::min(best_hi_[sector], s_.times[time].value.hi);
+  std::uint32_t& best = best_time_[sector];
+  if (sector_source_[sector] != kNoIndex) return;  // already burning from its own front
+  best = min_time(best, time);
+  queue_.push({s_.times[best].value.hi, sector, EventKind::VertexSource});
 }
 
 void WindowPropagation::link_arrival(std::uint32_t v, std::uint32_t element, std::uint32_t time) {
@@ -131,9 +137,7 @@ void WindowPropagation::emit_from_vertex(std::uint32_t v, std::uint32_t time) {
     if (a != kNoIndex && cert_.compare_time_exprs(a, time) != 1) continue;  // it burned from there already
     const LinkElement& el = elements[j];
     if (!el.is_pole) {
-      const std::uint32_t p = spawn_vertex_source(v, el.id, time);
-      best_window_[el.id] = s_.pseudo[p].first_root;
-      best_hi_[el.id] = std::min(best_hi_[el.id], s_.times[time].value.hi);
+      claim_sector(el.id, time);
       continue;
     }
     if (mc_.edge(el.id).stratum != EdgeStratum::Dangling) continue;

@@ -70,7 +70,8 @@ DiscPoint Certifier::target_disc(std::uint32_t t, const Target& x) const {
 
 Interval Certifier::time_interval(std::uint32_t w, const Target& x) const {
   const Window& win = s_.windows[w];
-  return window_time(win, ipoint(target_disc(win.triangle, x)));
+  const Approx a = approx_time(win, target_disc(win.triangle, x));
+  return {round_down(a.v - a.e), round_up(a.v + a.e)};
 }
 
 XV Certifier::target_uv(std::uint32_t f, const Target& x) const {
@@ -240,14 +241,16 @@ const ExactSum* Certifier::exact_expr(std::uint32_t i) {
   return exact_time_memo_.emplace(i, std::move(owned)).first->second.get();
 }
 
-int Certifier::compare_time_exprs(std::uint32_t a, std::uint32_t b) {
+int Certifier::compare_time_exprs(std::uint32_t a, std::uint32_t b, bool prune_only) {
   trim_memos();
   const int s = certified_sign(s_.times[a].value - s_.times[b].value);
   if (s != kUndecided) {
     ++counts.filter;
     return s;
   }
-  if (a == b) {
+  const TimeExpr &ea = s_.times[a], &eb = s_.times[b];
+  if (a == b || (ea.kind == TimeExpr::Kind::WindowAt && eb.kind == TimeExpr::Kind::WindowAt && ea.b == eb.b &&
+                 same_expression(ea.a, eb.a, Target{ea.b, nullptr}))) {
     ++counts.structural_equal;
     return 0;
   }
@@ -258,7 +261,7 @@ int Certifier::compare_time_exprs(std::uint32_t a, std::uint32_t b) {
     ++(e == 0 ? counts.exact_equal : counts.exact);
     return e;
   }
-  const int r = escalate(max_bits_, [&] { return ball_sign(expr_ball(a) - expr_ball(b)); });
+  const int r = escalate(prune_only ? prune_bits_ : max_bits_, [&] { return ball_sign(expr_ball(a) - expr_ball(b)); });
   if (r == kUndecided) ++counts.kept_undecided;
   return r;
 }
@@ -401,7 +404,7 @@ void Certifier::trim_memos() {
 int Certifier::side(std::uint32_t w, int j, const Target& x) {
   trim_memos();
   const Window& win = s_.windows[w];
-  const int s = certified_sign(window_side(win, ipoint(win.image[j]), ipoint(target_disc(win.triangle, x))));
+  const int s = approx_side(win, win.image[j], target_disc(win.triangle, x)).sign();
   if (s != kUndecided) {
     ++counts.filter;
     return s;

@@ -86,7 +86,8 @@ class Certifier {
   // (kUndecided when no stage decides).
   Ball expr_ball(std::uint32_t expr);
   const ExactSum* exact_expr(std::uint32_t expr);
-  int compare_time_exprs(std::uint32_t a, std::uint32_t b);
+  // prune_only: the caller keeps everything when undecided (escalates to prune_bits only).
+  int compare_time_exprs(std::uint32_t a, std::uint32_t b, bool prune_only = false);
   mpq_class edge_length2(std::uint32_t e) const;
 
   CertificationCounts counts;

@@ -13,15 +13,13 @@ namespace grassfire {
 
 namespace {
 constexpr double kInf = std::numeric_limits<double>::infinity();
-
-Interval distance(const IPoint& a, const IPoint& b) { return sqrt(square(a.x - b.x) + square(a.y - b.y)); }
 }  // namespace
 
 WindowPropagation::WindowPropagation(const Unfolding& u, const ExactBurningOptions& o)
     : u_(u), mc_(u.complex()), o_(o), cert_(u, s_, o.max_bits), sectors_(sector_geometry(u)) {
   occupier_.assign(3 * mc_.triangle_count(), kNoIndex);
   const std::size_t S = mc_.sectors().size();
-  best_window_.assign(S, kNoIndex);
+  best_time_.assign(S, kNoIndex);
   best_hi_.assign(S, kInf);
   sector_source_.assign(S, kNoIndex);
   stats_.undecided_angles = sectors_.undecided_angles;
@@ -69,7 +67,7 @@ void WindowPropagation::add_border_window(std::uint32_t pseudo, std::uint32_t e)
   w.source = r.source;
   w.offset = r.offset;
   w.flags = r.plane ? Window::kPlane : 0;
-  w.key = window_lower_bound(w, ipoint(w.image[0]), ipoint(w.image[1]));
+  w.key = approx_lower_bound(w, w.image[0], w.image[1]);
   const std::uint32_t id = new_window(w);
   s_.windows[id].anchor = id;
   queue_.push({w.key, id});
@@ -213,6 +211,7 @@ void WindowPropagation::run() {
     switch (top.kind) {
       case EventKind::Window: process(top.id); break;
       case EventKind::SegmentArrival: process_segment_arrival(top.id); break;
+      case EventKind::VertexSource: process_vertex_source(top.id, top.key); break;
       case EventKind::VertexBurn: process_burn(top.id, top.key); break;
     }
   }
@@ -257,13 +256,13 @@ void WindowPropagation::process_entered(std::uint32_t w) {
   const std::uint32_t o = tr.v[k];
   // p: the entry edge's end on the clockwise side seen from S, (p, q, o) clockwise.
   const int ip = u_.orientation(t) > 0 ? (k + 2) % 3 : (k + 1) % 3, iq = ip == (k + 1) % 3 ? (k + 2) % 3 : (k + 1) % 3;
-  const IPoint P = ipoint(u_.corner(t, ip)), Q = ipoint(u_.corner(t, iq));
-  const IRayHit y0 = W.bound[0] == tr.v[ip] ? IRayHit{true, P} : window_ray_hit(W, ipoint(W.image[0]), P, Q);
-  const IRayHit y1 = W.bound[1] == tr.v[iq] ? IRayHit{true, Q} : window_ray_hit(W, ipoint(W.image[1]), P, Q);
+  const DiscPoint &P = u_.corner(t, ip), &Q = u_.corner(t, iq);
+  const RayHit y0 = W.bound[0] == tr.v[ip] ? RayHit{true, P} : approx_ray_hit(W, W.image[0], P, Q);
+  const RayHit y1 = W.bound[1] == tr.v[iq] ? RayHit{true, Q} : approx_ray_hit(W, W.image[1], P, Q);
   const Bound B0{W.bound[0], W.image[0], W.bound_depth[0]}, B1{W.bound[1], W.image[1], W.bound_depth[1]};
   const Bound O{o, u_.corner(t, k), W.depth};
-  const IPoint* third_q = y0.ok ? &y0.point : nullptr;  // end of the entry interval farthest from q
-  const IPoint* third_p = y1.ok ? &y1.point : nullptr;
+  const DiscPoint* third_q = y0.ok ? &y0.point : nullptr;  // end of the entry interval farthest from q
+  const DiscPoint* third_p = y1.ok ? &y1.point : nullptr;
   const int s0 = cert_.side(w, 0, Target{o, nullptr});
   if (s0 < 0) {  // o clockwise of the wedge: everything leaves through (o, q)
     make_child(w, ip, k, iq, B0, B1, third_p, tr.v[ip]);
@@ -312,42 +311,49 @@ std::pair<bool, bool> WindowPropagation::reach_opposite(std::uint32_t w, int k) 
   return {true, true};
 }
 
+// Window w reaches vertex v through `sector`. The sector's earliest arrival is kept as a
+// time expression (a Min of arrivals no stage orders); where paths bend at v its vertex
+// source is created when that time is final (an event keyed by its upper end: Dijkstra
+// finality), so each sector gets one source, not one per improvement.
 void WindowPropagation::vertex_arrival(std::uint32_t w, std::uint32_t v, std::uint32_t sector) {
   ++stats_.vertex_events;
-  const Target at{v, nullptr};
-  const Interval tv = cert_.time_interval(w, at);
+  const Interval tv = cert_.time_interval(w, Target{v, nullptr});
   best_hi_[sector] = std::min(best_hi_[sector], tv.hi);
-  const std::uint32_t best = best_window_[sector];
+  std::uint32_t& best = best_time_[sector];
+  if (best != kNoIndex && tv.lo > s_.times[best].value.hi) return;  // certainly later: the filter alone
+  const std::uint32_t e = window_time_at(w, v);
   int c = -1;
-  if (best != kNoIndex) c = cert_.compare_times(w, at, best, at);
+  if (best != kNoIndex) c = cert_.compare_time_exprs(e, best, !is_link_vertex(v));
   if (c == 0 || c == 1) return;
-  if (c == -1) best_window_[sector] = w;
   if (is_link_vertex(v)) {
     const ComplexTriangle& tr = mc_.triangle(s_.windows[w].triangle);
-    link_arrival(v, mc_.corner_element(s_.windows[w].triangle, corner_of(tr, v)), window_time_at(w, v));
+    link_arrival(v, mc_.corner_element(s_.windows[w].triangle, corner_of(tr, v)), e);
   }
-  if (!sectors_.bends[sector]) return;
-  if (c == kUndecided && sector_source_[sector] != kNoIndex) {
-    // An unprovable tie with the sector's vertex source: when that source's offset
-    // enclosure already holds the new time's lower end, its windows stay enclosures of
-    // min(sigma, new time), so the source absorbs the arrival instead of a duplicate.
+  if (sector_source_[sector] != kNoIndex) {
+    // After the sector's source was made (its time was final): only an unprovable tie can
+    // arrive; when the source's offset enclosure holds the new time's lower end its windows
+    // stay enclosures of the minimum, so the source absorbs it.
     PseudoSource& ps = s_.pseudo[sector_source_[sector]];
-    if (ps.sigma.lo <= tv.lo) {
-      TimeExpr m;
-      m.kind = TimeExpr::Kind::Min;
-      m.a = ps.time;
-      m.b = window_time_at(w, v);
-      m.value = Interval(std::min(s_.times[m.a].value.lo, tv.lo), std::min(s_.times[m.a].value.hi, tv.hi));
-      s_.pseudo[sector_source_[sector]].time = new_time(m);
+    if (c == kUndecided && ps.sigma.lo <= tv.lo) {
+      ps.time = min_time(ps.time, e);
       ++stats_.ties_absorbed;
       return;
     }
+    for (std::uint32_t r = ps.first_root; r < ps.first_root + ps.root_count; ++r) kill_subtree(r);
+    sector_source_[sector] = kNoIndex;
   }
-  if (c == -1 && sector_source_[sector] != kNoIndex) {
-    const PseudoSource& old = s_.pseudo[sector_source_[sector]];
-    for (std::uint32_t r = old.first_root; r < old.first_root + old.root_count; ++r) kill_subtree(r);
+  best = c == kUndecided ? min_time(best, e) : e;
+  if (sectors_.bends[sector]) queue_.push({s_.times[best].value.hi, sector, EventKind::VertexSource});
+}
+
+void WindowPropagation::process_vertex_source(std::uint32_t sector, double key) {
+  if (sector_source_[sector] != kNoIndex) return;
+  const std::uint32_t t = best_time_[sector];
+  if (s_.times[t].value.hi > key) {
+    queue_.push({s_.times[t].value.hi, sector, EventKind::VertexSource});
+    return;
   }
-  spawn_vertex_source(v, sector, window_time_at(w, v));
+  spawn_vertex_source(mc_.sectors()[sector].apex, sector, t);
 }
 
 // ---- children -------------------------------------------------------------------------------
@@ -356,21 +362,24 @@ double WindowPropagation::vertex_bound(std::uint32_t t, std::uint32_t v) const {
   return best_hi_[sectors_.corner_sector[3 * t + corner_of(mc_.triangle(t), v)]];
 }
 
-bool WindowPropagation::filtered(std::uint32_t w, std::uint32_t a, std::uint32_t b, const IPoint& x0,
-                                 const IPoint& x1, const IPoint* third, std::uint32_t third_vertex) {
+bool WindowPropagation::filtered(std::uint32_t w, std::uint32_t a, std::uint32_t b, const DiscPoint& x0,
+                                 const DiscPoint& x1, const DiscPoint* third, std::uint32_t third_vertex) {
   const Window& W = s_.windows[w];
   const std::uint32_t t = W.triangle;
-  auto beaten = [&](std::uint32_t v, const IPoint& x) {
+  auto beaten = [&](std::uint32_t v, const DiscPoint& p) {
     const double d = vertex_bound(t, v);
     if (d == kInf) return false;
-    const Interval via = Interval(d) + distance(ipoint(u_.vertex_image(t, v)), x);
-    return window_time(W, x).lo > via.hi;
+    const DiscPoint q = u_.vertex_image(t, v);
+    const double dx = p.x - q.x, dy = p.y - q.y, len = std::sqrt(dx * dx + dy * dy);
+    const double via = d + len + (p.r + q.r + 4 * kUnit * len + kUnit * (d + len)) * (1 + 8 * kUnit) + 0x1p-1000;
+    const Approx tw = approx_time(W, p);
+    return tw.v - tw.e > via;
   };
   return beaten(a, x1) || beaten(b, x0) || (third && beaten(third_vertex, *third));
 }
 
 void WindowPropagation::make_child(std::uint32_t w, int exit_slot, int icw, int iccw, const Bound& b0,
-                                   const Bound& b1, const IPoint* third, std::uint32_t third_vertex) {
+                                   const Bound& b1, const DiscPoint* third, std::uint32_t third_vertex) {
   const Window W = s_.windows[w];
   const std::uint32_t t = W.triangle;
   const ComplexTriangle& tr = mc_.triangle(t);
@@ -378,10 +387,10 @@ void WindowPropagation::make_child(std::uint32_t w, int exit_slot, int icw, int 
   // The child's interval [x0, x1] on the exit edge, from its clockwise end A to B; where a
   // ray may be parallel to the edge the edge's end stands in (a superset: still sound for
   // the filter, whose test weakens away from its vertex, and for the key).
-  const IPoint A = ipoint(u_.corner(t, icw)), B = ipoint(u_.corner(t, iccw));
-  const IRayHit h0 = b0.vertex == tr.v[icw] ? IRayHit{true, A} : window_ray_hit(W, ipoint(b0.image), A, B);
-  const IRayHit h1 = b1.vertex == tr.v[iccw] ? IRayHit{true, B} : window_ray_hit(W, ipoint(b1.image), A, B);
-  const IPoint x0 = h0.ok ? h0.point : A, x1 = h1.ok ? h1.point : B;
+  const DiscPoint &A = u_.corner(t, icw), &B = u_.corner(t, iccw);
+  const RayHit h0 = b0.vertex == tr.v[icw] ? RayHit{true, A} : approx_ray_hit(W, b0.image, A, B);
+  const RayHit h1 = b1.vertex == tr.v[iccw] ? RayHit{true, B} : approx_ray_hit(W, b1.image, A, B);
+  const DiscPoint x0 = h0.ok ? h0.point : A, x1 = h1.ok ? h1.point : B;
   if (o_.vertex_filter && filtered(w, tr.v[icw], tr.v[iccw], x0, x1, third, third_vertex)) {
     ++stats_.filtered;
     return;
@@ -398,7 +407,7 @@ void WindowPropagation::make_child(std::uint32_t w, int exit_slot, int icw, int 
   c.edge = E;
   c.bound = {b0.vertex, b1.vertex};
   c.bound_depth = {b0.depth, b1.depth};
-  c.key = std::max(W.key, window_lower_bound(W, x0, x1));
+  c.key = std::max(W.key, approx_lower_bound(W, x0, x1));
   c.flags = static_cast<std::uint8_t>(W.flags & Window::kPlane);
   c.anchor = W.anchor;
   if (ed.stratum == EdgeStratum::Singular) {  // a wall (part 1): the front stops here

@@ -92,7 +92,7 @@ class WindowPropagation {
   // Events: a window to propagate, fire arriving at a vertex along a segment, a vertex
   // burning by the link rule. At equal keys arrivals come before burns (a burn's key is an
   // upper bound of its time: every arrival below it must have been seen).
-  enum class EventKind : std::uint8_t { Window = 0, SegmentArrival = 1, VertexBurn = 2 };
+  enum class EventKind : std::uint8_t { Window = 0, SegmentArrival = 1, VertexSource = 2, VertexBurn = 3 };
   struct QueueEntry {
     double key;
     std::uint32_t id;
@@ -127,10 +127,11 @@ class WindowPropagation {
   void process_entered(std::uint32_t w);
   std::pair<bool, bool> reach_opposite(std::uint32_t w, int corner);
   void vertex_arrival(std::uint32_t w, std::uint32_t v, std::uint32_t sector);
+  void process_vertex_source(std::uint32_t sector, double key);
   void make_child(std::uint32_t w, int exit_slot, int icw, int iccw, const Bound& b0, const Bound& b1,
-                  const IPoint* third, std::uint32_t third_vertex);
-  bool filtered(std::uint32_t w, std::uint32_t a, std::uint32_t b, const IPoint& x0, const IPoint& x1,
-                const IPoint* third, std::uint32_t third_vertex);
+                  const DiscPoint* third, std::uint32_t third_vertex);
+  bool filtered(std::uint32_t w, std::uint32_t a, std::uint32_t b, const DiscPoint& x0, const DiscPoint& x1,
+                const DiscPoint* third, std::uint32_t third_vertex);
   std::uint32_t spawn_vertex_source(std::uint32_t v, std::uint32_t sector, std::uint32_t time);
   std::uint32_t new_time(TimeExpr e);
   std::uint32_t exact_time(const ExactSum& x);
@@ -153,6 +154,7 @@ class WindowPropagation {
   void process_burn(std::uint32_t v, double key);
   void process_segment_arrival(std::uint32_t a);
   void emit_from_vertex(std::uint32_t v, std::uint32_t time);
+  void claim_sector(std::uint32_t sector, std::uint32_t time);
   std::uint32_t min_time(std::uint32_t a, std::uint32_t b);
 
   const Unfolding& u_;
@@ -164,7 +166,7 @@ class WindowPropagation {
   PropagationStats stats_;
   std::priority_queue<QueueEntry, std::vector<QueueEntry>, std::greater<QueueEntry>> queue_;
   std::vector<std::uint32_t> occupier_;      // 3 t + corner
-  std::vector<std::uint32_t> best_window_;   // per sector: the earliest known arrival at its apex
+  std::vector<std::uint32_t> best_time_;     // per sector: the earliest known arrival at its apex (TimeExpr)
   std::vector<double> best_hi_;              // per sector: upper bound of a real path's time to the apex
   std::vector<std::uint32_t> sector_source_; // per sector: its current vertex pseudo-source
   std::vector<std::uint32_t> link_of_;       // vertex -> index into links_, or kNoIndex
