@@ -6,6 +6,7 @@
 #include <random>
 
 #include "burn3/burn3_reference.h"
+#include "burn3/exact/burn_outputs.h"
 #include "burn3/exact/exact_burning.h"
 #include "complex3/synthetic_complexes.h"
 #include "number/sqrt_field.h"
@@ -105,4 +106,62 @@ TEST_CASE("L-shaped sheet: fire bends around the reflex corner exactly", "[exact
       CHECK(exact_sign(*e - expected) == 0);
     }
   CHECK(bent > 10);
+}
+
+TEST_CASE("refined sampling, iso-lines, the front at t and the event log", "[exact3]") {
+  const MedialComplex mc = built(grid_sheet(4, 3, 2, {{3, 3}}));
+  const ExactPoint3 s{mpq_class(1, 2), mpq_class(1, 2), 0};
+  ExactBurning eb(mc);
+  std::uint32_t ts = kNoIndex;
+  for (std::uint32_t t = 0; t < mc.triangle_count() && ts == kNoIndex; ++t)
+    if (corner_of(mc.triangle(t), vertex_at(mc, s)) >= 0) ts = t;
+  eb.add_point_source(ts, s, 0);
+  eb.run();
+  const RefinedBurn r = refine(eb, 4);
+  CHECK(r.triangles.size() == 16 * mc.triangle_count());
+  // Grid points (multiples of 1/8, exact in doubles) that see s past the hole [3/2, 2]^2
+  // burn at |x - s|; the others at more.
+  int seen = 0, shadowed = 0;
+  for (std::size_t i = 0; i < r.points.size(); ++i) {
+    const double d = distance3(r.points[i], to_vec(s));
+    const ExactPoint3 x{r.points[i][0], r.points[i][1], 0};
+    if (segment_meets_open_box(s, x, mpq_class(3, 2), 2, mpq_class(3, 2), 2)) {
+      ++shadowed;
+      CHECK(r.bt[i].value + r.bt[i].error > d + 1e-9);
+    } else {
+      ++seen;
+      CHECK(std::abs(r.bt[i].value - d) <= r.bt[i].error + 1e-15);
+    }
+  }
+  CHECK(seen > 100);
+  CHECK(shadowed > 10);
+  // The iso-line at t = 1 (a circle arc): its vertices within the interpolation error of a
+  // grid of spacing 1/8 (h^2 / 2r).
+  const auto lines = iso_lines(r, {1.0});
+  REQUIRE(lines[0].size() > 10);
+  for (const Segment3& g : lines[0]) {
+    CHECK(std::abs(distance3(g.a, to_vec(s)) - 1) < 0.01);
+    CHECK(std::abs(distance3(g.b, to_vec(s)) - 1) < 0.01);
+  }
+  // The burned region at t = 1 (marching triangles on the refined values).
+  double area = 0;
+  for (const auto& poly : front_at(r, 1.0))
+    for (std::size_t k = 1; k + 1 < poly.size(); ++k) {
+      const Vec3d &a = poly[0], &b = poly[k], &c = poly[k + 1];
+      area += 0.5 * std::abs((b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]));
+    }
+  // Reference: the disc of radius 1 about s = (1/2, 1/2) clipped to x, y >= 0 (the hole is
+  // farther than 1 from s), by the midpoint rule on a 2000^2 grid over [-1/2, 3/2]^2.
+  double ref = 0;
+  for (int i = 0; i < 2000; ++i)
+    for (int j = 0; j < 2000; ++j) {
+      const double x = (i + 0.5) / 1000 - 0.5, y = (j + 0.5) / 1000 - 0.5;
+      if (x >= -0.5 && y >= -0.5 && x * x + y * y <= 1) ref += 1e-6;
+    }
+  CHECK(std::abs(area - ref) < 0.01);
+  // The event log: the vertex sources in the order of their exact times.
+  const auto log = event_log(eb);
+  CHECK(!log.empty());
+  for (std::size_t k = 1; k < log.size(); ++k)
+    CHECK(eb.propagation().store().times[log[k - 1].time].value.lo <= eb.propagation().store().times[log[k].time].value.hi);
 }

@@ -55,6 +55,7 @@ class ExactBurning {
   const Unfolding& unfolding() const { return *unfolding_; }
   const WindowPropagation& propagation() const { return *prop_; }
   const CertificationCounts& certification() const { return prop_->certifier().counts; }
+  Certifier& certifier() { return prop_->certifier(); }
   const QueryCounts& query_counts() const { return queries_; }
   // The live windows covering triangle t (roots and entered windows).
   std::vector<std::uint32_t> triangle_windows(std::uint32_t t) const;

@@ -69,14 +69,26 @@ int arb_fan_angle(const MedialComplex& mc, const Sector& s) {
 int interval_fan_angle(const Unfolding& u, const Sector& s) {
   const MedialComplex& mc = u.complex();
   const double limit = s.closed ? 2 * M_PI : M_PI;
-  double theta = 0.0;
-  Interval re(1.0), im(0.0);
-  const auto& o = u.vertex_interval(s.apex);
-  for (std::uint32_t t : s.triangles) {
+  auto corner = [&](std::uint32_t t, std::array<Interval, 3>* a, std::array<Interval, 3>* b) {
     const auto es = edges_at(mc.triangle(t), s.apex);
+    const auto& o = u.vertex_interval(s.apex);
     const auto& pa = u.vertex_interval(other_end(mc, es[0], s.apex));
     const auto& pb = u.vertex_interval(other_end(mc, es[1], s.apex));
-    const Interval a[3] = {pa[0] - o[0], pa[1] - o[1], pa[2] - o[2]}, b[3] = {pb[0] - o[0], pb[1] - o[1], pb[2] - o[2]};
+    for (int k = 0; k < 3; ++k) (*a)[k] = pa[k] - o[k], (*b)[k] = pb[k] - o[k];
+  };
+  double theta = 0.0;
+  for (std::uint32_t t : s.triangles) {
+    std::array<Interval, 3> a, b;
+    corner(t, &a, &b);
+    const double ax = a[0].mid(), ay = a[1].mid(), az = a[2].mid(), bx = b[0].mid(), by = b[1].mid(), bz = b[2].mid();
+    const double cx = ay * bz - az * by, cy = az * bx - ax * bz, cz = ax * by - ay * bx;
+    theta += std::atan2(std::sqrt(cx * cx + cy * cy + cz * cz), ax * bx + ay * by + az * bz);
+  }
+  if (std::fabs(theta - limit) > 1e-6) return theta > limit ? 1 : -1;
+  Interval re(1.0), im(0.0);
+  for (std::uint32_t t : s.triangles) {
+    std::array<Interval, 3> a, b;
+    corner(t, &a, &b);
     const Interval dot = a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
     const Interval cx = a[1] * b[2] - a[2] * b[1], cy = a[2] * b[0] - a[0] * b[2], cz = a[0] * b[1] - a[1] * b[0];
     const Interval cr = sqrt(square(cx) + square(cy) + square(cz));
@@ -85,9 +97,7 @@ int interval_fan_angle(const Unfolding& u, const Sector& s) {
     const Interval c = dot / n, sn = cr / n;
     const Interval r2 = re * c - im * sn, i2 = re * sn + im * c;
     re = r2, im = i2;
-    theta += std::atan2(cr.mid(), dot.mid());
   }
-  if (std::fabs(theta - limit) > 1e-6) return theta > limit ? 1 : -1;
   const int si = certified_sign(im);
   if (si != 1 && si != -1) return 0;
   // Theta in (limit - pi, limit + pi): above the limit iff sin(Theta) has the sign of

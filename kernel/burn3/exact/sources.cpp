@@ -153,7 +153,7 @@ RootBall root_ball(const Unfolding& u, const WindowStore& s, std::uint32_t p, st
     case SourceOrigin::BorderPoint:
     case SourceOrigin::BorderPlane: {
       const std::uint32_t e = ps.data;
-      const BallPoint ba = u.vertex_ball(t, mc.edge(e).v[0]), bb = u.vertex_ball(t, mc.edge(e).v[1]);
+      const BallVec2 ba = u.vertex_ball(t, mc.edge(e).v[0]), bb = u.vertex_ball(t, mc.edge(e).v[1]);
       const P2<Ball> a{ba.x, ba.y}, b{bb.x, bb.y};
       const int side = u.edge_side(e, t);
       if (ps.origin == SourceOrigin::BorderPoint) {

@@ -43,7 +43,7 @@ struct RootDisc {
   bool plane = false;
 };
 struct RootBall {
-  BallPoint source;
+  BallVec2 source;
   Ball offset;
   bool plane = false;
 };

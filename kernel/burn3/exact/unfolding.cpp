@@ -12,10 +12,10 @@
 
 namespace grassfire {
 
-BallPoint BallMotion::apply(const BallPoint& p) const {
+BallVec2 BallMotion::apply(const BallVec2& p) const {
   return {r00 * p.x + r01 * p.y + t0, r10 * p.x + r11 * p.y + t1};
 }
-BallPoint BallMotion::apply_vector(const BallPoint& p) const { return {r00 * p.x + r01 * p.y, r10 * p.x + r11 * p.y}; }
+BallVec2 BallMotion::apply_vector(const BallVec2& p) const { return {r00 * p.x + r01 * p.y, r10 * p.x + r11 * p.y}; }
 
 namespace {
 
@@ -228,21 +228,21 @@ std::array<Ball, 2> Unfolding::frame_scale_ball(std::uint32_t t) const {
   return {sqrt(ball_of(f.e1_norm2)), sqrt(ball_of(f.e2_norm2))};
 }
 
-BallPoint Unfolding::point_ball(std::uint32_t t, const ExactPoint3& p) const {
+BallVec2 Unfolding::point_ball(std::uint32_t t, const ExactPoint3& p) const {
   const PlanarFrame& f = planar_frame(triangle_frame_[t]);
   const ExactPoint3 d = p - f.origin;
   const auto s = frame_scale_ball(t);
   return {ball_of(dot(d, f.e1)) / s[0], ball_of(dot(d, f.e2)) / s[1]};
 }
 
-BallPoint Unfolding::vertex_ball(std::uint32_t t, std::uint32_t v) const {
+BallVec2 Unfolding::vertex_ball(std::uint32_t t, std::uint32_t v) const {
   const std::uint32_t f = triangle_frame_[t];
   auto& cache = ball_vertices_[BallPrecision::bits()];
   const std::uint64_t key = (static_cast<std::uint64_t>(f) << 32) | v;
   if (auto it = cache.find(key); it != cache.end()) return it->second;
   const auto& uv = vertex_uv(f, v);
   const auto s = frame_scale_ball(t);
-  return cache.emplace(key, BallPoint{ball_of(uv[0]) * s[0], ball_of(uv[1]) * s[1]}).first->second;
+  return cache.emplace(key, BallVec2{ball_of(uv[0]) * s[0], ball_of(uv[1]) * s[1]}).first->second;
 }
 
 BallMotion Unfolding::crossing_ball(std::uint32_t e, std::uint32_t t, std::uint32_t t2) const {
@@ -251,8 +251,8 @@ BallMotion Unfolding::crossing_ball(std::uint32_t e, std::uint32_t t, std::uint3
   const std::uint64_t key = (static_cast<std::uint64_t>(t) << 32) | t2;
   if (auto it = cache.find(key); it != cache.end()) return it->second;
   const auto& ev = mc_.edge(e).v;
-  const BallPoint A = vertex_ball(t, ev[0]), B = vertex_ball(t, ev[1]);
-  const BallPoint A2 = vertex_ball(t2, ev[0]), B2 = vertex_ball(t2, ev[1]);
+  const BallVec2 A = vertex_ball(t, ev[0]), B = vertex_ball(t, ev[1]);
+  const BallVec2 A2 = vertex_ball(t2, ev[0]), B2 = vertex_ball(t2, ev[1]);
   const bool proper = edge_side(e, t) == -edge_side(e, t2);
   const auto m = motion_from_edges<Ball>(A.x, A.y, B.x, B.y, A2.x, A2.y, B2.x, B2.y, proper);
   return cache.emplace(key, BallMotion{m[0], m[1], m[2], m[3], m[4], m[5]}).first->second;

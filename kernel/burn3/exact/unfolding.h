@@ -41,14 +41,14 @@
 
 namespace grassfire {
 
-struct BallPoint {
+struct BallVec2 {
   Ball x, y;
 };
 
 struct BallMotion {
   Ball r00, r01, r10, r11, t0, t1;
-  BallPoint apply(const BallPoint& p) const;
-  BallPoint apply_vector(const BallPoint& p) const;
+  BallVec2 apply(const BallVec2& p) const;
+  BallVec2 apply_vector(const BallVec2& p) const;
 };
 
 class Unfolding {
@@ -73,8 +73,8 @@ class Unfolding {
   bool same_frame(std::uint32_t t, std::uint32_t t2) const { return triangle_frame_[t] == triangle_frame_[t2]; }
 
   // Arb versions at the current BallPrecision, from the exact data.
-  BallPoint vertex_ball(std::uint32_t t, std::uint32_t v) const;
-  BallPoint point_ball(std::uint32_t t, const ExactPoint3& p) const;  // p in t's plane
+  BallVec2 vertex_ball(std::uint32_t t, std::uint32_t v) const;
+  BallVec2 point_ball(std::uint32_t t, const ExactPoint3& p) const;  // p in t's plane
   BallMotion crossing_ball(std::uint32_t e, std::uint32_t t, std::uint32_t t2) const;
   // 1 / sqrt(g1), 1 / sqrt(g2) of t's frame as balls: frame coordinates = local * sqrt(g).
   std::array<Ball, 2> frame_scale_ball(std::uint32_t t) const;
@@ -135,7 +135,7 @@ class Unfolding {
   // Arb data per precision (bits -> key -> value): crossings by (t, t2), vertex images by
   // (frame, vertex).
   mutable std::unordered_map<long, std::unordered_map<std::uint64_t, BallMotion>> ball_crossings_;
-  mutable std::unordered_map<long, std::unordered_map<std::uint64_t, BallPoint>> ball_vertices_;
+  mutable std::unordered_map<long, std::unordered_map<std::uint64_t, BallVec2>> ball_vertices_;
 };
 
 }  // namespace grassfire

@@ -127,6 +127,7 @@ void WindowPropagation::process_burn(std::uint32_t v, double key) {
   }
   links_[link_of_[v]].burned = t;
   ++stats_.vertex_burns;
+  events_.push_back({SweepEvent::Kind::VertexBurn, v, t});
   emit_from_vertex(v, t);
 }
 

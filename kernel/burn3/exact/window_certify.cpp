@@ -54,8 +54,8 @@ XV cross_over(const Unfolding::ExactCrossing& c, const ExactSum& k, const XV& x,
   return r;
 }
 
-Ball ball_cross(const BallPoint& a, const BallPoint& b) { return a.x * b.y - a.y * b.x; }
-BallPoint ball_sub(const BallPoint& a, const BallPoint& b) { return {a.x - b.x, a.y - b.y}; }
+Ball ball_cross(const BallVec2& a, const BallVec2& b) { return a.x * b.y - a.y * b.x; }
+BallVec2 ball_sub(const BallVec2& a, const BallVec2& b) { return {a.x - b.x, a.y - b.y}; }
 
 int ball_sign(const Ball& b) {
   const int s = b.sign();
@@ -150,9 +150,9 @@ WindowBall Certifier::evaluate(std::uint32_t w, bool with_offset) {
 Ball Certifier::time_ball(std::uint32_t w, const Target& x) {
   const WindowBall b = evaluate(w, true);
   const std::uint32_t t = s_.windows[w].triangle;
-  const BallPoint p = x.point ? u_.point_ball(t, *x.point) : u_.vertex_ball(t, x.vertex);
+  const BallVec2 p = x.point ? u_.point_ball(t, *x.point) : u_.vertex_ball(t, x.vertex);
   if (b.plane) return b.offset + b.source.x * p.x + b.source.y * p.y;
-  const BallPoint d = ball_sub(p, b.source);
+  const BallVec2 d = ball_sub(p, b.source);
   return b.offset + sqrt(d.x * d.x + d.y * d.y);
 }
 
@@ -421,7 +421,7 @@ int Certifier::side(std::uint32_t w, int j, const Target& x) {
   const int a = escalate(max_bits_, [&] {
     const WindowBall b = evaluate(w, false);
     const std::uint32_t t = win.triangle;
-    const BallPoint p = x.point ? u_.point_ball(t, *x.point) : u_.vertex_ball(t, x.vertex);
+    const BallVec2 p = x.point ? u_.point_ball(t, *x.point) : u_.vertex_ball(t, x.vertex);
     if (b.plane) return ball_sign(ball_cross(b.source, ball_sub(p, b.image[j])));
     return ball_sign(ball_cross(ball_sub(b.image[j], b.source), ball_sub(p, b.source)));
   });
@@ -478,9 +478,9 @@ int Certifier::compare_directions(std::uint32_t w1, std::uint32_t w2, std::uint3
   }
   const int r = escalate(prune_bits_, [&] {
     const WindowBall ba = evaluate(w1, false), bb = evaluate(w2, false);
-    const BallPoint p = u_.vertex_ball(a.triangle, v);
-    const BallPoint da = ba.plane ? ba.source : ball_sub(p, ba.source);
-    const BallPoint db = bb.plane ? bb.source : ball_sub(p, bb.source);
+    const BallVec2 p = u_.vertex_ball(a.triangle, v);
+    const BallVec2 da = ba.plane ? ba.source : ball_sub(p, ba.source);
+    const BallVec2 db = bb.plane ? bb.source : ball_sub(p, bb.source);
     return ball_sign(ball_cross(da, db));
   });
   if (r == kUndecided) ++counts.kept_undecided;

@@ -42,9 +42,9 @@ struct Target {
 };
 
 struct WindowBall {
-  BallPoint source;  // S or u
+  BallVec2 source;  // S or u
   Ball offset;
-  std::array<BallPoint, 2> image;
+  std::array<BallVec2, 2> image;
   bool plane = false;
 };
 

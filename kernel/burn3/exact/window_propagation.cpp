@@ -24,6 +24,7 @@ WindowPropagation::WindowPropagation(const Unfolding& u, const ExactBurningOptio
   sector_source_.assign(S, kNoIndex);
   stats_.undecided_angles = sectors_.undecided_angles;
   init_links();
+  s_.windows.reserve(16 * mc_.triangle_count() + 64);
 }
 
 std::uint32_t WindowPropagation::new_window(Window w) {
@@ -113,6 +114,7 @@ std::uint32_t WindowPropagation::spawn_vertex_source(std::uint32_t v, std::uint3
   s_.pseudo[p].root_count = static_cast<std::uint32_t>(s_.windows.size()) - ps.first_root;
   sector_source_[sector] = p;
   ++stats_.pseudo_sources;
+  events_.push_back({SweepEvent::Kind::VertexSource, sector, time});
   return p;
 }
 
@@ -257,8 +259,14 @@ void WindowPropagation::process_entered(std::uint32_t w) {
   // p: the entry edge's end on the clockwise side seen from S, (p, q, o) clockwise.
   const int ip = u_.orientation(t) > 0 ? (k + 2) % 3 : (k + 1) % 3, iq = ip == (k + 1) % 3 ? (k + 2) % 3 : (k + 1) % 3;
   const DiscPoint &P = u_.corner(t, ip), &Q = u_.corner(t, iq);
-  const RayHit y0 = W.bound[0] == tr.v[ip] ? RayHit{true, P} : approx_ray_hit(W, W.image[0], P, Q);
-  const RayHit y1 = W.bound[1] == tr.v[iq] ? RayHit{true, Q} : approx_ray_hit(W, W.image[1], P, Q);
+  // The ends of the entry interval, for the vertex filter's third-vertex test, only where
+  // that vertex has a time (else the test cannot prune).
+  auto entry_end = [&](int j, std::uint32_t far_from) {
+    if (!o_.vertex_filter || vertex_bound(t, far_from) == kInf) return RayHit{};
+    if (W.bound[j] == tr.v[j == 0 ? ip : iq]) return RayHit{true, j == 0 ? P : Q};
+    return approx_ray_hit(W, W.image[j], P, Q);
+  };
+  const RayHit y0 = entry_end(0, tr.v[iq]), y1 = entry_end(1, tr.v[ip]);
   const Bound B0{W.bound[0], W.image[0], W.bound_depth[0]}, B1{W.bound[1], W.image[1], W.bound_depth[1]};
   const Bound O{o, u_.corner(t, k), W.depth};
   const DiscPoint* third_q = y0.ok ? &y0.point : nullptr;  // end of the entry interval farthest from q

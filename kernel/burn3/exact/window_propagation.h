@@ -80,6 +80,7 @@ class WindowPropagation {
   const WindowStore& store() const { return s_; }
   Certifier& certifier() { return cert_; }
   const PropagationStats& stats() const { return stats_; }
+  const std::vector<SweepEvent>& events() const { return events_; }
   const SectorGeometry& sectors() const { return sectors_; }
   // The burn time (TimeExpr) of a vertex decided by the link rule (vertices with
   // segments), kNoIndex otherwise or if it never burns.
@@ -172,6 +173,7 @@ class WindowPropagation {
   std::vector<std::uint32_t> link_of_;       // vertex -> index into links_, or kNoIndex
   std::vector<LinkState> links_;
   std::vector<SegmentArrival> segment_arrivals_;
+  std::vector<SweepEvent> events_;
 };
 
 }  // namespace grassfire

@@ -121,6 +121,15 @@ struct WindowStore {
   std::vector<ExactSum> exact_times;
 };
 
+// An event of the sweep: a vertex source made (fire restarts at a vertex, through one
+// sector) or a vertex burned by the link rule; its time as a TimeExpr.
+struct SweepEvent {
+  enum class Kind : std::uint8_t { VertexSource, VertexBurn };
+  Kind kind = Kind::VertexSource;
+  std::uint32_t id = 0;  // sector (VertexSource), vertex (VertexBurn)
+  std::uint32_t time = 0;
+};
+
 // Per-stage counts of the certified decisions (DESIGN.md 3).
 struct CertificationCounts {
   std::uint64_t filter = 0;         // decided by the double (disc / interval) filter
