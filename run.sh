@@ -33,7 +33,7 @@ build() {
 main_job() {
   local out=paper-figures/out
   mkdir -p "$out"
-  "$BUILD_DIR"/proofs-checks/proof_checks --markdown "$out/proof-checks.md" --html "$out/proof-checks.html" \
+  "$BUILD_DIR"/proofs-checks/proof_checks --mutants --markdown "$out/proof-checks.md" --html "$out/proof-checks.html" \
     | tee "$out/proof-checks.txt"
   local checks=${PIPESTATUS[0]}
   "$BUILD_DIR"/paper-figures/paper_figures --out "$out"

@@ -12,6 +12,7 @@
 #include <fstream>
 #include <iostream>
 #include <sstream>
+#include <stdexcept>
 #include <string>
 
 #include "burn3/burn3_reference.h"
@@ -122,6 +123,10 @@ int main(int argc, char** argv) {
     const double h = 0.5 / std::pow(2.0, k);
     const DiscreteBurning d = burn_discrete(mc, {h});
     const ErrorSummary e = summarize_error(mc, d, board_fin_burning_time, inside);
+    if (e.points == 0 || e.points != e.considered)  // every point of the region compared, none one-sided
+      throw std::logic_error("study_board_fin_convergence: compared " + std::to_string(e.points) + " of " +
+                             std::to_string(e.considered) + " points (" + std::to_string(e.one_sided_infinite) +
+                             " infinite on one side only)");
     const auto along = arrivals_along_curve(mc, d, c, n_chain, [&](std::uint32_t t) { return side_of(mc, t); });
     const std::vector<double> kinks = kinks_along_curve(along, kBack, kFin);
     Row r;

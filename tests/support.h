@@ -4,6 +4,7 @@
 #include <gmpxx.h>
 
 #include <cstdint>
+#include <exception>
 #include <string>
 #include <tuple>
 #include <vector>
@@ -35,8 +36,21 @@ struct CliRun {
 };
 CliRun run_cli(const std::string& args);
 
-// A path in the temporary folder that no other test process uses at the same time
-// (CTest runs test cases in parallel): <tmp>/<pid>_<name>.
+// The message of the exception f() throws, or "no error".
+template <class F>
+std::string error_of(F f) {
+  try {
+    f();
+  } catch (const std::exception& e) {
+    return e.what();
+  }
+  return "no error";
+}
+
+// A path in this process's own temporary folder, which no other test process uses (CTest
+// runs test cases in parallel): <tmp>/grassfire_tests_<pid>/<name>, the folder created.
+// Tests write nowhere else: not into the source tree, the working directory or a fixed
+// temporary name.
 std::string temp_path(const std::string& name);
 
 }  // namespace grassfire::testing

@@ -95,7 +95,7 @@ TEST_CASE("tripod mesh: polar balls inside, axis with the union's topology", "[b
 
 TEST_CASE("medial3d: outputs for good input, errors and no output for bad input", "[builders3]") {
   using testing::run_cli;
-  const std::string out = std::string(GF_TEST_DATA) + "/builders3/out_medial3d";
+  const std::string out = testing::temp_path("gf_medial3d_out");
   std::remove((out + ".ma").c_str());
   std::remove((out + ".json").c_str());
   const auto ok = run_cli("medial3d " + std::string(GF_PROJECT_DATA) + "/balls/caffeine.cin --ma " + out + ".ma --json " + out + ".json");

@@ -12,24 +12,16 @@
 #include "io/complex_text.h"
 #include "io/mesh_io.h"
 #include "number/exact_sum.h"
+#include "support.h"
 
 using namespace grassfire;
+using grassfire::testing::error_of;
 
 namespace {
 
 std::string data(const std::string& name) { return std::string(GF_TEST_DATA) + "/3d/" + name; }
 
-std::string temp_path(const std::string& name) { return "/tmp/grassfire_complex3_" + name; }
-
-template <class F>
-std::string error_of(F f) {
-  try {
-    f();
-  } catch (const std::exception& e) {
-    return e.what();
-  }
-  return "no error";
-}
+std::string temp_path(const std::string& name) { return grassfire::testing::temp_path("grassfire_complex3_" + name); }
 
 // Each file must be rejected by `read` with a message containing the expected text.
 template <class Read>

@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cmath>
 #include <queue>
+#include <stdexcept>
 
 #include "burn3/steiner_graph.h"
 
@@ -25,7 +26,8 @@ struct Arrival {
 
 class Burner {
  public:
-  Burner(const SteinerGraph& g, DiscreteBurning& out) : g_(g), mc_(g.complex()), out_(out), nv_(g.vertex_count()) {}
+  Burner(const SteinerGraph& g, DiscreteBurning& out, const BurnRuleOverride* rule_override)
+      : g_(g), mc_(g.complex()), out_(out), nv_(g.vertex_count()), override_(rule_override) {}
 
   void layout() {
     out_.spacing = g_.spacing();
@@ -38,14 +40,15 @@ class Burner {
     done_.assign(g_.slot_total(), 0);
   }
 
-  void run() {
+  void run(const DiscreteBurningOptions& options) {
+    for (const PointSource& source : options.sources) ignite(source);
     for (std::uint32_t v = 0; v < nv_; ++v)
-      if (std::isfinite(mc_.ignition_at_vertex(v))) heap_.push({mc_.ignition_at_vertex(v), v, kIgnite});
+      if (std::isfinite(mc_.ignition_at_vertex(v))) heap_.push({ignition(mc_.ignition_at_vertex(v)), v, kIgnite});
     for (std::uint32_t e = 0; e < mc_.edge_count(); ++e) {
       if (mc_.edge(e).stratum != EdgeStratum::Border) continue;
       for (std::uint32_t i = 1; i <= g_.steiner_count(e); ++i) {
         const double f = mc_.ignition_on_edge(e, g_.parameter(e, i));
-        if (std::isfinite(f)) heap_.push({f, g_.steiner_node(e, i), kIgnite});
+        if (std::isfinite(f)) heap_.push({ignition(f), g_.steiner_node(e, i), kIgnite});
       }
     }
     // Flat event loop: pop the earliest arrival, drop stale ones, record it, burn when the
@@ -54,6 +57,7 @@ class Burner {
       const Arrival a = heap_.top();
       heap_.pop();
       ++out_.stats.pops;
+      if (options.progress && (out_.stats.pops & 0xFFFF) == 0) options.progress(burned_, g_.node_count());
       if (std::isfinite(bt_[a.node])) continue;
       if (a.slot == kIgnite) {
         burn(a.node, a.time);
@@ -78,43 +82,96 @@ class Burner {
  private:
   std::uint64_t slot(std::uint32_t node, std::uint32_t local) const { return g_.slot(node, local); }
 
+  double ignition(double f) const { return override_ ? override_->ignition(f) : f; }
+
   bool condition(std::uint32_t node) const {
     if (node < nv_) {
       const std::uint64_t first = out_.vertex_slot[node];
       std::vector<bool> arrived(out_.vertex_slot[node + 1] - first);
       for (std::size_t j = 0; j < arrived.size(); ++j) arrived[j] = done_[first + j] != 0;
-      return mc_.link_burns(node, arrived);
+      const bool rule = mc_.link_burns(node, arrived);
+      return override_ ? override_->burns(vertex_link_arrivals(mc_, node, arrived, rule)) : rule;
     }
     const std::size_t k = mc_.edge_triangles(g_.edge_of(node)).size();
     const std::uint64_t first = slot(node, 0);
     std::size_t arcs = 0;
     for (std::size_t j = 0; j < k; ++j) arcs += done_[first + 2 + j];
-    return MedialComplex::edge_link_burns(k, done_[first], done_[first + 1], arcs);
+    const bool rule = MedialComplex::edge_link_burns(k, done_[first], done_[first + 1], arcs);
+    return override_ ? override_->burns(edge_link_arrivals(k, done_[first], done_[first + 1], arcs, rule)) : rule;
   }
 
   void burn(std::uint32_t node, double time) {
     bt_[node] = time;
-    g_.for_each_move(node, [&](std::uint32_t y, std::uint32_t local, double length) {
-      if (std::isfinite(bt_[y])) return;
-      const std::uint64_t s = slot(y, local);
-      const double t = time + length;
-      if (!(t < out_.arrival_time[s])) return;
-      out_.arrival_time[s] = t;
-      heap_.push({t, y, local});
-      ++out_.stats.pushes;
-    });
+    ++burned_;
+    g_.for_each_move(node, [&](std::uint32_t y, std::uint32_t local, double length) { arrive(y, local, time + length); });
+  }
+
+  void arrive(std::uint32_t y, std::uint32_t local, double t) {
+    if (std::isfinite(bt_[y])) return;
+    const std::uint64_t s = slot(y, local);
+    if (!(t < out_.arrival_time[s])) return;
+    out_.arrival_time[s] = t;
+    heap_.push({t, y, local});
+    ++out_.stats.pushes;
+  }
+
+  // A point source: its graph point ignites, or its straight moves carry fire to the graph
+  // points of its closed triangles (see DiscreteBurningOptions::sources).
+  void ignite(const PointSource& source) {
+    const double t0 = source.t0.get_d();
+    const ComplexPoint& x = source.location;
+    auto move = [&](std::uint32_t y, std::uint32_t local, double length) { arrive(y, local, t0 + length); };
+    if (x.kind == ComplexPoint::Kind::Vertex) {
+      heap_.push({t0, x.id, kIgnite});
+    } else if (x.kind == ComplexPoint::Kind::Triangle) {
+      g_.for_each_move_from_triangle_point(x.approx(), x.id, move);
+    } else {
+      const mpq_class scaled = x.parameter * (g_.steiner_count(x.id) + 1);
+      const mpz_class lower = scaled.get_num() / scaled.get_den();  // floor: scaled > 0
+      const auto i = static_cast<std::uint32_t>(lower.get_ui());
+      if (scaled == lower)
+        heap_.push({t0, g_.steiner_node(x.id, i), kIgnite});
+      else
+        g_.for_each_move_from_edge_point(x.approx(), x.id, i, move);
+    }
   }
 
   const SteinerGraph& g_;
   const MedialComplex& mc_;
   DiscreteBurning& out_;
   const std::uint32_t nv_;
+  const BurnRuleOverride* override_;
   std::vector<double> bt_;
+  std::uint64_t burned_ = 0;
   std::vector<std::uint8_t> done_;
   std::priority_queue<Arrival, std::vector<Arrival>, std::greater<Arrival>> heap_;
 };
 
 }  // namespace
+
+LinkArrivals vertex_link_arrivals(const MedialComplex& mc, std::uint32_t v, const std::vector<bool>& arrived, bool rule) {
+  LinkArrivals a;
+  const std::vector<LinkElement>& elements = mc.link_elements(v);
+  for (std::size_t j = 0; j < elements.size(); ++j) {
+    (elements[j].is_pole ? a.poles : a.sectors)++;
+    if (arrived[j]) (elements[j].is_pole ? a.poles_arrived : a.sectors_arrived)++;
+  }
+  const VertexKind kind = mc.vertex(v).kind;
+  a.junction = kind == VertexKind::SingularCurve || kind == VertexKind::SingularPoint;
+  a.rule = rule;
+  return a;
+}
+
+LinkArrivals edge_link_arrivals(std::size_t triangles, bool pole0, bool pole1, std::size_t arcs, bool rule) {
+  LinkArrivals a;
+  a.sectors = triangles;
+  a.sectors_arrived = arcs;
+  a.poles = 2;
+  a.poles_arrived = std::size_t{pole0} + std::size_t{pole1};
+  a.junction = triangles >= 3;
+  a.rule = rule;
+  return a;
+}
 
 Vec3d DiscreteBurning::point_on_edge(const MedialComplex& mc, std::uint32_t e, double s) {
   const Vec3d& a = mc.vertex(mc.edge(e).v[0]).approx;
@@ -143,9 +200,12 @@ DiscreteBurning burn_discrete(const MedialComplex& mc, const DiscreteBurningOpti
   const auto start = std::chrono::steady_clock::now();
   DiscreteBurning out;
   const SteinerGraph graph(mc, options.spacing, options.max_points);
-  Burner burner(graph, out);
+  Burner burner(graph, out, options.rule_override);
   burner.layout();
-  burner.run();
+  for (const PointSource& s : options.sources)
+    if (sgn(s.location.snap_squared) != 0)
+      throw std::invalid_argument(mc.source() + ": a point source does not lie on the complex");
+  burner.run(options);
   burner.finish();
   out.stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return out;

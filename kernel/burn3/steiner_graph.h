@@ -66,10 +66,27 @@ class SteinerGraph {
   // Calls f(neighbour, slot at the neighbour, length) for every move from `node`.
   template <class F>
   void for_each_move(std::uint32_t node, F&& f) const;
+  // The same moves from a point p that is not a graph point (a point source): p inside
+  // triangle t reaches every graph point on t's boundary through t; p inside edge e, at
+  // parameter s strictly between the graph points lower and lower + 1 of e (0 and
+  // steiner_count(e) + 1 are its ends), reaches those two along e, and through each
+  // triangle of e the graph points on its two other edges and its third vertex.
+  template <class F>
+  void for_each_move_from_triangle_point(const Vec3d& p, std::uint32_t t, F&& f) const;
+  template <class F>
+  void for_each_move_from_edge_point(const Vec3d& p, std::uint32_t e, std::uint32_t lower, F&& f) const;
+  // The graph point of edge e at index i (0 and steiner_count(e) + 1: its end vertices).
+  std::uint32_t edge_point(std::uint32_t e, std::uint32_t i) const {
+    if (i == 0) return mc_.edge(e).v[0];
+    if (i == steiner_count(e) + 1) return mc_.edge(e).v[1];
+    return steiner_node(e, i);
+  }
 
  private:
   template <class F>
   void into_edge(const Vec3d& p, std::uint32_t e, std::uint32_t slot, F& f) const;
+  template <class F>
+  void across_triangle(const Vec3d& p, std::uint32_t t, int opposite_corner, F& f) const;
   static double distance(const Vec3d& a, const Vec3d& b) {
     return std::sqrt((a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]) + (a[2] - b[2]) * (a[2] - b[2]));
   }
@@ -129,9 +146,38 @@ void SteinerGraph::for_each_move(std::uint32_t node, F&& f) const {
     f(mc_.edge(e).v[1], mc_.edge_end_element(e, 1), step);
   for (std::uint32_t t : mc_.edge_triangles(e)) {
     const ComplexTriangle& tr = mc_.triangle(t);
-    const int c = tr.e[0] == e ? 0 : tr.e[1] == e ? 1 : 2;
+    across_triangle(p, t, tr.e[0] == e ? 0 : tr.e[1] == e ? 1 : 2, f);
+  }
+}
+
+// From a point of edge t.e[c] (or inside t, then for every c): the vertex opposite and the
+// Steiner points of the two other edges, through t.
+template <class F>
+void SteinerGraph::across_triangle(const Vec3d& p, std::uint32_t t, int c, F& f) const {
+  const ComplexTriangle& tr = mc_.triangle(t);
+  f(tr.v[c], mc_.corner_element(t, c), distance(p, mc_.vertex(tr.v[c]).approx));
+  for (int d : {(c + 1) % 3, (c + 2) % 3}) into_edge(p, tr.e[d], 2 + tri_edge_pos_[3 * t + d], f);
+}
+
+template <class F>
+void SteinerGraph::for_each_move_from_triangle_point(const Vec3d& p, std::uint32_t t, F&& f) const {
+  const ComplexTriangle& tr = mc_.triangle(t);
+  for (int c = 0; c < 3; ++c) {
     f(tr.v[c], mc_.corner_element(t, c), distance(p, mc_.vertex(tr.v[c]).approx));
-    for (int d : {(c + 1) % 3, (c + 2) % 3}) into_edge(p, tr.e[d], 2 + tri_edge_pos_[3 * t + d], f);
+    into_edge(p, tr.e[c], 2 + tri_edge_pos_[3 * t + c], f);
+  }
+}
+
+template <class F>
+void SteinerGraph::for_each_move_from_edge_point(const Vec3d& p, std::uint32_t e, std::uint32_t lower, F&& f) const {
+  const std::uint32_t n = steiner_count(e);
+  const std::uint32_t below = edge_point(e, lower), above = edge_point(e, lower + 1);
+  // Fire along e reaches the point below from its v[1] side and the point above from its v[0] side.
+  f(below, lower == 0 ? mc_.edge_end_element(e, 0) : 1u, distance(p, position(below)));
+  f(above, lower + 1 == n + 1 ? mc_.edge_end_element(e, 1) : 0u, distance(p, position(above)));
+  for (std::uint32_t t : mc_.edge_triangles(e)) {
+    const ComplexTriangle& tr = mc_.triangle(t);
+    across_triangle(p, t, tr.e[0] == e ? 0 : tr.e[1] == e ? 1 : 2, f);
   }
 }
 

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <functional>
+#include <random>
 #include <stdexcept>
 
 #include "complex3/complex_builder.h"
@@ -280,6 +281,30 @@ RawComplex box_medial_axis(long a, long b, long c, int n) {
   for (int sx : {1, -1})
     for (int sy : {1, -1}) tri(Q(sx, sy, 1), Q(sx, sy, -1), P(sx, sy));
   return bld.take();
+}
+
+double box_medial_axis_burning_time(double a, double b, double c, const std::array<double, 3>& p) {
+  const double x = std::abs(p[0]), y = std::abs(p[1]), z = std::abs(p[2]);
+  if (z == 0 && x <= a - c && y <= b - c) return kSqrt2 * c + std::min(a - c - x, b - c - y);
+  return kSqrt2 * std::min({a - x, b - y, c - z});
+}
+
+RawComplex random_planar_fan(std::uint32_t seed) {
+  std::mt19937 rng(seed);
+  ComplexBuilder b("planar sheet " + std::to_string(seed));
+  const std::uint32_t centre = b.vertex({0, 0, 0}, 4);
+  const int k = 5 + static_cast<int>(seed % 6);
+  std::uniform_int_distribution<int> radius(6, 12), rr(0, 3);
+  const mpq_class rho = radius(rng);
+  std::vector<std::uint32_t> rim;
+  for (int j = 0; j < k; ++j) {
+    const auto d = rational_unit_direction(2 * M_PI * j / k);
+    const mpq_class r = rr(rng);
+    rim.push_back(b.vertex({rho * d[0], rho * d[1], 0}, r * r));
+  }
+  for (int j = 0; j < k; ++j) b.triangle(centre, rim[j], rim[(j + 1) % k]);
+  b.rule(rim[0], rim[1], IgnitionRule::Never);
+  return b.take();
 }
 
 std::vector<std::string> synthetic_complex_names() {

@@ -3,9 +3,9 @@
 
 #include <cctype>
 #include <cmath>
-#include <fstream>
 #include <sstream>
 
+#include "io/atomic_file.h"
 #include "io/complex_text.h"
 
 namespace grassfire {
@@ -27,12 +27,13 @@ void check_fields(const MedialComplex& mc, const std::vector<VertexField>& field
 
 std::string number(double x) { return std::isinf(x) ? (x > 0 ? "inf" : "-inf") : shortest_double(x); }
 
+// Through a temporary file renamed when complete: never a partial output.
 void write_all(const std::string& path, const std::string& text) {
-  std::ofstream out(path, std::ios::binary);
-  if (!out) throw ComplexFormatError(path + ": cannot write file");
-  out << text;
-  out.close();
-  if (!out) throw ComplexFormatError(path + ": write error");
+  try {
+    write_file_atomically(path, text);
+  } catch (const std::runtime_error& e) {
+    throw ComplexFormatError(e.what());
+  }
 }
 
 }  // namespace

@@ -3,9 +3,10 @@
 
 #include <algorithm>
 #include <cmath>
-#include <fstream>
+#include <sstream>
 #include <set>
 
+#include "io/atomic_file.h"
 #include "io/complex_text.h"
 
 namespace grassfire {
@@ -127,11 +128,13 @@ bool write_ma(const RawComplex& c, std::ostream& out) {
 }
 
 bool write_ma_file(const RawComplex& c, const std::string& path) {
-  std::ofstream out(path);
-  if (!out) throw ComplexFormatError(path + ": cannot write file");
+  std::ostringstream out;
   const bool exact = write_ma(c, out);
-  out.close();
-  if (!out) throw ComplexFormatError(path + ": write error");
+  try {
+    write_file_atomically(path, out.str());  // never a partial file
+  } catch (const std::runtime_error& e) {
+    throw ComplexFormatError(e.what());
+  }
   return exact;
 }
 

@@ -5,6 +5,8 @@
 #include <nlohmann/json.hpp>
 #include <stdexcept>
 
+#include "io/json_text.h"
+
 namespace grassfire {
 
 namespace {
@@ -19,52 +21,15 @@ double coordinate(const nlohmann::json& point, const char* axis, std::size_t ind
   return v;
 }
 
-// Builds the document like nlohmann's own DOM parser, but reports every parse error (syntax,
-// or a number that overflows to infinity) with the line and column of its byte offset.
-class PositionedDomParser {
- public:
-  PositionedDomParser(nlohmann::json& doc, const std::string& text, const std::string& source)
-      : dom_(doc), text_(text), source_(source) {}
-
-  bool null() { return dom_.null(); }
-  bool boolean(bool v) { return dom_.boolean(v); }
-  bool number_integer(nlohmann::json::number_integer_t v) { return dom_.number_integer(v); }
-  bool number_unsigned(nlohmann::json::number_unsigned_t v) { return dom_.number_unsigned(v); }
-  bool number_float(nlohmann::json::number_float_t v, const std::string& s) { return dom_.number_float(v, s); }
-  bool string(std::string& v) { return dom_.string(v); }
-  bool binary(nlohmann::json::binary_t& v) { return dom_.binary(v); }
-  bool start_object(std::size_t n) { return dom_.start_object(n); }
-  bool key(std::string& k) { return dom_.key(k); }
-  bool end_object() { return dom_.end_object(); }
-  bool start_array(std::size_t n) { return dom_.start_array(n); }
-  bool end_array() { return dom_.end_array(); }
-
-  bool parse_error(std::size_t offset, const std::string& /*token*/, const nlohmann::detail::exception& e) {
-    std::size_t line = 1, column = 1;
-    for (std::size_t i = 0; i + 1 < offset && i < text_.size(); ++i) {
-      column = text_[i] == '\n' ? 1 : column + 1;
-      line += text_[i] == '\n';
-    }
-    // e.what() is "[json.exception.<kind>.<id>] [parse error at line L, column C: ]<reason>".
-    std::string reason = e.what();
-    reason = reason.substr(reason.find("] ") + 2);
-    if (reason.rfind("parse error", 0) == 0) reason = reason.substr(reason.find(": ") + 2);
-    throw ShapeFormatError(source_ + ":" + std::to_string(line) + ":" + std::to_string(column) +
-                           ": invalid JSON: " + reason);
-  }
-
- private:
-  nlohmann::detail::json_sax_dom_parser<nlohmann::json> dom_;
-  const std::string& text_;
-  const std::string& source_;
-};
-
 }  // namespace
 
 Shape2 parse_shape_json(const std::string& text, const std::string& source) {
   nlohmann::json doc;
-  PositionedDomParser parser(doc, text, source);
-  nlohmann::json::sax_parse(text, &parser);
+  try {
+    doc = parse_json_text(text, source);
+  } catch (const JsonSyntaxError& e) {
+    throw ShapeFormatError(e.what());
+  }
   if (!doc.is_object()) throw ShapeFormatError(source + ": the JSON value is not an object with a \"points\" member");
   const auto points = doc.find("points");
   if (points == doc.end()) throw ShapeFormatError(source + ": no \"points\" member");

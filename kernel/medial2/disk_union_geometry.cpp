@@ -42,21 +42,6 @@ std::optional<IntervalPoint2> interval_circumcenter(const IntervalPoint2& a, con
   return IntervalPoint2{a.x + (cy * b2 - by * c2) / d, a.y + (bx * c2 - cx * b2) / d};
 }
 
-// A rational as a ball at the current Arb precision.
-Ball ball_of(const mpq_class& q) {
-  const long bits = BallPrecision::bits();
-  mpfr_t lo, hi;
-  mpfr_init2(lo, bits);
-  mpfr_init2(hi, bits);
-  mpfr_set_q(lo, q.get_mpq_t(), MPFR_RNDD);
-  mpfr_set_q(hi, q.get_mpq_t(), MPFR_RNDU);
-  Ball b;
-  arb_set_interval_mpfr(b.get(), lo, hi, bits);
-  mpfr_clear(lo);
-  mpfr_clear(hi);
-  return b;
-}
-
 BallPoint corner_ball(const UnionCorner& c) {
   const Ball root = sqrt(ball_of(c.sigma));
   return {ball_of(c.mx) + ball_of(c.vx) * root, ball_of(c.my) + ball_of(c.vy) * root};

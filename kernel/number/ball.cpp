@@ -53,6 +53,32 @@ Ball operator/(const Ball& a, const Ball& b) {
   return r;
 }
 
+Ball ball_of(const mpq_class& q) {
+  const long bits = BallPrecision::bits();
+  mpfr_t lo, hi;
+  mpfr_init2(lo, bits);
+  mpfr_init2(hi, bits);
+  mpfr_set_q(lo, q.get_mpq_t(), MPFR_RNDD);
+  mpfr_set_q(hi, q.get_mpq_t(), MPFR_RNDU);
+  Ball b;
+  arb_set_interval_mpfr(b.get(), lo, hi, bits);
+  mpfr_clear(lo);
+  mpfr_clear(hi);
+  return b;
+}
+
+Ball min(const Ball& x, const Ball& y) {
+  Ball z;
+  arb_min(z.get(), x.get(), y.get(), BallPrecision::bits());
+  return z;
+}
+
+Ball hull(const Ball& x, const Ball& y) {
+  Ball z;
+  arb_union(z.get(), x.get(), y.get(), BallPrecision::bits());
+  return z;
+}
+
 Ball sqrt(const Ball& a) {
   Ball r;
   arb_sqrtpos(r.get(), a.get(), t_ball_bits);

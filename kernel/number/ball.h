@@ -15,6 +15,7 @@
 #pragma once
 
 #include <arb.h>
+#include <gmpxx.h>
 #include <mpfr.h>
 
 #include "number/interval.h"
@@ -77,6 +78,13 @@ class Ball {
   arb_t v_;
 };
 
+// A rational as a ball at the current precision (an enclosure of q, exact when q is dyadic
+// and fits).
+Ball ball_of(const mpq_class& q);
+// A ball that holds min(a, b) for every a in x and b in y (Arb's arb_min).
+Ball min(const Ball& x, const Ball& y);
+// A ball that holds both x and y (Arb's arb_union).
+Ball hull(const Ball& x, const Ball& y);
 Ball sqrt(const Ball& a);
 Ball asinh(const Ball& a);
 // The common part of two enclosures of the same value (both valid, so the result is).

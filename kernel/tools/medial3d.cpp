@@ -5,6 +5,7 @@
 #include "complex3/builders/medial_axis_input.h"
 #include "complex3/medial_complex.h"
 #include "io/complex_export.h"
+#include "io/complex_json.h"
 #include "io/complex_ma.h"
 #include "tools/commands.h"
 #include "tools/options.h"
@@ -21,6 +22,7 @@ int run_medial3d(int argc, char** argv) {
                            "go to the convex builder)", "auto")
       .option("samples", "S", "mesh kind: split every triangle edge into S parts for the samples (1 = vertices)", "1")
       .option("ma", "OUT", "write the axis as .ma (Q-MAT format: v x y z r, e i j, f i j k)")
+      .option("complex", "OUT", "write the axis in the grassfire-complex JSON format (exact; burn3d reads it)")
       .option("ply", "OUT", "write the axis with per-vertex R as PLY")
       .option("json", "OUT", "write a JSON report (counts, exactness, error bounds, Betti numbers, timings)")
       .epilog("Nothing is written unless the whole axis was built and its complex validated.\n"
@@ -31,6 +33,7 @@ int run_medial3d(int argc, char** argv) {
   const MedialAxisBuild axis = build_medial_axis(input, parse_medial_input_kind(opt.get("kind")), samples);
   const MedialComplex mc(axis.complex);
   mc.validate();
+  if (opt.has("complex")) write_complex_json(axis.complex, opt.get("complex"));
   if (opt.has("ma") && !write_ma_file(axis.complex, opt.get("ma")))
     std::cerr << "medial3d: " << opt.get("ma") << ": some values are irrational and were written as nearest doubles\n";
   if (opt.has("ply")) {

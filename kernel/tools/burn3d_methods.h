@@ -1,0 +1,54 @@
+// burn3d_methods.h -- the burning methods behind `grassfire burn3d --method NAME`.
+//
+// burn3d loads and validates the complex, locates the sources and the queries on it
+// (exactly; complex3/point_location.h), then calls one method through this interface
+// and writes what it returns (JSON, CSV, PLY, VTK, each through a temporary file). A new
+// method is one function of this signature and one row of the table in burn3d.cpp.
+// Contract for a method: vertex_bt has one value per vertex and query_values one per
+// query (same order); +infinity where the point never burns; bt_error is a bound on
+// |bt - BT| (+infinity when the method certifies no two-sided bound: the discrete
+// baseline is an upper bound only). report holds the method's own counters (timings,
+// event counts, certification counts); summary is one line for stdout.
+#pragma once
+
+#include <nlohmann/json.hpp>
+
+#include <cstdint>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "burn3/point_sources.h"
+#include "complex3/medial_complex.h"
+#include "complex3/point_location.h"
+
+namespace grassfire::cli {
+
+struct BurnRequest {
+  const MedialComplex& mc;
+  std::vector<PointSource> sources;
+  std::vector<ComplexPoint> queries;
+  double spacing = 0.0;            // discrete: Steiner spacing h
+  std::uint64_t max_points = 0;    // discrete: graph point budget
+  // Reports progress: a stage name and the fraction done in [0, 1].
+  std::function<void(const std::string&, double)> progress;
+};
+
+struct BurnValue {
+  double bt = 0.0;
+  double bt_error = 0.0;
+};
+
+struct BurnOutcome {
+  std::vector<double> vertex_bt;
+  std::vector<BurnValue> query_values;
+  nlohmann::json report;
+  std::string summary;
+};
+
+// Dijkstra over vertices and Steiner points (burn3/discrete_burning.h, discrete_query.h).
+BurnOutcome burn_by_discrete(const BurnRequest& request);
+// The exact window-propagation engine (issue 8); tools/burn3d_exact.cpp.
+BurnOutcome burn_by_exact(const BurnRequest& request);
+
+}  // namespace grassfire::cli

@@ -1,0 +1,22 @@
+// complex_input.h -- the complex a 3D command works on, from its INPUT argument.
+//
+// INPUT is a synthetic complex name (synthetic_complexes.h), a grassfire-complex JSON file
+// (.json, io/complex_json.h), a .ma medial axis, a mesh burned as itself
+// (mesh_is_complex, .off/.ply/.obj), or a shape whose medial axis is built as
+// `grassfire medial3d` builds it (complex3/builders/medial_axis_input.h: convex meshes and
+// half-spaces exactly, ball lists exactly, other closed meshes through their inner polar
+// balls). Errors name the input; nothing is written.
+#pragma once
+
+#include <string>
+
+#include "complex3/raw_complex.h"
+
+namespace grassfire::cli {
+
+// `command` prefixes the line that says which builder made a medial axis (stderr).
+RawComplex load_complex(const std::string& input, bool mesh_is_complex, const std::string& command);
+// The help text of INPUT for the commands that take one.
+std::string complex_input_help();
+
+}  // namespace grassfire::cli
