@@ -5,7 +5,7 @@
 #include <cmath>
 
 #include "complex3/exact_predicates3.h"
-#include "number/ball_rational.h"
+#include "number/ball_exact_sum.h"
 
 namespace grassfire {
 

@@ -6,7 +6,7 @@
 
 #include "complex3/exact_predicates3.h"
 #include "medial2/union_find.h"
-#include "number/ball_rational.h"
+#include "number/ball_exact_sum.h"
 #include "number/exact_sum.h"
 #include "number/sqrt_field.h"
 
