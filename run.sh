@@ -8,7 +8,8 @@ set -euo pipefail
 cd "$(dirname "$0")"
 
 PACKAGES=(cmake make g++ libcgal-dev libgmp-dev libmpfr-dev libboost-graph-dev catch2
-          nlohmann-json3-dev librsvg2-bin libflint-arb-dev)
+          nlohmann-json3-dev librsvg2-bin libflint-arb-dev libpng-dev libgif-dev
+          pybind11-dev python3-dev python3-numpy)
 JOBS=${JOBS:-2}
 BUILD_DIR=${BUILD_DIR:-build}
 

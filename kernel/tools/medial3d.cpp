@@ -7,6 +7,7 @@
 #include "io/complex_export.h"
 #include "io/complex_json.h"
 #include "io/complex_ma.h"
+#include "io/progress.h"
 #include "tools/commands.h"
 #include "tools/options.h"
 
@@ -30,12 +31,18 @@ int run_medial3d(int argc, char** argv) {
   if (!opt.parse(argc, argv)) return opt.exit_code();
   const std::string input = opt.arg("INPUT");
   const int samples = static_cast<int>(opt.get_long("samples", 1, 64));
+  Progress progress("medial3d " + input, 3);
+  progress.stage("building the medial axis");
   const MedialAxisBuild axis = build_medial_axis(input, parse_medial_input_kind(opt.get("kind")), samples);
+  progress.advance();
+  progress.stage("building and validating the complex");
   const MedialComplex mc(axis.complex);
   mc.validate();
+  progress.advance();
+  progress.stage("writing");
   if (opt.has("complex")) write_complex_json(axis.complex, opt.get("complex"));
   if (opt.has("ma") && !write_ma_file(axis.complex, opt.get("ma")))
-    std::cerr << "medial3d: " << opt.get("ma") << ": some values are irrational and were written as nearest doubles\n";
+    note("medial3d: " + opt.get("ma") + ": some values are irrational and were written as nearest doubles");
   if (opt.has("ply")) {
     std::vector<double> r;
     for (const ComplexVertex& v : mc.vertices()) r.push_back(v.radius);
@@ -46,6 +53,8 @@ int run_medial3d(int argc, char** argv) {
     out << axis.report.dump(1) << '\n';
     if (!out) throw std::runtime_error(opt.get("json") + ": cannot write");
   }
+  progress.done();
+  if (opt.has("quiet")) return 0;
   const nlohmann::json& a = axis.report["axis"];
   std::cout << "medial3d " << input << " (" << axis.kind << "): " << a["vertices"] << " vertices, " << a["triangles"]
             << " triangles, " << a["segments"] << " segments, " << mc.count(EdgeStratum::Singular)

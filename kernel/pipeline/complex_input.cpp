@@ -1,7 +1,6 @@
 // complex_input.cpp -- see complex_input.h.
-#include "tools/complex_input.h"
+#include "pipeline/complex_input.h"
 
-#include <iostream>
 #include <stdexcept>
 
 #include "complex3/builders/medial_axis_input.h"
@@ -9,8 +8,9 @@
 #include "io/complex_json.h"
 #include "io/complex_ma.h"
 #include "io/mesh_io.h"
+#include "io/progress.h"
 
-namespace grassfire::cli {
+namespace grassfire {
 namespace {
 
 bool is_synthetic(const std::string& input) {
@@ -42,7 +42,7 @@ RawComplex load_complex(const std::string& input, bool mesh_is_complex, const st
   if (ext == "off" || ext == "ply" || ext == "obj" || ext == "hs" || ext == "halfspaces" || ext == "cin" ||
       ext == "balls") {
     MedialAxisBuild axis = build_medial_axis(input, MedialInputKind::Auto);
-    std::cerr << command << ": " << input << ": medial axis by the " << axis.kind << " builder\n";
+    note(command + ": " + input + ": medial axis by the " + axis.kind + " builder");
     return std::move(axis.complex);
   }
   std::string names;
@@ -52,4 +52,4 @@ RawComplex load_complex(const std::string& input, bool mesh_is_complex, const st
                            ".balls");
 }
 
-}  // namespace grassfire::cli
+}  // namespace grassfire
