@@ -50,7 +50,7 @@ TEST_CASE("a Y of segments burns by the 2D rule: the centre at its second arriva
   CHECK(bt(c).hi - bt(c).lo < 1e-12);
   const std::uint32_t e3 = r.mc->find_edge(c, l3);
   const bool from_centre = r.mc->edge(e3).v[0] == c;
-  const Interval quench = r.eb->segment_burn_time(e3, from_centre ? 1.0 / 3 : 2.0 / 3);
+  const Interval quench = r.eb->segment_burn_time(e3, from_centre ? mpq_class(1, 3) : mpq_class(2, 3));
   CHECK(encloses(quench, 6.0));
   CHECK(r.eb->propagation().stats().vertex_burns == 4);
 }

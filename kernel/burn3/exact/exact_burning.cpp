@@ -1,8 +1,10 @@
 // exact_burning.cpp -- see exact_burning.h.
 #include "burn3/exact/exact_burning.h"
 
+#include <algorithm>
 #include <limits>
 #include <stdexcept>
+#include <string>
 
 #include "burn3/exact/window_values.h"
 #include "complex3/exact_predicates3.h"
@@ -18,6 +20,26 @@ ExactBurning::~ExactBurning() = default;
 void ExactBurning::add_point_source(std::uint32_t triangle, const ExactPoint3& point, const mpq_class& start) {
   prop_->add_point_source(triangle, point, start);
 }
+void ExactBurning::add_point_source(const ComplexPoint& x, const mpq_class& start) {
+  switch (x.kind) {
+    case ComplexPoint::Kind::Vertex:
+      if (mc_.vertex_triangles(x.id).empty())
+        prop_->add_vertex_source(x.id, start);
+      else
+        add_point_source(mc_.vertex_triangles(x.id).front(), x.point, start);
+      return;
+    case ComplexPoint::Kind::Edge:
+      if (mc_.edge_triangles(x.id).empty())
+        throw std::invalid_argument("a point source inside a segment (edge " + std::to_string(x.id) +
+                                    ") is not supported by the exact engine");
+      add_point_source(mc_.edge_triangles(x.id).front(), x.point, start);
+      return;
+    case ComplexPoint::Kind::Triangle:
+      add_point_source(x.id, x.point, start);
+      return;
+  }
+}
+
 void ExactBurning::add_border_ignition() { prop_->add_border_ignition(); }
 
 void ExactBurning::run() {
@@ -125,17 +147,55 @@ Interval ExactBurning::vertex_burn_time(std::uint32_t v) {
   return best;
 }
 
-Interval ExactBurning::segment_burn_time(std::uint32_t e, double s) {
+Interval ExactBurning::segment_burn_time(std::uint32_t e, const mpq_class& s) {
   if (mc_.edge(e).stratum != EdgeStratum::Dangling) throw std::invalid_argument("segment_burn_time: not a segment");
   const Interval len = sqrt(enclose(prop_->certifier().edge_length2(e)));
   Interval best = Interval::infinity();
   for (int j = 0; j < 2; ++j) {
     const Interval end = vertex_burn_time(mc_.edge(e).v[j]);
     if (end.is_infinite()) continue;
-    const Interval t = end + len * (j == 0 ? Interval(s) : Interval(1.0) - Interval(s));
+    const Interval t = end + len * enclose(j == 0 ? s : mpq_class(1 - s));
     best = best.is_infinite() ? t : Interval(std::min(best.lo, t.lo), std::min(best.hi, t.hi));
   }
   return best;
+}
+
+Interval ExactBurning::burn_time(const ComplexPoint& x) {
+  switch (x.kind) {
+    case ComplexPoint::Kind::Vertex:
+      return vertex_burn_time(x.id);
+    case ComplexPoint::Kind::Edge: {
+      if (mc_.edge(x.id).stratum == EdgeStratum::Dangling) return segment_burn_time(x.id, x.parameter);
+      Interval best = Interval::infinity();
+      for (std::uint32_t t : mc_.edge_triangles(x.id)) {
+        const Interval b = burn_time(t, x.point);
+        best = best.is_infinite() ? b : Interval(std::min(best.lo, b.lo), std::min(best.hi, b.hi));
+      }
+      return best;
+    }
+    case ComplexPoint::Kind::Triangle:
+      break;
+  }
+  return burn_time(x.id, x.point);
+}
+
+std::optional<std::string> exact_engine_unsupported(const MedialComplex& mc) {
+  const std::size_t singular_edges = mc.count(EdgeStratum::Singular);
+  if (singular_edges > 0)
+    return std::to_string(singular_edges) + " singular edges (curves where three or more sheets meet); the exact "
+           "engine does not yet apply the junction rule of Definition 9 there (issue 9)";
+  std::size_t points = 0;
+  for (std::uint32_t v = 0; v < mc.vertex_count(); ++v) {
+    if (mc.vertex(v).kind != VertexKind::SingularPoint) continue;
+    bool segment = false;
+    for (const LinkElement& el : mc.link_elements(v))
+      segment = segment || (el.is_pole && mc.edge(el.id).stratum == EdgeStratum::Dangling);
+    if (!segment) ++points;
+  }
+  if (points > 0)
+    return std::to_string(points) + " singular points where sheets meet at a point; the exact engine applies the "
+           "link rule only at vertices with segments (issue 9)";
+  return std::nullopt;
 }
 
 std::vector<Interval> ExactBurning::vertex_burn_times() {

@@ -22,8 +22,10 @@
 
 #include <memory>
 #include <optional>
+#include <string>
 
 #include "burn3/exact/window_propagation.h"
+#include "complex3/point_location.h"
 
 namespace grassfire {
 
@@ -33,12 +35,22 @@ struct QueryCounts {
   std::uint64_t widened = 0;     // memberships no stage decided (enclosure widened)
 };
 
+// What this part of the engine cannot burn as Definition 9 asks, or none: singular edges
+// (walls here; the junction rule is issue 9) and singular points that are not link-rule
+// vertices (no segment at them). The message names the count and the reason.
+std::optional<std::string> exact_engine_unsupported(const MedialComplex& mc);
+
 class ExactBurning {
  public:
   explicit ExactBurning(const MedialComplex& mc, const ExactBurningOptions& o = {});
   ~ExactBurning();
 
   void add_point_source(std::uint32_t triangle, const ExactPoint3& point, const mpq_class& start);
+  // A source located by complex3/point_location.h: at a vertex (any vertex, also one
+  // with no triangle), inside an edge with triangles, or inside a triangle. A point inside
+  // a segment is refused (std::invalid_argument): fire on segments is derived from their
+  // ends only (the 2D rule), so the engine has no source kind there.
+  void add_point_source(const ComplexPoint& x, const mpq_class& start);
   void add_border_ignition();
   void run();
 
@@ -48,7 +60,10 @@ class ExactBurning {
   Interval vertex_burn_time(std::uint32_t v);
   // BT at the point (1 - s) v0 + s v1 of a segment (dangling edge), 0 <= s <= 1: fire runs
   // along it from its burned ends (the 2D rule, 3.3.1).
-  Interval segment_burn_time(std::uint32_t e, double s);
+  Interval segment_burn_time(std::uint32_t e, const mpq_class& s);
+  // BT at a located point (vertex, edge, triangle; any edge stratum): the minimum over the
+  // closed cells that contain it.
+  Interval burn_time(const ComplexPoint& x);
   std::vector<Interval> vertex_burn_times();
 
   const MedialComplex& complex() const { return mc_; }

@@ -118,6 +118,11 @@ std::uint32_t WindowPropagation::spawn_vertex_source(std::uint32_t v, std::uint3
   return p;
 }
 
+void WindowPropagation::add_vertex_source(std::uint32_t v, const mpq_class& start) {
+  if (v >= mc_.vertex_count()) throw std::invalid_argument("point source: no vertex " + std::to_string(v));
+  burn_vertex_at(v, exact_time(ExactSum::rational(start)));
+}
+
 void WindowPropagation::add_point_source(std::uint32_t t, const ExactPoint3& point, const mpq_class& start) {
   if (t >= mc_.triangle_count()) throw std::invalid_argument("point source: no triangle " + std::to_string(t));
   const ComplexTriangle& tr = mc_.triangle(t);

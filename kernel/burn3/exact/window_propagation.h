@@ -73,6 +73,8 @@ class WindowPropagation {
 
   // A point source igniting at `start`; the point must lie in the closed triangle.
   void add_point_source(std::uint32_t triangle, const ExactPoint3& point, const mpq_class& start);
+  // A point source at vertex v (any vertex): v burns at `start`.
+  void add_vertex_source(std::uint32_t v, const mpq_class& start);
   // Every border rule of the complex (Linear, DistanceToPoint, Never) and f at border vertices.
   void add_border_ignition();
   void run();
