@@ -2,9 +2,9 @@
 // Surface_mesh_shortest_path (Epick, burn3/geodesic_smsp.h) on closed curved meshes with
 // three point sources (issue 8 item 7).
 //
-// Meshes: data/meshes cube.off and tripod.off, smoothed twice and Loop-refined by 3 to 7
-// levels (complex3/refined_mesh.h: no two neighbouring faces coplanar), about 10^3 to
-// 2 10^5 faces. Sources at t0 = 0, at the exact barycentric points (1/5, 3/10, 1/2) of
+// Meshes: data/meshes cube.off, octahedron.off and tripod.off, smoothed twice and
+// Loop-refined by 3 to 7 levels (complex3/refined_mesh.h: no two neighbouring faces
+// coplanar): 512 to 196,608 faces (the octahedron's 131,072 is the one nearest 10^5). Sources at t0 = 0, at the exact barycentric points (1/5, 3/10, 1/2) of
 // faces 0, F/3 and 2F/3 (CGAL gets the nearest doubles of these weights). Each method
 // runs in a forked child (its own peak memory); times are processor seconds of the child
 // (the machine is shared; wall time would count the other users):
@@ -22,7 +22,8 @@
 // mesh,faces,smsp_s,exact_s,ratio,peak_mem_mb,uncertified,complex_s,smsp_peak_mb,windows,max_diff,
 // unfolding_s,propagation_s (exact_s split: the engine's frames and crossings of the
 // complex, then the event loop; the rest is adding the sources)
-// Usage: bench_burn3d_exact [--max-faces N]   (meshes above N faces are skipped; default all)
+// Usage: bench_burn3d_exact [--max-faces N] [--mesh NAME]   (meshes above N faces are
+// skipped, default 200000; --mesh: only that file of data/meshes)
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -101,12 +102,17 @@ std::vector<double> run_exact(const TriangleMesh3& m) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  std::size_t max_faces = static_cast<std::size_t>(-1);
-  if (argc == 3 && !std::strcmp(argv[1], "--max-faces")) max_faces = std::strtoull(argv[2], nullptr, 10);
+  std::size_t max_faces = 200000;  // CGAL needs about 5 GB at 2 10^5 faces
+  std::string only;
+  for (int i = 1; i + 1 < argc; i += 2) {
+    if (!std::strcmp(argv[i], "--max-faces")) max_faces = std::strtoull(argv[i + 1], nullptr, 10);
+    if (!std::strcmp(argv[i], "--mesh")) only = argv[i + 1];
+  }
   std::printf("mesh,faces,smsp_s,exact_s,ratio,peak_mem_mb,uncertified,complex_s,smsp_peak_mb,windows,max_diff,"
               "unfolding_s,propagation_s\n");
   int failures = 0;
-  for (const char* name : {"cube.off", "tripod.off"}) {
+  for (const char* name : {"cube.off", "octahedron.off", "tripod.off"}) {
+    if (!only.empty() && only != name) continue;
     const TriangleMesh3 coarse = read_triangle_mesh(std::string(GF_PROJECT_DATA) + "/meshes/" + name);
     for (int levels = 3; levels <= 7; ++levels) {
       if (coarse.triangles.size() << (2 * levels) > max_faces) break;
