@@ -16,7 +16,7 @@ namespace {
 
 int run_medial3d(int argc, char** argv) {
   Options opt("medial3d", "The medial axis of a convex polyhedron, a union of balls or a closed mesh, as a 2-complex.");
-  opt.positional("INPUT", "a mesh (.off .ply .obj), a half-space list (.hs .halfspaces: one `a b c d` per line, "
+  opt.positional("INPUT", "a mesh (.off .ply .obj .stl), a half-space list (.hs .halfspaces: one `a b c d` per line, "
                           "a x + b y + c z <= d) or a ball list (.cin .balls: `x y z w`, w = r^2)")
       .option("kind", "K", "convex (exact axis of a convex polyhedron), balls (exact axis of the union), mesh "
                            "(axis of the inner polar balls of a closed mesh), auto (by extension; convex meshes "
@@ -34,6 +34,8 @@ int run_medial3d(int argc, char** argv) {
   Progress progress("medial3d " + input, 3);
   progress.stage("building the medial axis");
   const MedialAxisBuild axis = build_medial_axis(input, parse_medial_input_kind(opt.get("kind")), samples);
+  if (const std::string r = axis.report.value("/mesh_input/repairs"_json_pointer, ""); !r.empty())
+    note("medial3d: " + input + ": " + r);
   progress.advance();
   progress.stage("building and validating the complex");
   const MedialComplex mc(axis.complex);
