@@ -5,11 +5,14 @@
 // the exact axis (medial2/polygon_axis.h), run the extended grassfire; with --validate
 // also the definition-level check (medial2/polygon_axis_validate.h).
 // Output (stdout): one CSV row per shape: file,construction,vertices,nodes,edges,
-// parabolic_arcs,contracted,uncertified_contractions,ball_refinements,axis_s,edf_s,
-// valid,error; then a summary line on stderr: shapes, failures, total seconds.
+// parabolic_arcs,contracted,uncertified_contractions,uncertified_ties,ball_refinements,
+// axis_s,edf_s,valid,error (uncertified_ties: comparisons of the burning that no stage
+// could prove, DESIGN.md 3); then a summary line on stderr: shapes, failures, total
+// seconds, the uncertified counts and how many shapes have any.
 // Usage: study_exact_axis_throughput FOLDER [--validate]
 #include <algorithm>
 #include <chrono>
+#include <cstdint>
 #include <cstdio>
 #include <filesystem>
 #include <string>
@@ -38,9 +41,10 @@ int main(int argc, char** argv) {
   }
   std::sort(files.begin(), files.end());
   std::printf("file,construction,vertices,nodes,edges,parabolic_arcs,contracted,uncertified_contractions,"
-              "ball_refinements,axis_s,edf_s,valid,error\n");
+              "uncertified_ties,ball_refinements,axis_s,edf_s,valid,error\n");
   int failures = 0;
   double total = 0;
+  std::uint64_t contractions = 0, ties = 0, shapes_with_any = 0;
   for (const auto& f : files) {
     try {
       const Shape2 s = load_shape(f.string());
@@ -59,17 +63,24 @@ int main(int argc, char** argv) {
         valid = v.ok() ? "yes" : "no: " + v.failures.front();
         failures += !v.ok();
       }
-      std::printf("%s,%s,%llu,%u,%u,%llu,%llu,%llu,%llu,%.5f,%.5f,\"%s\",\n", f.filename().c_str(),
+      const std::uint64_t uncertified_ties = r.stats().uncertified_zero;
+      contractions += rep.uncertified_contractions;
+      ties += uncertified_ties;
+      shapes_with_any += rep.uncertified_contractions + uncertified_ties > 0;
+      std::printf("%s,%s,%llu,%u,%u,%llu,%llu,%llu,%llu,%llu,%.5f,%.5f,\"%s\",\n", f.filename().c_str(),
                   to_string(rep.construction), (unsigned long long)rep.polygon_vertices, g.node_count(),
                   g.edge_count(), (unsigned long long)rep.parabolic_arcs, (unsigned long long)rep.contracted_edges,
-                  (unsigned long long)rep.uncertified_contractions, (unsigned long long)rep.ball_refinements, axis_s,
-                  edf_s, valid.c_str());
-      (void)r;
+                  (unsigned long long)rep.uncertified_contractions, (unsigned long long)uncertified_ties,
+                  (unsigned long long)rep.ball_refinements, axis_s, edf_s, valid.c_str());
     } catch (const std::exception& e) {
       ++failures;
-      std::printf("%s,,,,,,,,,,,,\"%s\"\n", f.filename().c_str(), e.what());
+      std::printf("%s,,,,,,,,,,,,,\"%s\"\n", f.filename().c_str(), e.what());
     }
   }
-  std::fprintf(stderr, "shapes %zu, failures %d, total axis+edf seconds %.3f\n", files.size(), failures, total);
+  std::fprintf(stderr,
+               "shapes %zu, failures %d, total axis+edf seconds %.3f, uncertified contractions %llu and ties %llu "
+               "in %llu shapes\n",
+               files.size(), failures, total, (unsigned long long)contractions, (unsigned long long)ties,
+               (unsigned long long)shapes_with_any);
   return failures == 0 ? 0 : 1;
 }

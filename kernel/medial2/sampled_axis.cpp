@@ -23,11 +23,23 @@ namespace {
 
 using K = CGAL::Exact_predicates_inexact_constructions_kernel;
 using Vb = CGAL::Triangulation_vertex_base_with_info_2<std::uint32_t, K>;
-using Fb = CGAL::Triangulation_face_base_with_info_2<std::uint32_t, K>;
+constexpr std::uint32_t kNone = 0xffffffffu;       // a face whose circumcentre is not inside
+constexpr std::uint32_t kUnvisited = 0xfffffffeu;  // a face the pass has not reached yet
+
+// Face info: the candidate id of a face, born unvisited (CGAL constructs every face).
+struct FaceTag {
+  std::uint32_t id = kUnvisited;
+};
+using Fb = CGAL::Triangulation_face_base_with_info_2<FaceTag, K>;
 using Tds = CGAL::Triangulation_data_structure_2<Vb, Fb>;
 using Delaunay = CGAL::Delaunay_triangulation_2<K, Tds>;
-constexpr std::uint32_t kNone = 0xffffffffu;
 
+// Two adjacent candidates a < b, and whether their shared Delaunay edge joins
+// consecutive samples of one ring (rule (a) of the header).
+struct Adjacency {
+  std::uint32_t a, b;
+  bool boundary_dual;
+};
 
 bool overlaps(const IntervalPoint2& a, const IntervalPoint2& b) {
   return !(a.x.hi < b.x.lo || b.x.hi < a.x.lo || a.y.hi < b.y.lo || b.y.hi < a.y.lo);
@@ -56,10 +68,10 @@ class SampledAxisBuilder {
     triangulate();
     const double t1 = thread_seconds();
     locate_circumcentres(report);
+    dt_.clear();
     const double t2 = thread_seconds();
     merge_cocircular(report);
     collect_edges(report);
-    dt_.clear();
     const double t3 = thread_seconds();
     MedialGraph g = assemble(report);
     const double t4 = thread_seconds();
@@ -87,13 +99,17 @@ class SampledAxisBuilder {
   // the circumcircle's enclosure, then the centre's side of the shape boundary, from the
   // locator's empty cells where possible (no exact arithmetic), exactly otherwise.
   // Triangles with the centre strictly inside become candidates, numbered in storage
-  // order (face info); the others get kNone.
+  // order (face info); the others get kNone. A candidate's neighbours that the pass has
+  // already numbered are its adjacent candidates with smaller ids: every adjacent pair is
+  // found once, with the neighbour's info read once (the memory traffic of this stage),
+  // and pairs with overlapping centres get CGAL's exact in-circle test for cocircularity.
   void locate_circumcentres(SampledAxisReport& report) {
     locator_ = std::make_unique<ShapeLocator>(shape_, dt_.number_of_faces());
     const ShapeLocator& locator = *locator_;
+    const auto in_circle = K().side_of_oriented_circle_2_object();
     auto infinite = dt_.incident_faces(dt_.infinite_vertex()), done = infinite;
     do {
-      infinite->info() = kNone;
+      infinite->info().id = kNone;
     } while (++infinite != done);
     for (auto f = dt_.finite_faces_begin(); f != dt_.finite_faces_end(); ++f) {
       ++report.delaunay_triangles;
@@ -105,25 +121,21 @@ class SampledAxisBuilder {
         ++report.exact_locations;
       }
       if (*side != BoundedSide::Inside) {
-        f->info() = kNone;
+        f->info().id = kNone;
         continue;
       }
-      f->info() = static_cast<std::uint32_t>(triangles_.size());
+      const std::uint32_t b = static_cast<std::uint32_t>(triangles_.size());
+      f->info().id = b;
       triangles_.push_back(t);
       circles_.push_back(circle);
-    }
-  }
-
-  // Calls f(a, b, face, i) once for every pair of adjacent candidates a < b; i is the
-  // index in `face` (the triangle of a) of the vertex opposite the shared edge.
-  template <class F>
-  void for_each_adjacent_pair(F&& f) const {
-    for (auto face = dt_.finite_faces_begin(); face != dt_.finite_faces_end(); ++face) {
-      const std::uint32_t a = face->info();
-      if (a == kNone) continue;
       for (int i = 0; i < 3; ++i) {
-        const std::uint32_t b = face->neighbor(i)->info();
-        if (b != kNone && a < b) f(a, b, face, i);
+        const std::uint32_t a = f->neighbor(i)->info().id;
+        if (a >= kUnvisited) continue;
+        adjacent_.push_back({a, b, consecutive_samples(t[Delaunay::ccw(i)], t[Delaunay::cw(i)])});
+        if (overlaps(circles_[a].center, circle.center) &&
+            in_circle(f->vertex(0)->point(), f->vertex(1)->point(), f->vertex(2)->point(),
+                      dt_.mirror_vertex(f, i)->point()) == CGAL::ON_ORIENTED_BOUNDARY)
+          cocircular_.emplace_back(a, b);
       }
     }
   }
@@ -131,16 +143,8 @@ class SampledAxisBuilder {
   // Adjacent triangles with cocircular vertices share their circumcentre: one node.
   void merge_cocircular(SampledAxisReport& report) {
     groups_ = UnionFind(triangles_.size());
-    const auto in_circle = K().side_of_oriented_circle_2_object();
-    for_each_adjacent_pair([&](std::uint32_t a, std::uint32_t b, Delaunay::Face_handle face, int i) {
-      if (!overlaps(circles_[a].center, circles_[b].center)) return;
-      const auto opposite = dt_.mirror_vertex(face, i)->point();
-      if (in_circle(face->vertex(0)->point(), face->vertex(1)->point(), face->vertex(2)->point(), opposite) ==
-          CGAL::ON_ORIENTED_BOUNDARY) {
-        groups_.unite(a, b);
-        ++report.merged_triangles;
-      }
-    });
+    for (const auto& [a, b] : cocircular_) groups_.unite(a, b);
+    report.merged_triangles = cocircular_.size();
   }
 
   bool consecutive_samples(std::uint32_t a, std::uint32_t b) const {
@@ -157,21 +161,22 @@ class SampledAxisBuilder {
 
   // The Voronoi edges between candidates of different groups, by the rules of the header.
   void collect_edges(SampledAxisReport& report) {
-    for_each_adjacent_pair([&](std::uint32_t a, std::uint32_t b, Delaunay::Face_handle face, int i) {
-      const std::uint32_t ra = groups_.find(a), rb = groups_.find(b);
-      if (ra == rb) return;
-      if (consecutive_samples(face->vertex(Delaunay::ccw(i))->info(), face->vertex(Delaunay::cw(i))->info())) {
+    for (const Adjacency& p : adjacent_) {
+      const std::uint32_t ra = groups_.find(p.a), rb = groups_.find(p.b);
+      if (ra == rb) continue;
+      if (p.boundary_dual) {
         ++report.boundary_dual_edges;
-        return;
+        continue;
       }
       std::optional<bool> meets = locator_->segment_meets_boundary_in_empty_cells(circles_[ra].center, circles_[rb].center);
       if (!meets) meets = locator_->segment_meets_boundary(center_of(ra), center_of(rb));
       if (*meets) {
         ++report.crossing_edges;
-        return;
+        continue;
       }
       ends_.emplace_back(ra, rb);
-    });
+    }
+    adjacent_ = {};
     report.predicates = locator_->counters();
   }
 
@@ -250,7 +255,8 @@ class SampledAxisBuilder {
   std::unique_ptr<ShapeLocator> locator_;
   std::vector<std::array<std::uint32_t, 3>> triangles_;  // per candidate: its sample ids
   std::vector<Circle> circles_;                          // per candidate: its circumcircle
-  std::vector<std::pair<std::uint32_t, std::uint32_t>> ends_;
+  std::vector<Adjacency> adjacent_;
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> cocircular_, ends_;
   UnionFind groups_;
 };
 

@@ -44,7 +44,7 @@ struct SampledAxisReport {
   OrientationStats predicates;            // orientation filter successes and exact fallbacks
   // Thread CPU seconds (they do not count time the CPU spent on other processes).
   double delaunay_seconds = 0;
-  double locate_seconds = 0;               // circumcircles and inside tests
+  double locate_seconds = 0;               // circumcircles, inside tests, adjacency, freeing the triangulation
   double edges_seconds = 0;                // cocircular merging and the Voronoi edges
   double graph_seconds = 0;                // the largest component and the medial graph
   double axis_seconds = 0;                 // everything after the triangulation
