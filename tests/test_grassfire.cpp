@@ -161,7 +161,7 @@ MedialGraph subdivided(const MedialGraph& g, std::uint64_t seed) {
 
 }  // namespace
 
-TEST_CASE("chains of degree-2 nodes: subdividing edges changes no EDF, engine = definition", "[grassfire][oracle]") {
+TEST_CASE("chains of degree-2 nodes: subdividing edges changes no EDF and engine = definition", "[grassfire][oracle]") {
   int graphs = 0, chain_quenches = 0;
   for (std::uint64_t seed = 0; seed < 400; ++seed) {
     const SyntheticFamily family = seed % 2 ? SyntheticFamily::Geometric : SyntheticFamily::Integer;
