@@ -111,13 +111,27 @@ class SampledAxisBuilder {
     do {
       infinite->info().id = kNone;
     } while (++infinite != done);
-    for (auto f = dt_.finite_faces_begin(); f != dt_.finite_faces_end(); ++f) {
+    // The faces are visited in storage order; their vertices and neighbours are scattered
+    // in memory, so those of the face kAhead places further are prefetched.
+    constexpr int kAhead = 8;
+    auto ahead = dt_.all_faces_begin();
+    for (int k = 0; k < kAhead && ahead != dt_.all_faces_end(); ++k) ++ahead;
+    for (auto f = dt_.all_faces_begin(); f != dt_.all_faces_end(); ++f) {
+      if (ahead != dt_.all_faces_end()) {
+        for (int i = 0; i < 3; ++i) {
+          __builtin_prefetch(&*ahead->vertex(i));
+          __builtin_prefetch(&*ahead->neighbor(i));
+        }
+        ++ahead;
+      }
+      if (dt_.is_infinite(f)) continue;
       ++report.delaunay_triangles;
       const std::array<std::uint32_t, 3> t{f->vertex(0)->info(), f->vertex(1)->info(), f->vertex(2)->info()};
-      const Circle circle = interval_circle(points_[t[0]], points_[t[1]], points_[t[2]]);
+      const std::array<Point2, 3> x{point_of(f->vertex(0)), point_of(f->vertex(1)), point_of(f->vertex(2))};
+      const Circle circle = interval_circle(x[0], x[1], x[2]);
       std::optional<BoundedSide> side = locator.locate_in_empty_cell(circle.center);
       if (!side) {
-        side = locator.locate(LazyPoint::circumcenter(points_[t[0]], points_[t[1]], points_[t[2]], circle.center));
+        side = locator.locate(LazyPoint::circumcenter(x[0], x[1], x[2], circle.center));
         ++report.exact_locations;
       }
       if (*side != BoundedSide::Inside) {
@@ -146,6 +160,8 @@ class SampledAxisBuilder {
     for (const auto& [a, b] : cocircular_) groups_.unite(a, b);
     report.merged_triangles = cocircular_.size();
   }
+
+  static Point2 point_of(Delaunay::Vertex_handle v) { return {v->point().x(), v->point().y()}; }
 
   bool consecutive_samples(std::uint32_t a, std::uint32_t b) const {
     if (ring_of_[a] != ring_of_[b]) return false;
