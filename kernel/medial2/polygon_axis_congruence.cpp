@@ -274,26 +274,33 @@ void unite_congruent_atoms(const PolygonSites& s, const std::vector<AxisNodeData
       if (first_apex == n) first_apex = i;
       node_uf.unite(i, first_apex);
     }
-  // The eight images of a node's circles, computed once per node that needs them.
-  std::vector<std::vector<Image>> images(n);
+  // The eight images of a node's circles, in a direct-mapped cache of kSlots nodes: kept
+  // for every node they cost ~2 KiB each (350 MB at 10^5 segments, and the page faults
+  // and cache misses made this stage superlinear); nodes of nearby edges share slots.
+  constexpr std::uint32_t kSlots = 4096;
+  std::vector<std::vector<Image>> images(std::min(n, kSlots));
+  std::vector<std::uint32_t> image_owner(images.size(), n);
+  auto slot_of = [&](std::uint32_t i) { return i % kSlots; };
   auto images_of = [&](std::uint32_t i) -> const std::vector<Image>& {
-    if (images[i].empty()) {
-      std::array<bool, 8> unique{};
-      std::size_t count = 0;
+    std::vector<Image>& out = images[slot_of(i)];
+    if (image_owner[slot_of(i)] == i) return out;
+    image_owner[slot_of(i)] = i;
+    out.clear();
+    std::array<bool, 8> unique{};
+    std::size_t count = 0;
+    for_each_circle(nodes[i], [&](const VoronoiCircle& c) {
+      if (count < unique.size()) unique[count] = at_most_one_circle(s, c);
+      ++count;
+    });
+    out.reserve(8 * count);
+    for (const auto& a : kLinear) {
+      std::size_t j = 0;
       for_each_circle(nodes[i], [&](const VoronoiCircle& c) {
-        if (count < unique.size()) unique[count] = at_most_one_circle(s, c);
-        ++count;
+        out.push_back(transform_circle(s, gcds, c, a, j < unique.size() && unique[j]));
+        ++j;
       });
-      images[i].reserve(8 * count);
-      for (const auto& a : kLinear) {
-        std::size_t j = 0;
-        for_each_circle(nodes[i], [&](const VoronoiCircle& c) {
-          images[i].push_back(transform_circle(s, gcds, c, a, j < unique.size() && unique[j]));
-          ++j;
-        });
-      }
     }
-    return images[i];
+    return out;
   };
   std::unordered_map<KeyBuilder::Key, std::uint32_t, KeyHash> seen;
   const std::vector<bool> node_candidates = candidates(n, [&](std::uint32_t i) -> const Interval& { return nodes[i].radius; }, node_uf);
@@ -326,8 +333,15 @@ void unite_congruent_atoms(const PolygonSites& s, const std::vector<AxisNodeData
     if (!edge_candidates[e]) continue;
     const AxisEdgeData& d = items[e];
     KeyBuilder::Key best;
-    // images_of(i) holds, for each of the eight maps in turn, one image per circle.
-    const std::vector<Image>& iu = images_of(d.u);
+    // images_of(i) holds, for each of the eight maps in turn, one image per circle; u's
+    // are copied when v's would evict them from the shared slot.
+    std::vector<Image> u_copy;
+    const std::vector<Image>* u_images = &images_of(d.u);
+    if (slot_of(d.u) == slot_of(d.v) && d.u != d.v) {
+      u_copy = *u_images;
+      u_images = &u_copy;
+    }
+    const std::vector<Image>& iu = *u_images;
     const std::vector<Image>& iv = images_of(d.v);
     const std::size_t cu = iu.size() / 8, cv = iv.size() / 8;
     for (int a = 0; a < 8; ++a) {
