@@ -1,6 +1,6 @@
 // main.cpp -- regenerates the dissertation's figures into one folder with an index.html.
 //
-// usage: paper_figures [--out DIR] [--data DIR] [--only ID] [--list]
+// usage: paper_figures [--out DIR] [--data DIR] [--only ID] [--list] [--progress|--quiet]
 // Writes every registered figure, then DIR/index.html, which shows each figure (as PNG,
 // produced from the SVG by run.sh) with its caption, and inlines DIR/proof-checks.html
 // (the proof-check report: rows, references, verdicts and the table of mutants each row
@@ -16,6 +16,7 @@
 #include <sstream>
 
 #include "figure_registry.h"
+#include "io/progress.h"
 #include "io/xml_escape.h"
 
 namespace grassfire::figures {
@@ -125,6 +126,7 @@ std::vector<FigureEntry> registered_figures() {
 
 int main(int argc, char** argv) {
   using namespace grassfire::figures;
+  grassfire::take_verbosity_flags(argc, argv);
   FigureContext ctx;
   ctx.out_dir = "paper-figures/out";
   ctx.data_dir = GF_PROJECT_DATA;
@@ -148,9 +150,10 @@ int main(int argc, char** argv) {
       for (const FigureEntry& f : registered_figures()) std::cout << f.id << "\t" << f.title << "\n";
       return 0;
     } else if (a == "--help" || a == "-h") {
-      std::cout << "usage: paper_figures [--out DIR] [--data DIR] [--only ID] [--list]\n"
+      std::cout << "usage: paper_figures [--out DIR] [--data DIR] [--only ID] [--list] [--progress|--quiet]\n"
                    "Regenerates the dissertation's figures as SVG into DIR (default paper-figures/out)\n"
-                   "and writes DIR/index.html.\n";
+                   "and writes DIR/index.html. --quiet prints only failures; --progress shows progress\n"
+                   "even when stderr is not a terminal.\n";
       return 0;
     } else {
       std::cerr << "paper_figures: unknown argument '" << a << "' (see --help)\n";
@@ -160,19 +163,25 @@ int main(int argc, char** argv) {
   std::filesystem::create_directories(ctx.out_dir);
   std::vector<std::pair<FigureEntry, std::vector<FigureFile>>> done;
   int failures = 0;
-  for (const FigureEntry& f : registered_figures()) {
-    if (!only.empty() && f.id != only) continue;
+  std::vector<FigureEntry> figures;
+  for (const FigureEntry& f : registered_figures())
+    if (only.empty() || f.id == only) figures.push_back(f);
+  grassfire::Progress progress("paper_figures", figures.size());
+  for (const FigureEntry& f : figures) {
+    progress.item(f.id);
     const auto start = std::chrono::steady_clock::now();
     try {
       done.emplace_back(f, run_isolated(f, ctx));
       const double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-      std::cerr << "paper_figures: " << f.id << ": " << done.back().second.size() << " files in " << secs << " s"
-                << std::endl;
+      grassfire::note("paper_figures: " + f.id + ": " + std::to_string(done.back().second.size()) + " files in " +
+                      std::to_string(secs) + " s");
     } catch (const std::exception& e) {
       std::cerr << "paper_figures: " << f.id << " failed: " << e.what() << std::endl;
       ++failures;
     }
+    progress.advance();
   }
+  progress.done();
   write_index(ctx.out_dir, done);
   return failures == 0 ? 0 : 1;
 }

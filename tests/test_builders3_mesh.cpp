@@ -43,12 +43,12 @@ TEST_CASE("meshes that do not bound a solid are rejected, naming the file and th
   TriangleMesh3 duplicate = cube;
   duplicate.vertices.push_back(duplicate.vertices[0]);
   duplicate.triangles[0][0] = 8;
-  CHECK_THROWS_WITH(require_closed_manifold(duplicate), Catch::Contains("duplicate vertices 0 and 8"));
+  CHECK_THROWS_WITH(require_closed_manifold(duplicate), Catch::Contains("duplicate vertices 0 and 8 (same position (-1, -1, -1))"));
   TriangleMesh3 unused = cube;
   unused.vertices.push_back({5, 5, 5});
-  CHECK_THROWS_WITH(require_closed_manifold(unused), Catch::Contains("vertex 8 is not used"));
+  CHECK_THROWS_WITH(require_closed_manifold(unused), Catch::Contains("vertex 8 at (5, 5, 5) is not used"));
   CHECK_THROWS_WITH(require_closed_manifold(two_tetrahedra_sharing_a_vertex()),
-                    Catch::Contains("pinched.off") && Catch::Contains("vertex 0 is non-manifold"));
+                    Catch::Contains("pinched.off") && Catch::Contains("vertex 0 at (0, 0, 0) is non-manifold"));
   CHECK_NOTHROW(require_closed_manifold(cube));
   CHECK(mesh_orientation(cube) == 1);
 }

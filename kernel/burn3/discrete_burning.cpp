@@ -37,11 +37,14 @@ class Burner {
     out_.edge_slot = g_.edge_slots();
     bt_.assign(g_.node_count(), DiscreteBurning::kInfinity);
     out_.arrival_time.assign(g_.slot_total(), DiscreteBurning::kInfinity);
+    out_.arrival_from.assign(g_.slot_total(), kNoIndex);
+    out_.burn_slot.assign(g_.node_count(), kNoIndex);
     done_.assign(g_.slot_total(), 0);
   }
 
   void run(const DiscreteBurningOptions& options) {
-    for (const PointSource& source : options.sources) ignite(source);
+    for (std::uint32_t i = 0; i < options.sources.size(); ++i) ignite(options.sources[i], i);
+    for (const PointSource& source : options.sources) out_.source_points.push_back(source.location.approx());
     for (std::uint32_t v = 0; v < nv_; ++v)
       if (std::isfinite(mc_.ignition_at_vertex(v))) heap_.push({ignition(mc_.ignition_at_vertex(v)), v, kIgnite});
     for (std::uint32_t e = 0; e < mc_.edge_count(); ++e) {
@@ -60,13 +63,16 @@ class Burner {
       if (options.progress && (out_.stats.pops & 0xFFFF) == 0) options.progress(burned_, g_.node_count());
       if (std::isfinite(bt_[a.node])) continue;
       if (a.slot == kIgnite) {
+        out_.burn_slot[a.node] = DiscreteBurning::kIgnited;
         burn(a.node, a.time);
         continue;
       }
       const std::uint64_t g = slot(a.node, a.slot);
       if (done_[g] || a.time > out_.arrival_time[g]) continue;
       done_[g] = 1;
-      if (condition(a.node)) burn(a.node, a.time);
+      if (!condition(a.node)) continue;
+      out_.burn_slot[a.node] = a.slot;
+      burn(a.node, a.time);
     }
   }
 
@@ -76,7 +82,7 @@ class Burner {
     out_.vertex_et.resize(nv_);
     for (std::uint32_t v = 0; v < nv_; ++v) out_.vertex_et[v] = out_.vertex_bt[v] - mc_.vertex(v).radius;
     for (std::size_t g = 0; g < done_.size(); ++g)
-      if (!done_[g]) out_.arrival_time[g] = DiscreteBurning::kInfinity;
+      if (!done_[g]) out_.arrival_time[g] = DiscreteBurning::kInfinity, out_.arrival_from[g] = kNoIndex;
   }
 
  private:
@@ -103,24 +109,28 @@ class Burner {
   void burn(std::uint32_t node, double time) {
     bt_[node] = time;
     ++burned_;
-    g_.for_each_move(node, [&](std::uint32_t y, std::uint32_t local, double length) { arrive(y, local, time + length); });
+    g_.for_each_move(node, [&](std::uint32_t y, std::uint32_t local, double length) { arrive(y, local, time + length, node); });
   }
 
-  void arrive(std::uint32_t y, std::uint32_t local, double t) {
+  // `from`: the graph point that emitted the fire, or DiscreteBurning::kFromSource + i for
+  // the moves of point source i (recorded for the burning paths).
+  void arrive(std::uint32_t y, std::uint32_t local, double t, std::uint32_t from) {
     if (std::isfinite(bt_[y])) return;
     const std::uint64_t s = slot(y, local);
     if (!(t < out_.arrival_time[s])) return;
     out_.arrival_time[s] = t;
+    out_.arrival_from[s] = from;
     heap_.push({t, y, local});
     ++out_.stats.pushes;
   }
 
   // A point source: its graph point ignites, or its straight moves carry fire to the graph
   // points of its closed triangles (see DiscreteBurningOptions::sources).
-  void ignite(const PointSource& source) {
+  void ignite(const PointSource& source, std::uint32_t index) {
     const double t0 = source.t0.get_d();
     const ComplexPoint& x = source.location;
-    auto move = [&](std::uint32_t y, std::uint32_t local, double length) { arrive(y, local, t0 + length); };
+    const std::uint32_t from = DiscreteBurning::kFromSource + index;
+    auto move = [&](std::uint32_t y, std::uint32_t local, double length) { arrive(y, local, t0 + length, from); };
     if (x.kind == ComplexPoint::Kind::Vertex) {
       heap_.push({t0, x.id, kIgnite});
     } else if (x.kind == ComplexPoint::Kind::Triangle) {

@@ -145,6 +145,20 @@ class DiscreteBurning {
   std::vector<double> arrival_time;
   std::vector<std::uint64_t> vertex_slot;
   std::vector<std::uint64_t> edge_slot;
+
+  // Burning paths (burning_field.h): per slot, the graph point whose move gave the slot's
+  // recorded arrival (kNoIndex when arrival_time is kInfinity); per graph point (vertices,
+  // then Steiner points edge by edge), the local slot of the arrival that burned it, or
+  // kIgnited when it burned at its own ignition f (a border point, or a source at the
+  // point), kNoIndex if never. An arrival carried from point source i straight to a graph
+  // point records kFromSource + i (its position: source_points[i]).
+  // Following arrival_from[slot(x, burn_slot[x])] from x back to an ignited point is the
+  // discrete burning path of x (a polygonal non-crossing path, Definition 9).
+  static constexpr std::uint32_t kIgnited = std::numeric_limits<std::uint32_t>::max() - 1;
+  static constexpr std::uint32_t kFromSource = 0x80000000u;  // graph points stay below 2^31
+  std::vector<Vec3d> source_points;
+  std::vector<std::uint32_t> arrival_from;
+  std::vector<std::uint32_t> burn_slot;
 };
 
 DiscreteBurning burn_discrete(const MedialComplex& mc, const DiscreteBurningOptions& options);

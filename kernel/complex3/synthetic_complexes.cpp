@@ -8,6 +8,7 @@
 #include <stdexcept>
 
 #include "complex3/complex_builder.h"
+#include "complex3/synthetic_tubes.h"
 #include "number/exact_sum.h"
 
 namespace grassfire {
@@ -309,7 +310,7 @@ RawComplex random_planar_fan(std::uint32_t seed) {
 
 std::vector<std::string> synthetic_complex_names() {
   return {"board-fin", "board-cylinder", "book:K", "y-junction", "tetrahedron", "octahedron", "double-cone",
-          "tetrahedron-flap", "box:A:B:C"};
+          "tetrahedron-flap", "box:A:B:C", "tube", "annulus", "torus"};
 }
 
 RawComplex synthetic_complex(const std::string& name) {
@@ -320,6 +321,9 @@ RawComplex synthetic_complex(const std::string& name) {
   if (name == "octahedron") return octahedron_surface();
   if (name == "double-cone") return pinched_double_cone();
   if (name == "tetrahedron-flap") return tetrahedron_with_flap();
+  if (name == "tube") return tube();
+  if (name == "annulus") return square_annulus();
+  if (name == "torus") return frame_torus();
   if (name.rfind("book:", 0) == 0) {
     BookOptions o;
     try {

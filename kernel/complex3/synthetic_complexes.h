@@ -114,7 +114,8 @@ RawComplex random_planar_fan(std::uint32_t seed);
 std::array<mpq_class, 2> rational_unit_direction(double theta);
 
 // A synthetic complex by name: board-fin, board-cylinder, book:K, y-junction, tetrahedron,
-// octahedron, double-cone, tetrahedron-flap, box:A:B:C (box_medial_axis). Throws std::invalid_argument listing the names.
+// octahedron, double-cone, tetrahedron-flap, box:A:B:C (box_medial_axis), tube, annulus,
+// torus (synthetic_tubes.h). Throws std::invalid_argument listing the names.
 RawComplex synthetic_complex(const std::string& name);
 std::vector<std::string> synthetic_complex_names();
 

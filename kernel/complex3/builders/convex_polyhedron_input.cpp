@@ -9,6 +9,7 @@
 #include "complex3/builders/mesh_checks.h"
 #include "complex3/exact_predicates3.h"
 #include "io/complex_text.h"
+#include "io/quoted.h"
 
 namespace grassfire {
 
@@ -20,7 +21,7 @@ ConvexPolyhedron parse_halfspaces(const std::string& text, const std::string& so
     std::array<mpq_class, 4> v;
     for (int k = 0; k < 4; ++k) {
       const auto q = parse_exact_decimal(line.tokens[k]);
-      if (!q) format_error(source, line.number, "not a finite decimal number: `" + line.tokens[k] + "`");
+      if (!q) format_error(source, line.number, "not a finite decimal number: " + quote_token(line.tokens[k]));
       v[k] = *q;
     }
     if (sgn(v[0]) == 0 && sgn(v[1]) == 0 && sgn(v[2]) == 0)
