@@ -1,0 +1,135 @@
+// medial_complex_digest.h -- a canonical text of everything a MedialComplex derives (strata,
+// lengths, angular orders, incidences, sheets, planarity, every exact frame, sectors, link
+// elements, vertex kinds, border points, ignition), and the corpus it is taken on.
+//
+// tests/data/medial_complex_digests.txt holds the FNV-1a hashes of these texts computed by
+// the implementation before the filtered predicates (commit 84237b0, all rational); the
+// test test_complex3_filtered.cpp recomputes them with the current one. The header uses
+// only accessors both implementations have, so the same file generates the reference.
+// Corpus: named synthetic complexes, the .ma medial axes in data/ma, the convex and
+// polar-ball axes of data/meshes and data/balls, the meshes themselves (Loop-refined to
+// about 800 faces), and seeded random complexes (height fields with rational heights,
+// books with random rational pages: ties, coplanar sheets and singular edges).
+#pragma once
+
+#include <cstdint>
+#include <cstdio>
+#include <random>
+#include <sstream>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "complex3/builders/medial_axis_input.h"
+#include "complex3/complex_builder.h"
+#include "complex3/medial_complex.h"
+#include "complex3/refined_mesh.h"
+#include "complex3/synthetic_complexes.h"
+#include "io/complex_ma.h"
+#include "io/mesh_io.h"
+
+namespace grassfire::testing {
+
+inline std::string hex(double x) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%a", x);
+  return buf;
+}
+
+inline void put(std::ostream& os, const ExactPoint3& p) { os << p.x << ' ' << p.y << ' ' << p.z; }
+
+inline std::string medial_complex_text(const MedialComplex& mc) {
+  std::ostringstream os;
+  const std::vector<PlanarFrame>& frames = mc.frames();
+  for (std::uint32_t v = 0; v < mc.vertex_count(); ++v) {
+    const ComplexVertex& x = mc.vertex(v);
+    os << "v " << v << ' ' << to_string(x.kind) << ' ' << mc.is_border_point(v) << ' '
+       << hex(mc.ignition_at_vertex(v)) << ' ' << hex(x.radius) << ' ' << hex(x.approx[0]) << ' '
+       << hex(x.approx[1]) << ' ' << hex(x.approx[2]) << " |";
+    for (std::uint32_t e : mc.vertex_edges(v)) os << ' ' << e;
+    os << " |";
+    for (std::uint32_t t : mc.vertex_triangles(v)) os << ' ' << t;
+    os << " |";
+    for (const LinkElement& el : mc.link_elements(v)) os << ' ' << (el.is_pole ? 'p' : 's') << el.id;
+    os << '\n';
+  }
+  for (std::uint32_t e = 0; e < mc.edge_count(); ++e) {
+    const ComplexEdge& x = mc.edge(e);
+    os << "e " << x.v[0] << ' ' << x.v[1] << ' ' << to_string(x.stratum) << ' ' << hex(x.length) << ' '
+       << static_cast<int>(x.rule) << ' ' << mc.edge_end_element(e, 0) << ' ' << mc.edge_end_element(e, 1) << " |";
+    for (std::uint32_t t : mc.edge_triangles(e)) os << ' ' << t;
+    os << '\n';
+  }
+  for (std::uint32_t t = 0; t < mc.triangle_count(); ++t) {
+    const ComplexTriangle& x = mc.triangle(t);
+    os << "t " << x.v[0] << ' ' << x.v[1] << ' ' << x.v[2] << ' ' << x.e[0] << ' ' << x.e[1] << ' ' << x.e[2] << ' '
+       << x.sheet << ' ' << (&mc.triangle_frame(t) - frames.data()) << ' ' << mc.corner_element(t, 0) << ' '
+       << mc.corner_element(t, 1) << ' ' << mc.corner_element(t, 2) << '\n';
+  }
+  for (const Sheet& s : mc.sheets()) {
+    os << "s " << s.planar << ' ' << s.frame << " |";
+    for (std::uint32_t t : s.triangles) os << ' ' << t;
+    os << '\n';
+  }
+  for (const PlanarFrame& f : frames) {
+    os << "f ";
+    for (const ExactPoint3* p : {&f.origin, &f.e1, &f.e2, &f.normal}) put(os, *p), os << ' ';
+    os << f.e1_norm2 << ' ' << f.e2_norm2 << '\n';
+  }
+  for (const Sector& s : mc.sectors()) {
+    os << "c " << s.apex << ' ' << s.sheet << ' ' << s.closed << ' ' << s.ends[0] << ' ' << s.ends[1] << " |";
+    for (std::uint32_t t : s.triangles) os << ' ' << t;
+    os << '\n';
+  }
+  return os.str();
+}
+
+inline std::uint64_t fnv1a(const std::string& s) {
+  std::uint64_t h = 1469598103934665603ull;
+  for (unsigned char c : s) h = (h ^ c) * 1099511628211ull;
+  return h;
+}
+
+// A height field over an n x n grid with rational heights drawn from a few values (so that
+// coplanar neighbours, and whole planar patches, occur), split along random diagonals.
+inline RawComplex random_height_field(std::uint32_t seed, int n) {
+  std::mt19937 rng(seed);
+  std::uniform_int_distribution<int> height(0, 3), denominator(1, 3), diagonal(0, 1);
+  ComplexBuilder b("height-field-" + std::to_string(seed));
+  std::vector<std::vector<std::uint32_t>> id(n + 1, std::vector<std::uint32_t>(n + 1));
+  for (int i = 0; i <= n; ++i)
+    for (int j = 0; j <= n; ++j) id[i][j] = b.vertex({i, j, mpq_class(height(rng), 2 * denominator(rng) + 1)});
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < n; ++j) {
+      if (diagonal(rng)) b.quad(id[i][j], id[i + 1][j], id[i + 1][j + 1], id[i][j + 1]);
+      else b.quad(id[i + 1][j], id[i + 1][j + 1], id[i][j + 1], id[i][j]);
+    }
+  return b.take();
+}
+
+// Named complexes, in a fixed order (names present in every version).
+inline std::vector<std::pair<std::string, RawComplex>> digest_corpus(const std::string& data) {
+  std::vector<std::pair<std::string, RawComplex>> out;
+  for (const char* name : {"board-fin", "board-cylinder", "book:3", "book:5", "y-junction", "tetrahedron", "octahedron",
+                           "double-cone", "tetrahedron-flap", "box:4:3:1"})
+    out.emplace_back(name, synthetic_complex(name));
+  for (int k : {2, 4, 7}) {
+    BookOptions o;
+    o.pages = k;
+    o.widths.assign(k, 2);
+    for (int j = 0; j < k; ++j) o.widths[j] = 1 + (j * 7 + k) % 4;
+    out.emplace_back("book-widths-" + std::to_string(k), book(o));
+  }
+  for (const char* ma : {"box_4_3_1.ma", "box_7_4_3.ma"}) out.emplace_back(ma, read_ma(data + "/ma/" + ma));
+  for (const char* mesh : {"cube.off", "octahedron.off", "tripod.off", "cross.off"}) {
+    out.emplace_back(std::string("axis-") + mesh,
+                     build_medial_axis(data + "/meshes/" + mesh, MedialInputKind::Auto).complex);
+    out.emplace_back(std::string("refined-") + mesh,
+                     mesh_as_complex(refined_mesh(read_triangle_mesh(data + "/meshes/" + mesh), 800)));
+  }
+  out.emplace_back("axis-caffeine.cin", build_medial_axis(data + "/balls/caffeine.cin", MedialInputKind::Auto).complex);
+  for (std::uint32_t seed = 1; seed <= 6; ++seed) out.emplace_back("height-field", random_height_field(seed, 6));
+  return out;
+}
+
+}  // namespace grassfire::testing
