@@ -3,14 +3,17 @@
 #   ./run.sh main   install what is missing, build, regenerate the figures and the
 #                   proof-check report into paper-figures/out/ (open index.html)
 #   ./run.sh test   install what is missing, build, run the whole test suite (CTest)
+#   SANITIZE=1 ./run.sh test   the same with -fsanitize=address,undefined, in build-sanitize/
 # Works on a fresh Debian bookworm machine as root (or with sudo).
 set -euo pipefail
 cd "$(dirname "$0")"
 
 PACKAGES=(cmake make g++ libcgal-dev libgmp-dev libmpfr-dev libboost-graph-dev catch2
-          nlohmann-json3-dev librsvg2-bin libflint-arb-dev)
+          nlohmann-json3-dev librsvg2-bin libflint-arb-dev libpng-dev libgif-dev
+          pybind11-dev python3-dev python3-numpy)
 JOBS=${JOBS:-2}
-BUILD_DIR=${BUILD_DIR:-build}
+SANITIZE=${SANITIZE:-0}
+if [ "$SANITIZE" = 1 ]; then BUILD_DIR=${BUILD_DIR:-build-sanitize}; else BUILD_DIR=${BUILD_DIR:-build}; fi
 
 install_missing() {
   local missing=()
@@ -26,14 +29,16 @@ install_missing() {
 }
 
 build() {
-  cmake -S . -B "$BUILD_DIR" -DCMAKE_BUILD_TYPE=Release
+  local sanitize=OFF
+  [ "$SANITIZE" = 1 ] && sanitize=ON
+  cmake -S . -B "$BUILD_DIR" -DCMAKE_BUILD_TYPE=Release -DGF_SANITIZE=$sanitize
   cmake --build "$BUILD_DIR" -j"$JOBS"
 }
 
 main_job() {
   local out=paper-figures/out
   mkdir -p "$out"
-  "$BUILD_DIR"/proofs-checks/proof_checks --markdown "$out/proof-checks.md" --html "$out/proof-checks.html" \
+  "$BUILD_DIR"/proofs-checks/proof_checks --mutants --markdown "$out/proof-checks.md" --html "$out/proof-checks.html" \
     | tee "$out/proof-checks.txt"
   local checks=${PIPESTATUS[0]}
   "$BUILD_DIR"/paper-figures/paper_figures --out "$out"

@@ -13,7 +13,8 @@
 // Output: OUT/shapes_throughput.csv (one row per shape), OUT/shapes_throughput_summary.csv
 // (shapes, failures per pipeline, total, median and max seconds per pipeline, with the
 // first failure messages), the summary also on stderr.
-// Usage: bench_shapes_throughput FOLDER [OUT]
+// --shard I/N runs every N-th shape and writes its rows only (experiments/shard.h).
+// Usage: bench_shapes_throughput FOLDER [OUT] [--shard I/N] [--progress|--quiet]
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -31,8 +32,10 @@
 #include "burn2/feature_size.h"
 #include "burn2/potential_residue.h"
 #include "burn2/rate_pruning.h"
+#include "io/progress.h"
 #include "pipeline/edf2d.h"
 #include "shapes/load_shape.h"
+#include "shard.h"
 
 using namespace grassfire;
 
@@ -142,6 +145,8 @@ Stats stats(const std::vector<Row>& rows, double Row::*time, std::string Row::*e
 }  // namespace
 
 int main(int argc, char** argv) {
+  const experiments::Shard shard = experiments::take_shard(argc, argv);
+  take_verbosity_flags(argc, argv);
   if (argc < 2) {
     std::fprintf(stderr, "usage: bench_shapes_throughput FOLDER [OUT]\n");
     return 2;
@@ -156,8 +161,12 @@ int main(int argc, char** argv) {
     return 1;
   }
   std::sort(files.begin(), files.end());
+  files = experiments::shard_of(files, shard);
   std::vector<Row> rows;
+  Progress progress("bench_shapes_throughput " + shard.label(), files.size());
   for (const auto& f : files) {
+    progress.item(f.filename().string());
+    progress.advance();
     Row r;
     r.file = f.filename().string();
     try {
@@ -170,10 +179,8 @@ int main(int argc, char** argv) {
     }
     rows.push_back(r);
   }
-  std::ofstream os(out + "/shapes_throughput.csv");
-  os << "file,vertices,exact_nodes,exact_axis_s,exact_burn_s,exact_measures_s,burn2_measures_s,signatures_s,"
-        "exact_total_s,pr_local_maxima,pruned_edges,sampled_nodes,sampled_delaunay_s,sampled_axis_s,sampled_burn_s,"
-        "sampled_be_s,sampled_total_s,error\n";
+  progress.done();
+  std::vector<std::string> lines;
   for (const Row& r : rows) {
     char buf[512];
     std::snprintf(buf, sizeof buf, "%s,%zu,%zu,%.5f,%.5f,%.5f,%.5f,%.5f,%.5f,%u,%zu,%zu,%.5f,%.5f,%.5f,%.5f,%.5f,",
@@ -183,8 +190,14 @@ int main(int argc, char** argv) {
     std::string err = r.load_error;
     if (!r.exact_error.empty()) err += "exact: " + r.exact_error + " ";
     if (!r.sampled_error.empty()) err += "sampled: " + r.sampled_error;
-    os << buf << csv(err) << "\n";
+    lines.push_back(buf + csv(err));
   }
+  experiments::write_sorted_csv(out + "/shapes_throughput.csv",
+                                "file,vertices,exact_nodes,exact_axis_s,exact_burn_s,exact_measures_s,burn2_measures_s,"
+                                "signatures_s,exact_total_s,pr_local_maxima,pruned_edges,sampled_nodes,"
+                                "sampled_delaunay_s,sampled_axis_s,sampled_burn_s,sampled_be_s,sampled_total_s,error",
+                                lines);
+  if (experiments::rows_only(shard, out + "/shapes_throughput.csv")) return 0;
   std::ofstream sum(out + "/shapes_throughput_summary.csv");
   sum << "pipeline,shapes,ok,failed,total_s,median_s,max_s,failure_reasons\n";
   const struct {
@@ -201,7 +214,7 @@ int main(int argc, char** argv) {
     std::snprintf(buf, sizeof buf, "%s,%zu,%zu,%zu,%.3f,%.5f,%.4f,", p.name, rows.size(), s.ok, s.failed, s.total,
                   s.median, s.max);
     sum << buf << reasons << "\n";
-    std::fprintf(stderr, "%s%s\n", buf, reasons.c_str());
+    if (notes_enabled()) std::fprintf(stderr, "%s%s\n", buf, reasons.c_str());
   }
   return 0;
 }

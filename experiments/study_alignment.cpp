@@ -12,7 +12,9 @@
 // (per method, the IoU of every pair sorted, as curves).
 // The `children` class of the dataset is one child drawn 20 times with small variations;
 // the `stef` class (a skater in 20 poses) is the setting of Fig. 3.8 (body movement).
-// Usage: study_alignment SHAPES_DIR [OUT] [--class NAME]   (NAME: children by default)
+// --shard I/N writes every N-th shape's centres and every N-th pair, rows only (experiments/shard.h).
+// Usage: study_alignment SHAPES_DIR [OUT] [--class NAME] [--shard I/N] [--progress|--quiet]
+//   (NAME: children by default)
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -23,10 +25,12 @@
 #include <vector>
 
 #include "apps2d/alignment.h"
+#include "io/progress.h"
 #include "pipeline/edf2d.h"
 #include "plot_svg.h"
 #include "shapes/load_shape.h"
 #include "shapes/validate_shape.h"
+#include "shard.h"
 
 using namespace grassfire;
 
@@ -71,6 +75,8 @@ std::string fmt(const std::optional<Point2>& p) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  const experiments::Shard shard = experiments::take_shard(argc, argv);
+  take_verbosity_flags(argc, argv);
   std::string dir, out = ".", cls = "children";
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
@@ -82,7 +88,7 @@ int main(int argc, char** argv) {
       out = a;
   }
   if (dir.empty()) {
-    std::fprintf(stderr, "usage: study_alignment SHAPES_DIR [OUT] [--class NAME]\n");
+    std::fprintf(stderr, "usage: study_alignment SHAPES_DIR [OUT] [--class NAME] [--shard I/N] [--progress|--quiet]\n");
     return 2;
   }
   std::vector<Entry> shapes;
@@ -93,7 +99,7 @@ int main(int argc, char** argv) {
         shapes.push_back(load_entry(f));
       } catch (const InvalidShapeError& e) {
         skipped.push_back(e.what());
-        std::fprintf(stderr, "skipped: %s\n", e.what());
+        note(std::string("skipped: ") + e.what());
       }
     }
   } catch (const std::exception& e) {
@@ -104,18 +110,26 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "study_alignment: fewer than two '%s' shapes in %s\n", cls.c_str(), dir.c_str());
     return 1;
   }
-  std::ofstream centres(out + "/alignment_" + cls + "_centres.csv");
-  centres << "shape,centroid_x,centroid_y,bbox_x,bbox_y,ema_x,ema_y,pr_max_x,pr_max_y\n";
-  for (const Entry& e : shapes)
-    centres << e.name << "," << fmt(e.centres.centroid) << "," << fmt(e.centres.bounding_box) << ","
-            << fmt(e.centres.ema) << "," << fmt(e.centres.pr_maximum) << "\n";
+  // Shards split the shapes' rows and the pairs' rows (pair k of the i < j order); every
+  // shard loads every shape, which the pairs need.
+  std::vector<std::string> centre_rows;
+  for (std::size_t i = 0; i < shapes.size(); ++i)
+    if (shard.takes(i))
+      centre_rows.push_back(shapes[i].name + "," + fmt(shapes[i].centres.centroid) + "," +
+                            fmt(shapes[i].centres.bounding_box) + "," + fmt(shapes[i].centres.ema) + "," +
+                            fmt(shapes[i].centres.pr_maximum));
+  experiments::write_sorted_csv(out + "/alignment_" + cls + "_centres.csv",
+                                "shape,centroid_x,centroid_y,bbox_x,bbox_y,ema_x,ema_y,pr_max_x,pr_max_y", centre_rows);
 
-  std::ofstream pairs(out + "/alignment_" + cls + "_pairs.csv");
-  pairs << "a,b,method,shift_x,shift_y,iou\n";
+  std::vector<std::string> pair_rows;
   std::map<AlignmentMethod, std::vector<double>> iou;
   std::map<AlignmentMethod, std::size_t> beats_centroid;
-  for (std::size_t i = 0; i < shapes.size(); ++i)
-    for (std::size_t j = i + 1; j < shapes.size(); ++j) {
+  const std::size_t pair_count = shapes.size() * (shapes.size() - 1) / 2;
+  const std::size_t my_pairs = pair_count > shard.index ? (pair_count - shard.index + shard.count - 1) / shard.count : 0;
+  Progress progress("study_alignment " + cls + " " + shard.label(), my_pairs);
+  for (std::size_t i = 0, k = 0; i < shapes.size(); ++i)
+    for (std::size_t j = i + 1; j < shapes.size(); ++j, ++k) {
+      if (!shard.takes(k)) continue;
       double centroid_iou = std::nan("");
       for (AlignmentMethod m : all_alignment_methods()) {
         const std::optional<Point2> shift = alignment_shift(shapes[i].centres, shapes[j].centres, m);
@@ -125,11 +139,15 @@ int main(int argc, char** argv) {
         beats_centroid[m] += v > centroid_iou;
         iou[m].push_back(v);
         char buf[256];
-        std::snprintf(buf, sizeof buf, "%s,%s,%s,%.6f,%.6f,%.6f\n", shapes[i].name.c_str(), shapes[j].name.c_str(),
+        std::snprintf(buf, sizeof buf, "%s,%s,%s,%.6f,%.6f,%.6f", shapes[i].name.c_str(), shapes[j].name.c_str(),
                       to_string(m), shift->x, shift->y, v);
-        pairs << buf;
+        pair_rows.push_back(buf);
       }
+      progress.advance();
     }
+  progress.done();
+  experiments::write_sorted_csv(out + "/alignment_" + cls + "_pairs.csv", "a,b,method,shift_x,shift_y,iou", pair_rows);
+  if (experiments::rows_only(shard, out + "/alignment_" + cls + "_{centres,pairs}.csv")) return 0;
 
   std::ofstream summary(out + "/alignment_" + cls + "_summary.csv");
   summary << "method,shapes,pairs,mean_iou,median_iou,min_iou,pairs_better_than_centroid\n";
@@ -149,7 +167,7 @@ int main(int argc, char** argv) {
     std::snprintf(buf, sizeof buf, "%s,%zu,%zu,%.4f,%.4f,%.4f,%zu\n", to_string(m), shapes.size(), v.size(), mean,
                   median, v.empty() ? std::nan("") : v.front(), beats_centroid[m]);
     summary << buf;
-    std::fprintf(stderr, "%s", buf);
+    if (notes_enabled()) std::fprintf(stderr, "%s", buf);
     if (v.empty()) continue;
     plot::Series s;
     s.name = std::string(to_string(m)) + " (mean " + std::to_string(mean).substr(0, 5) + ")";

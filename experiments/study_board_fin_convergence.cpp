@@ -5,19 +5,25 @@
 // |x| <= 7, y <= 7, z <= 7 (well inside the truncation at E = 10, where the closed form is
 // exact: BT <= 10 there), and the kink: where along N the back side's arrival overtakes the
 // fin's (the exact kink is t = 2 + sqrt 2 from c, i.e. (2 + sqrt2, 2 + sqrt2, 0)).
-// Writes CSV to stdout and to OUT/board_fin_convergence.csv, and a log-log plot to
-// OUT/board_fin_convergence.svg. Usage: study_board_fin_convergence [OUT] [--quick]
+// Writes CSV to stdout and to OUT/board_fin_convergence.csv (one row per h), the order of
+// convergence to OUT/board_fin_convergence_summary.csv and a log-log plot to
+// OUT/board_fin_convergence.svg. --shard I/N runs every N-th h and writes its rows only
+// (experiments/shard.h); --quiet writes nothing to stdout.
+// Usage: study_board_fin_convergence [OUT] [--quick] [--shard I/N] [--progress|--quiet]
 #include <cmath>
 #include <cstdio>
 #include <fstream>
 #include <iostream>
 #include <sstream>
+#include <stdexcept>
 #include <string>
 
 #include "burn3/burn3_reference.h"
 #include "burn3/junction_arrivals.h"
 #include "complex3/synthetic_complexes.h"
+#include "io/progress.h"
 #include "io/render3d.h"
+#include "shard.h"
 
 using namespace grassfire;
 
@@ -97,9 +103,33 @@ void plot(const std::vector<Row>& rows, const std::string& path) {
   c.save(path);
 }
 
+// Rows: one per h; they do not depend on each other, so shards concatenate.
+std::string row_csv(const Row& r) {
+  char buf[512];
+  std::snprintf(buf, sizeof buf, "%.6g,%llu,%.4f,%llu,%.6e,%.6e,%.3e,%llu,%.6f,%.6f,%.3e", r.h,
+                static_cast<unsigned long long>(r.steiner), r.seconds, static_cast<unsigned long long>(r.points),
+                r.max_error, r.mean_error, r.min_error, static_cast<unsigned long long>(r.kinks), r.kink_t,
+                1 + r.kink_t / std::sqrt(2.0), std::abs(r.kink_t - (2 + std::sqrt(2.0))));
+  return buf;
+}
+
+// The order of convergence: max error at 2h over max error at h (2 for first order).
+void write_summary(const std::vector<Row>& rows, const std::string& path) {
+  std::ofstream os(path);
+  os << "h,max_error,max_error_ratio\n";
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    char buf[128];
+    std::snprintf(buf, sizeof buf, "%.6g,%.6e,%.3f\n", rows[i].h, rows[i].max_error,
+                  i == 0 ? NAN : rows[i - 1].max_error / rows[i].max_error);
+    os << buf;
+  }
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
+  const experiments::Shard shard = experiments::take_shard(argc, argv);
+  take_verbosity_flags(argc, argv);
   std::string out = ".";
   bool quick = false;
   for (int i = 1; i < argc; ++i) {
@@ -116,12 +146,20 @@ int main(int argc, char** argv) {
   }();
   const std::vector<std::uint32_t> n_chain = singular_curve_from(mc, c);
   auto inside = [](const Vec3d& p) { return std::abs(p[0]) <= 7 && p[1] <= 7 && p[2] <= 7; };
+  std::vector<int> levels(quick ? 4 : 7);
+  for (std::size_t k = 0; k < levels.size(); ++k) levels[k] = static_cast<int>(k);
+  levels = experiments::shard_of(levels, shard);
   std::vector<Row> rows;
-  const int levels = quick ? 4 : 7;
-  for (int k = 0; k < levels; ++k) {
+  Progress progress("study_board_fin_convergence " + shard.label(), levels.size());
+  for (const int k : levels) {
     const double h = 0.5 / std::pow(2.0, k);
+    progress.item("h = " + std::to_string(h));
     const DiscreteBurning d = burn_discrete(mc, {h});
     const ErrorSummary e = summarize_error(mc, d, board_fin_burning_time, inside);
+    if (e.points == 0 || e.points != e.considered)  // every point of the region compared, none one-sided
+      throw std::logic_error("study_board_fin_convergence: compared " + std::to_string(e.points) + " of " +
+                             std::to_string(e.considered) + " points (" + std::to_string(e.one_sided_infinite) +
+                             " infinite on one side only)");
     const auto along = arrivals_along_curve(mc, d, c, n_chain, [&](std::uint32_t t) { return side_of(mc, t); });
     const std::vector<double> kinks = kinks_along_curve(along, kBack, kFin);
     Row r;
@@ -130,23 +168,17 @@ int main(int argc, char** argv) {
     r.kinks = kinks.size();
     if (!kinks.empty()) r.kink_t = kinks.front();
     rows.push_back(r);
+    progress.advance();
   }
-  std::ostringstream csv;
-  csv << "h,steiner_points,seconds,points_compared,max_error,mean_error,min_error,max_error_ratio,kink_count,kink_t,"
-         "kink_x,kink_error\n";
-  const double t_exact = 2 + std::sqrt(2.0);
-  for (std::size_t i = 0; i < rows.size(); ++i) {
-    const Row& r = rows[i];
-    char buf[512];
-    std::snprintf(buf, sizeof buf, "%.6g,%llu,%.4f,%llu,%.6e,%.6e,%.3e,%.3f,%llu,%.6f,%.6f,%.3e\n", r.h,
-                  static_cast<unsigned long long>(r.steiner), r.seconds, static_cast<unsigned long long>(r.points),
-                  r.max_error, r.mean_error, r.min_error, i == 0 ? NAN : rows[i - 1].max_error / r.max_error,
-                  static_cast<unsigned long long>(r.kinks), r.kink_t, 1 + r.kink_t / std::sqrt(2.0),
-                  std::abs(r.kink_t - t_exact));
-    csv << buf;
-  }
-  std::cout << csv.str();
-  std::ofstream(out + "/board_fin_convergence.csv") << csv.str();
+  progress.done();
+  std::vector<std::string> lines;
+  for (const Row& r : rows) lines.push_back(row_csv(r));
+  const std::string header =
+      "h,steiner_points,seconds,points_compared,max_error,mean_error,min_error,kink_count,kink_t,kink_x,kink_error";
+  if (notes_enabled()) experiments::write_sorted_csv(std::cout, header, lines);
+  experiments::write_sorted_csv(out + "/board_fin_convergence.csv", header, lines);
+  if (experiments::rows_only(shard, out + "/board_fin_convergence.csv")) return 0;
+  write_summary(rows, out + "/board_fin_convergence_summary.csv");
   plot(rows, out + "/board_fin_convergence.svg");
   return 0;
 }

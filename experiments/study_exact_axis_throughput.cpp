@@ -4,27 +4,69 @@
 // For each *.json / *.wkt file: load and validate the shape (shapes/load_shape.h), build
 // the exact axis (medial2/polygon_axis.h), run the extended grassfire; with --validate
 // also the definition-level check (medial2/polygon_axis_validate.h).
-// Output (stdout): one CSV row per shape: file,construction,vertices,nodes,edges,
+// Output (stdout): one CSV row per shape, sorted: file,construction,vertices,nodes,edges,
 // parabolic_arcs,contracted,uncertified_contractions,ball_refinements,axis_s,edf_s,
 // valid,error; then a summary line on stderr: shapes, failures, total seconds.
-// Usage: study_exact_axis_throughput FOLDER [--validate]
+// --shard I/N runs every N-th shape (experiments/shard.h); --progress / --quiet as the program.
+// Usage: study_exact_axis_throughput FOLDER [--validate] [--shard I/N] [--progress|--quiet]
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
+#include <iostream>
 #include <string>
 #include <vector>
 
 #include "burn2/extended_grassfire.h"
+#include "io/progress.h"
 #include "medial2/polygon_axis.h"
 #include "medial2/polygon_axis_validate.h"
 #include "shapes/load_shape.h"
+#include "shard.h"
 
 using namespace grassfire;
 
+namespace {
+
+std::string run_shape(const std::filesystem::path& f, bool validate, int& failures, double& total) {
+  char row[1024];
+  try {
+    const Shape2 s = load_shape(f.string());
+    auto t0 = std::chrono::steady_clock::now();
+    PolygonAxisReport rep;
+    const MedialGraph g = exact_polygon_axis(s, {}, &rep);
+    auto t1 = std::chrono::steady_clock::now();
+    const GrassfireResult r = extended_grassfire(g);
+    auto t2 = std::chrono::steady_clock::now();
+    const double axis_s = std::chrono::duration<double>(t1 - t0).count();
+    const double edf_s = std::chrono::duration<double>(t2 - t1).count();
+    total += axis_s + edf_s;
+    std::string valid = "not-run";
+    if (validate) {
+      const AxisValidation v = validate_polygon_axis(g);
+      valid = v.ok() ? "yes" : "no: " + v.failures.front();
+      failures += !v.ok();
+    }
+    std::snprintf(row, sizeof row, "%s,%s,%llu,%u,%u,%llu,%llu,%llu,%llu,%.5f,%.5f,\"%s\",", f.filename().c_str(),
+                  to_string(rep.construction), (unsigned long long)rep.polygon_vertices, g.node_count(),
+                  g.edge_count(), (unsigned long long)rep.parabolic_arcs, (unsigned long long)rep.contracted_edges,
+                  (unsigned long long)rep.uncertified_contractions, (unsigned long long)rep.ball_refinements, axis_s,
+                  edf_s, valid.c_str());
+    (void)r;
+  } catch (const std::exception& e) {
+    ++failures;
+    std::snprintf(row, sizeof row, "%s,,,,,,,,,,,,\"%s\"", f.filename().c_str(), e.what());
+  }
+  return row;
+}
+
+}  // namespace
+
 int main(int argc, char** argv) {
+  const experiments::Shard shard = experiments::take_shard(argc, argv);
+  take_verbosity_flags(argc, argv);
   if (argc < 2) {
-    std::fprintf(stderr, "usage: study_exact_axis_throughput FOLDER [--validate]\n");
+    std::fprintf(stderr, "usage: study_exact_axis_throughput FOLDER [--validate] [--shard I/N] [--progress|--quiet]\n");
     return 2;
   }
   const bool validate = argc > 2 && std::string(argv[2]) == "--validate";
@@ -37,39 +79,22 @@ int main(int argc, char** argv) {
     return 1;
   }
   std::sort(files.begin(), files.end());
-  std::printf("file,construction,vertices,nodes,edges,parabolic_arcs,contracted,uncertified_contractions,"
-              "ball_refinements,axis_s,edf_s,valid,error\n");
+  files = experiments::shard_of(files, shard);
   int failures = 0;
   double total = 0;
+  std::vector<std::string> rows;
+  Progress progress("study_exact_axis_throughput " + shard.label(), files.size());
   for (const auto& f : files) {
-    try {
-      const Shape2 s = load_shape(f.string());
-      auto t0 = std::chrono::steady_clock::now();
-      PolygonAxisReport rep;
-      const MedialGraph g = exact_polygon_axis(s, {}, &rep);
-      auto t1 = std::chrono::steady_clock::now();
-      const GrassfireResult r = extended_grassfire(g);
-      auto t2 = std::chrono::steady_clock::now();
-      const double axis_s = std::chrono::duration<double>(t1 - t0).count();
-      const double edf_s = std::chrono::duration<double>(t2 - t1).count();
-      total += axis_s + edf_s;
-      std::string valid = "not-run";
-      if (validate) {
-        const AxisValidation v = validate_polygon_axis(g);
-        valid = v.ok() ? "yes" : "no: " + v.failures.front();
-        failures += !v.ok();
-      }
-      std::printf("%s,%s,%llu,%u,%u,%llu,%llu,%llu,%llu,%.5f,%.5f,\"%s\",\n", f.filename().c_str(),
-                  to_string(rep.construction), (unsigned long long)rep.polygon_vertices, g.node_count(),
-                  g.edge_count(), (unsigned long long)rep.parabolic_arcs, (unsigned long long)rep.contracted_edges,
-                  (unsigned long long)rep.uncertified_contractions, (unsigned long long)rep.ball_refinements, axis_s,
-                  edf_s, valid.c_str());
-      (void)r;
-    } catch (const std::exception& e) {
-      ++failures;
-      std::printf("%s,,,,,,,,,,,,\"%s\"\n", f.filename().c_str(), e.what());
-    }
+    progress.item(f.filename().string());
+    rows.push_back(run_shape(f, validate, failures, total));
+    progress.advance();
   }
-  std::fprintf(stderr, "shapes %zu, failures %d, total axis+edf seconds %.3f\n", files.size(), failures, total);
+  progress.done();
+  experiments::write_sorted_csv(std::cout,
+                                "file,construction,vertices,nodes,edges,parabolic_arcs,contracted,"
+                                "uncertified_contractions,ball_refinements,axis_s,edf_s,valid,error",
+                                rows);
+  if (notes_enabled())
+    std::fprintf(stderr, "shapes %zu, failures %d, total axis+edf seconds %.3f\n", files.size(), failures, total);
   return failures == 0 ? 0 : 1;
 }

@@ -15,9 +15,10 @@
 // Output: OUT/sampling_convergence.csv (one row per shape and N), OUT/sampling_convergence
 // _summary.csv (per N: mean and median over shapes, slope of the mean against the previous
 // N in log-log), OUT/sampling_convergence.svg (log-log plot of the means).
-// Usage: study_sampling_convergence SHAPES_DIR [OUT] [--quick]
+// Usage: study_sampling_convergence SHAPES_DIR [OUT] [--quick] [--shard I/N] [--progress|--quiet]
 //   SHAPES_DIR holds the dataset's *.json files (e.g. /work/shared/data/shapes2d);
-//   --quick runs N = 500, 1000, 2000 only.
+//   --quick runs N = 500, 1000, 2000 only; --shard I/N runs every N-th shape of the list
+//   and writes its rows only (experiments/shard.h).
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -28,11 +29,13 @@
 #include <vector>
 
 #include "apps2d/axis_correspondence.h"
+#include "io/progress.h"
 #include "pipeline/edf2d.h"
 #include "plot_svg.h"
 #include "shapes/builtin_shapes.h"
 #include "shapes/load_shape.h"
 #include "shapes/resample.h"
+#include "shard.h"
 
 using namespace grassfire;
 
@@ -192,6 +195,8 @@ void write_plot(const std::vector<Row>& rows, const std::string& path) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  const experiments::Shard shard = experiments::take_shard(argc, argv);
+  take_verbosity_flags(argc, argv);
   std::string dir, out = ".";
   bool quick = false;
   for (int i = 1; i < argc; ++i) {
@@ -204,24 +209,25 @@ int main(int argc, char** argv) {
       out = a;
   }
   if (dir.empty()) {
-    std::fprintf(stderr, "usage: study_sampling_convergence SHAPES_DIR [OUT] [--quick]\n");
+    std::fprintf(stderr, "usage: study_sampling_convergence SHAPES_DIR [OUT] [--quick] [--shard I/N] [--progress|--quiet]\n");
     return 2;
   }
   const std::vector<std::size_t> levels =
       quick ? std::vector<std::size_t>{500, 1000, 2000} : std::vector<std::size_t>{500, 1000, 2000, 4000, 8000, 16000};
+  std::vector<std::pair<std::string, std::string>> inputs;  // (argument, label)
+  for (const char* name : kShapes) inputs.emplace_back(dir + "/" + name + ".json", name);
+  for (const char* name : kBuiltins) inputs.emplace_back(std::string("builtin:") + name, name);
+  inputs = experiments::shard_of(inputs, shard);
   std::vector<Row> rows;
-  for (const char* name : kShapes) {
-    const auto r = run_shape(dir + "/" + name + ".json", name, levels);
+  Progress progress("study_sampling_convergence " + shard.label(), inputs.size());
+  for (const auto& [arg, label] : inputs) {
+    progress.item(label);
+    const auto r = run_shape(arg, label, levels);
     rows.insert(rows.end(), r.begin(), r.end());
-    std::fprintf(stderr, "%s done\n", name);
+    progress.advance();
   }
-  for (const char* name : kBuiltins) {
-    const auto r = run_shape(std::string("builtin:") + name, name, levels);
-    rows.insert(rows.end(), r.begin(), r.end());
-  }
-  std::ofstream os(out + "/sampling_convergence.csv");
-  os << "shape,samples,nodes,compared,infinite,max_edf_error,max_edf_error_near,mean_edf_error,p95_edf_error,p99_edf_error,"
-        "max_node_offset,ema_distance,hausdorff,seconds,error\n";
+  progress.done();
+  std::vector<std::string> lines;
   std::size_t failures = 0;
   for (const Row& r : rows) {
     char buf[512];
@@ -230,12 +236,17 @@ int main(int argc, char** argv) {
                   r.cmp.mean_edf_error,
                   r.cmp.p95_edf_error, r.cmp.p99_edf_error, r.cmp.max_node_offset, r.cmp.ema_distance, r.cmp.hausdorff,
                   r.seconds);
-    os << buf << csv_text(r.error) << "\n";
+    lines.push_back(buf + csv_text(r.error));
     failures += !r.error.empty();
   }
+  experiments::write_sorted_csv(out + "/sampling_convergence.csv",
+                                "shape,samples,nodes,compared,infinite,max_edf_error,max_edf_error_near,mean_edf_error,"
+                                "p95_edf_error,p99_edf_error,max_node_offset,ema_distance,hausdorff,seconds,error",
+                                lines);
+  if (experiments::rows_only(shard, out + "/sampling_convergence.csv")) return failures ? 1 : 0;
   write_summary(rows, out + "/sampling_convergence_summary.csv");
   write_plot(rows, out + "/sampling_convergence.svg");
-  std::fprintf(stderr, "%zu rows, %zu failures; wrote %s/sampling_convergence{.csv,_summary.csv,.svg}\n", rows.size(),
-               failures, out.c_str());
+  note(std::to_string(rows.size()) + " rows, " + std::to_string(failures) + " failures; wrote " + out +
+       "/sampling_convergence{.csv,_summary.csv,.svg}");
   return failures ? 1 : 0;
 }

@@ -19,7 +19,8 @@
 // amplitude: median and max over shapes and seeds, and the largest drift / amplitude with
 // its shape), OUT/stability_ema.svg, OUT/stability_edf.svg and OUT/stability_pr.svg
 // (log-log, median and max).
-// Usage: study_stability SHAPES_DIR [OUT] [--quick]
+// --shard I/N runs every N-th shape of the list and writes its rows only (experiments/shard.h).
+// Usage: study_stability SHAPES_DIR [OUT] [--quick] [--shard I/N] [--progress|--quiet]
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -34,10 +35,12 @@
 #include "apps2d/perturbation.h"
 #include "burn2/closest_points.h"
 #include "burn2/potential_residue.h"
+#include "io/progress.h"
 #include "pipeline/edf2d.h"
 #include "plot_svg.h"
 #include "shapes/load_shape.h"
 #include "shapes/validate_shape.h"
+#include "shard.h"
 
 using namespace grassfire;
 
@@ -196,6 +199,8 @@ std::vector<std::string> shape_args(const std::string& dir) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  const experiments::Shard shard = experiments::take_shard(argc, argv);
+  take_verbosity_flags(argc, argv);
   std::string dir, out = ".";
   bool quick = false;
   for (int i = 1; i < argc; ++i) {
@@ -208,21 +213,21 @@ int main(int argc, char** argv) {
       out = a;
   }
   if (dir.empty()) {
-    std::fprintf(stderr, "usage: study_stability SHAPES_DIR [OUT] [--quick]\n");
+    std::fprintf(stderr, "usage: study_stability SHAPES_DIR [OUT] [--quick] [--shard I/N] [--progress|--quiet]\n");
     return 2;
   }
+  std::vector<std::string> inputs = {"square"};  // "square": the unit square, else a shape file
+  std::vector<std::string> args = shape_args(dir);
+  if (quick) args.resize(std::min<std::size_t>(args.size(), 3));
+  inputs.insert(inputs.end(), args.begin(), args.end());
+  inputs = experiments::shard_of(inputs, shard);
   std::vector<Original> originals;
   try {
-    auto add = [&](const std::string& name, Shape2 shape) {
+    for (const std::string& a : inputs) {
       originals.emplace_back();
-      originals.back().name = name;
-      originals.back().shape = std::move(shape);
-    };
-    add("square", unit_square());
-    std::vector<std::string> args = shape_args(dir);
-    if (quick) args.resize(std::min<std::size_t>(args.size(), 3));
-    for (const std::string& a : args) add(std::filesystem::path(a).stem().string(), load_shape(a));
-    for (Original& o : originals) {
+      Original& o = originals.back();
+      o.name = a == "square" ? a : std::filesystem::path(a).stem().string();
+      o.shape = a == "square" ? unit_square() : load_shape(a);
       o.diameter = shape_diameter(o.shape);
       o.axis = exact_axis(o.shape);
       o.pr_maximum = pr_maximum(*o.axis.graph);
@@ -233,14 +238,16 @@ int main(int argc, char** argv) {
   }
   const std::uint64_t seeds = quick ? 1 : 2;
   std::vector<Run> runs;
+  Progress progress("study_stability " + shard.label(), originals.size());
   for (const Original& o : originals) {
+    progress.item(o.name);
     for (PerturbationKind kind : {PerturbationKind::Uniform, PerturbationKind::OneSided})
       for (double a : kAmplitudes)
         for (std::uint64_t seed = 1; seed <= seeds; ++seed) runs.push_back(perturb_and_compare(o, kind, a, seed));
-    std::fprintf(stderr, "%s done\n", o.name.c_str());
+    progress.advance();
   }
-  std::ofstream os(out + "/stability.csv");
-  os << "shape,kind,amplitude,seed,attempts,vertices,nodes,ema_drift,edf_change,edf_p95,edf_mean,pr_drift,error\n";
+  progress.done();
+  std::vector<std::string> lines;
   std::size_t failures = 0;
   for (const Run& r : runs) {
     char buf[512];
@@ -249,13 +256,19 @@ int main(int argc, char** argv) {
                   r.nodes, r.ema_drift, r.edf_change, r.edf_p95, r.edf_mean, r.pr_drift);
     std::string err = r.error;
     std::replace(err.begin(), err.end(), ',', ';');
-    os << buf << err << "\n";
+    std::replace(err.begin(), err.end(), '\n', ' ');
+    lines.push_back(buf + err);
     failures += !r.error.empty();
   }
+  experiments::write_sorted_csv(out + "/stability.csv",
+                                "shape,kind,amplitude,seed,attempts,vertices,nodes,ema_drift,edf_change,edf_p95,"
+                                "edf_mean,pr_drift,error",
+                                lines);
+  if (experiments::rows_only(shard, out + "/stability.csv")) return 0;
   write_summary(runs, out + "/stability_summary.csv");
   write_plot(runs, &Run::ema_drift, "EMA drift", out + "/stability_ema.svg");
   write_plot(runs, &Run::edf_p95, "EDF change (95th percentile)", out + "/stability_edf.svg");
   write_plot(runs, &Run::pr_drift, "PR maximum drift", out + "/stability_pr.svg");
-  std::fprintf(stderr, "%zu runs, %zu failed (see the error column)\n", runs.size(), failures);
+  note(std::to_string(runs.size()) + " runs, " + std::to_string(failures) + " failed (see the error column)");
   return 0;
 }

@@ -27,21 +27,6 @@ const BoardFinScene& board_fin_scene() {
   return scene;
 }
 
-double board_fin_lpdf(const Vec3d& p) {
-  const double x = p[0], y = p[1], z = p[2];
-  if (z > 0 || (x == y && x >= 1)) return std::sqrt(2.0) * std::max(0.0, x - 1);  // zone 1 and N
-  return board_fin_lpdf_zone(p) == 2 ? std::hypot(x - 1, y - 1) : y;
-}
-
-// A plate centred on the front side (y > x) that crosses N into the fin avoids B only if
-// the segment down to B crosses N (x > 1); it is then bounded by c alone, at |p - c|,
-// which beats y exactly below the parabola P: |p - c| = y.
-int board_fin_lpdf_zone(const Vec3d& p) {
-  const double x = p[0], y = p[1];
-  if (p[2] > 0) return 1;
-  return (y > x && x > 1 && std::hypot(x - 1, y - 1) > y) ? 2 : 3;
-}
-
 Point3d p3(const Vec3d& v) { return {v[0], v[1], v[2]}; }
 
 double sector_burn_time(const MedialComplex& mc, const DiscreteBurning& d, std::uint32_t t, int c) {

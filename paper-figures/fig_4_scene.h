@@ -1,5 +1,5 @@
 // fig_4_scene.h -- what the chapter-4 figures share: the board and fin with its burning
-// time, the closed-form LPDF, and drawing a complex with a scalar field and iso-curves.
+// time (the closed-form LPDF is burn3/lpdf.h), and drawing a complex with a scalar field and iso-curves.
 #pragma once
 
 #include <array>
@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "burn3/discrete_burning.h"
+#include "burn3/lpdf.h"
 #include "complex3/medial_complex.h"
 #include "io/render3d.h"
 
@@ -22,12 +23,6 @@ struct BoardFinScene {
   BoardFinScene();
 };
 const BoardFinScene& board_fin_scene();
-
-// LPDF of the zero-radius board and fin (4.1.2, Fig. 4.3): zone 1 (fin) distance to F;
-// zone 2 (front side y > x, x > 1, |p - c| > y: the wedge between N and P beyond k)
-// |p - c|; zone 3 (rest of the board) y.
-double board_fin_lpdf(const Vec3d& p);
-int board_fin_lpdf_zone(const Vec3d& p);
 
 Point3d p3(const Vec3d& v);
 

@@ -1,9 +1,10 @@
 // main.cpp -- regenerates the dissertation's figures into one folder with an index.html.
 //
-// usage: paper_figures [--out DIR] [--data DIR] [--only ID] [--list]
+// usage: paper_figures [--out DIR] [--data DIR] [--only ID] [--list] [--progress|--quiet]
 // Writes every registered figure, then DIR/index.html, which shows each figure (as PNG,
 // produced from the SVG by run.sh) with its caption, and inlines DIR/proof-checks.html
-// (the proof-check report) when it exists. Exit code 1 when a generator fails.
+// (the proof-check report: rows, references, verdicts and the table of mutants each row
+// detected) when it exists. Exit code 1 when a generator fails.
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -15,6 +16,8 @@
 #include <sstream>
 
 #include "figure_registry.h"
+#include "io/progress.h"
+#include "io/xml_escape.h"
 
 namespace grassfire::figures {
 
@@ -31,22 +34,6 @@ std::string gallery_name(const std::string& file) {
   return file;
 }
 
-// Captions are plain text: '<', '>' and '&' would otherwise start markup and cut them off.
-std::string html_escape(const std::string& text) {
-  std::string out;
-  for (char ch : text) {
-    if (ch == '<')
-      out += "&lt;";
-    else if (ch == '>')
-      out += "&gt;";
-    else if (ch == '&')
-      out += "&amp;";
-    else
-      out += ch;
-  }
-  return out;
-}
-
 void write_index(const std::string& dir, const std::vector<std::pair<FigureEntry, std::vector<FigureFile>>>& done) {
   std::ofstream os(dir + "/index.html");
   os << "<!doctype html>\n<html><head><meta charset=\"utf-8\"><title>grassfire: figures of Liu 2011</title>\n"
@@ -54,21 +41,21 @@ void write_index(const std::string& dir, const std::vector<std::pair<FigureEntry
         "figure{display:inline-block;vertical-align:top;margin:0.5em;max-width:560px}"
         "img{max-width:100%;border:1px solid #ccc}figcaption{font-size:0.9em}"
         "table.checks{border-collapse:collapse}table.checks td,table.checks th{border:1px solid #bbb;padding:3px 6px}"
-        "td.pass{color:#070}td.fail{color:#b00;font-weight:bold}</style></head><body>\n"
+        "td.pass{color:#070}td.fail,p.fail{color:#b00;font-weight:bold}td.notchecked{color:#777}</style></head><body>\n"
         "<h1>grassfire: the figures of <i>Multi-Dimensional Medial Geometry</i> (Liu 2011), regenerated</h1>\n";
   std::ifstream checks(dir + "/proof-checks.html");
   if (checks) {
     os << "<h2>Proof checks</h2>\n" << checks.rdbuf() << "\n";
   }
   for (const auto& [entry, files] : done) {
-    os << "<h2 id=\"" << entry.id << "\">" << html_escape(entry.title) << "</h2>\n";
+    os << "<h2 id=\"" << entry.id << "\">" << xml_escape(entry.title) << "</h2>\n";
     for (const FigureFile& f : files) {
       const std::string shown = gallery_name(f.file);
       if (shown.size() > 4 && shown.substr(shown.size() - 4) == ".png")
         os << "<figure><a href=\"" << f.file << "\"><img src=\"" << shown << "\" alt=\"" << f.file
-           << "\"></a><figcaption>" << html_escape(f.caption) << "</figcaption></figure>\n";
+           << "\"></a><figcaption>" << xml_escape(f.caption) << "</figcaption></figure>\n";
       else
-        os << "<p><a href=\"" << f.file << "\">" << f.file << "</a>: " << html_escape(f.caption) << "</p>\n";
+        os << "<p><a href=\"" << f.file << "\">" << f.file << "</a>: " << xml_escape(f.caption) << "</p>\n";
     }
   }
   os << "</body></html>\n";
@@ -139,6 +126,7 @@ std::vector<FigureEntry> registered_figures() {
 
 int main(int argc, char** argv) {
   using namespace grassfire::figures;
+  grassfire::take_verbosity_flags(argc, argv);
   FigureContext ctx;
   ctx.out_dir = "paper-figures/out";
   ctx.data_dir = GF_PROJECT_DATA;
@@ -162,9 +150,10 @@ int main(int argc, char** argv) {
       for (const FigureEntry& f : registered_figures()) std::cout << f.id << "\t" << f.title << "\n";
       return 0;
     } else if (a == "--help" || a == "-h") {
-      std::cout << "usage: paper_figures [--out DIR] [--data DIR] [--only ID] [--list]\n"
+      std::cout << "usage: paper_figures [--out DIR] [--data DIR] [--only ID] [--list] [--progress|--quiet]\n"
                    "Regenerates the dissertation's figures as SVG into DIR (default paper-figures/out)\n"
-                   "and writes DIR/index.html.\n";
+                   "and writes DIR/index.html. --quiet prints only failures; --progress shows progress\n"
+                   "even when stderr is not a terminal.\n";
       return 0;
     } else {
       std::cerr << "paper_figures: unknown argument '" << a << "' (see --help)\n";
@@ -174,19 +163,25 @@ int main(int argc, char** argv) {
   std::filesystem::create_directories(ctx.out_dir);
   std::vector<std::pair<FigureEntry, std::vector<FigureFile>>> done;
   int failures = 0;
-  for (const FigureEntry& f : registered_figures()) {
-    if (!only.empty() && f.id != only) continue;
+  std::vector<FigureEntry> figures;
+  for (const FigureEntry& f : registered_figures())
+    if (only.empty() || f.id == only) figures.push_back(f);
+  grassfire::Progress progress("paper_figures", figures.size());
+  for (const FigureEntry& f : figures) {
+    progress.item(f.id);
     const auto start = std::chrono::steady_clock::now();
     try {
       done.emplace_back(f, run_isolated(f, ctx));
       const double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-      std::cerr << "paper_figures: " << f.id << ": " << done.back().second.size() << " files in " << secs << " s"
-                << std::endl;
+      grassfire::note("paper_figures: " + f.id + ": " + std::to_string(done.back().second.size()) + " files in " +
+                      std::to_string(secs) + " s");
     } catch (const std::exception& e) {
       std::cerr << "paper_figures: " << f.id << " failed: " << e.what() << std::endl;
       ++failures;
     }
+    progress.advance();
   }
+  progress.done();
   write_index(ctx.out_dir, done);
   return failures == 0 ? 0 : 1;
 }

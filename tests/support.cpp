@@ -112,7 +112,9 @@ CliRun run_cli(const std::string& args) {
 }
 
 std::string temp_path(const std::string& name) {
-  return (std::filesystem::temp_directory_path() / (std::to_string(getpid()) + "_" + name)).string();
+  const std::filesystem::path dir = std::filesystem::temp_directory_path() / ("grassfire_tests_" + std::to_string(getpid()));
+  std::filesystem::create_directories(dir);
+  return (dir / name).string();
 }
 
 }  // namespace grassfire::testing

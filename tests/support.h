@@ -47,8 +47,10 @@ std::string error_of(F f) {
   return "no error";
 }
 
-// A path in the temporary folder that no other test process uses at the same time
-// (CTest runs test cases in parallel): <tmp>/<pid>_<name>.
+// A path in this process's own temporary folder, which no other test process uses (CTest
+// runs test cases in parallel): <tmp>/grassfire_tests_<pid>/<name>, the folder created.
+// Tests write nowhere else: not into the source tree, the working directory or a fixed
+// temporary name.
 std::string temp_path(const std::string& name);
 
 }  // namespace grassfire::testing

@@ -21,7 +21,7 @@ namespace {
 
 std::string data(const std::string& name) { return std::string(GF_TEST_DATA) + "/3d/" + name; }
 
-std::string temp_path(const std::string& name) { return "/tmp/grassfire_complex3_" + name; }
+std::string temp_path(const std::string& name) { return grassfire::testing::temp_path("grassfire_complex3_" + name); }
 
 // Each file must be rejected by `read` with a message containing the expected text.
 template <class Read>
@@ -132,9 +132,16 @@ TEST_CASE("meshes: polygonal faces become fans, OFF family headers are read", "[
   CHECK(c.vertices[1] == std::array<double, 3>{1, 0, 0});
   CHECK(c.triangles == std::vector<std::array<std::uint32_t, 3>>{{0, 1, 2}, {0, 2, 3}, {0, 3, 4}});
   TriangleMesh3 m;
-  CHECK_FALSE(append_polygon_face(m, {0, 1}));
-  CHECK_FALSE(append_polygon_face(m, {0, 1, 2, 1}));
+  CHECK(append_polygon_face(m, {0, 1}) == PolygonFace::Degenerate);
+  CHECK(append_polygon_face(m, {0, 1, 1, 0}) == PolygonFace::Degenerate);
+  CHECK(append_polygon_face(m, {0, 1, 2, 1}) == PolygonFace::RepeatsVertex);
   CHECK(m.triangles.empty());
+  CHECK(m.cleanup.degenerate_faces == 2);
+  // Consecutive repeats (what welding makes of a zero-length edge) are merged.
+  CHECK(append_polygon_face(m, {4, 5, 5, 6, 4}) == PolygonFace::Added);
+  CHECK(m.triangles == std::vector<std::array<std::uint32_t, 3>>{{4, 5, 6}});
+  CHECK(m.triangle_origin == std::vector<std::uint32_t>{3});  // the fourth face of the file
+  CHECK(m.cleanup.file_faces == 4);
 }
 
 TEST_CASE("meshes: write then read is the identity", "[complex3]") {
@@ -157,7 +164,7 @@ TEST_CASE("meshes: write then read is the identity", "[complex3]") {
 TEST_CASE("meshes: malformed files are rejected", "[complex3]") {
   const std::vector<std::pair<std::string, std::string>> cases = {
       {"bad_two.off", "bad_two.off:6: face with 2 vertices; at least 3 are required"},
-      {"bad_repeat.off", "bad_repeat.off:7: face repeats a vertex"},
+      {"bad_repeat.off", "bad_repeat.off:7: face repeats a vertex (not next to itself)"},
       {"bad_4d.off", "bad_4d.off:1: not an OFF file"},
       {"bad_nan.off", "bad_nan.off:4: 'NaN' is not a finite number"},
       {"bad_index.off", "bad_index.off:6: vertex index '5' out of range"},
@@ -165,12 +172,13 @@ TEST_CASE("meshes: malformed files are rejected", "[complex3]") {
       {"bad_empty.off", "empty mesh"},
       {"bad_two.obj", "bad_two.obj:4: face with 2 vertices"},
       {"bad_index.obj", "bad_index.obj:4: vertex reference out of range"},
-      {"bad_repeat.ply", "face 0: face repeats a vertex"},
+      {"bad_repeat.ply", "bad_repeat.ply: empty mesh (no vertices or no triangles left after the repairs: dropped 1 "
+                         "degenerate face, 3 unused vertices)"},
       {"bad_inf.ply", "vertex 1: coordinate is NaN or infinite"},
       {"bad_no_z.ply", "vertex element lacks x, y or z"},
       {"bad_big_endian.ply", "unsupported PLY format 'binary_big_endian'"},
       {"bad_truncated_binary.ply", "face 3: file ends early"},
-      {"two_triangles_segment.ma", "unknown mesh extension 'ma'"},
+      {"two_triangles_segment.ma", "unknown mesh extension 'ma' (expected .off, .ply, .obj or .stl)"},
   };
   check_rejections(cases, [](const std::string& path) { read_triangle_mesh(path); });
 }
@@ -194,10 +202,12 @@ TEST_CASE("PLY and VTK export with scalars", "[complex3]") {
   const std::string ply = temp_path("export.ply"), vtk = temp_path("export.vtk");
   write_complex_ply(mc, {{"R", r}, {"BT", bt}}, ply);
   write_complex_vtk(mc, {{"R", r}, {"BT", bt}}, vtk);
-  // The PLY reads back as a mesh (extra properties and the edge element are skipped).
+  // The PLY reads back as a mesh (extra properties and the edge element are skipped; the
+  // end of the hair is on no triangle and is dropped as unused).
   const TriangleMesh3 back = read_triangle_mesh(ply);
   CHECK(back.triangles.size() == 2);
-  CHECK(back.vertices.size() == 5);
+  CHECK(back.vertices.size() == 4);
+  CHECK(back.cleanup.unused_vertices == 1);
   std::ifstream in(vtk);
   std::stringstream ss;
   ss << in.rdbuf();

@@ -67,8 +67,8 @@ TEST_CASE("disk lists are read exactly, with comments and separators", "[measure
 }
 
 TEST_CASE("malformed disk lists name the file, the line and the problem", "[measures2d]") {
-  CHECK(message_of("0 0 1\nnan 1 1\n") == "in.txt:2: x = 'nan' is not a decimal number (digits, an optional point "
-                                          "and an exponent of at most 300)");
+  CHECK(message_of("0 0 1\nnan 1 1\n") == "in.txt:2: x = 'nan' is not a decimal number (at most 1000 digits, an "
+                                          "optional point and an exponent of at most 300)");
   CHECK(message_of("0 0 inf\n").find("in.txt:1: r = 'inf'") == 0);
   CHECK(message_of("0x1p3 0 1\n").find("in.txt:1: x") == 0);
   CHECK(message_of("1/2 0 1\n").find("in.txt:1: x") == 0);

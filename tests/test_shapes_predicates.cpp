@@ -2,6 +2,8 @@
 // fallback, segment intersection classes, point location.
 #include <catch2/catch.hpp>
 
+#include <gmpxx.h>
+
 #include <cmath>
 #include <random>
 
@@ -56,23 +58,29 @@ TEST_CASE("orientation beyond the filter's range: overflow and underflow", "[sha
   CHECK(st.exact == 4);
 }
 
-TEST_CASE("the filter answers like the exact fallback on random near-collinear triples", "[shapes]") {
+TEST_CASE("orientation equals the sign of the exact mpq determinant on random near-collinear triples", "[shapes]") {
   std::mt19937_64 rng(7);
   std::uniform_real_distribution<double> u(-10, 10);
   OrientationStats st;
+  int signs[3] = {0, 0, 0};
   for (int k = 0; k < 2000; ++k) {
     const Point2 a{u(rng), u(rng)}, b{u(rng), u(rng)};
     const double t = u(rng) / 10;
     // A point on segment ab, rounded, then nudged by a few ulps: sign of either kind.
     Point2 c{a.x + t * (b.x - a.x), a.y + t * (b.y - a.y)};
     c.x = std::nextafter(c.x, k % 2 ? 1e9 : -1e9);
-    const int s = orientation(a, b, c, &st);
-    REQUIRE(orientation(b, c, a) == s);
-    REQUIRE(orientation(c, a, b) == s);
-    REQUIRE(orientation(b, a, c) == -s);
-    REQUIRE(orientation(a, c, b) == -s);
+    // The reference: (b - a) x (c - a) in rationals (doubles convert exactly).
+    const mpq_class ax(a.x), ay(a.y), bx(b.x), by(b.y), cx(c.x), cy(c.y);
+    const int exact = sgn(mpq_class((bx - ax) * (cy - ay) - (by - ay) * (cx - ax)));
+    ++signs[exact + 1];
+    REQUIRE(orientation(a, b, c, &st) == exact);
+    REQUIRE(orientation(b, c, a) == exact);
+    REQUIRE(orientation(b, a, c) == -exact);
   }
-  CHECK(st.exact > 0);
+  CHECK(st.exact > 0);     // some triples went past the filter to GMP
+  CHECK(st.filtered > 0);  // and the filter decided others
+  CHECK(signs[0] > 0);     // both signs occur
+  CHECK(signs[2] > 0);
 }
 
 TEST_CASE("segment intersection classes", "[shapes]") {

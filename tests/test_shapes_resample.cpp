@@ -75,13 +75,24 @@ TEST_CASE("samples are distinct, in ring order, and on the boundary", "[shapes]"
     for (std::size_t r = 0; r < s.size(); ++r) {
       CHECK(s[r][0] == shape.rings[r].points[0]);
       for (const Point2& p : s[r]) seen.insert({p.x, p.y});
-      // Consecutive samples are one spacing apart along the ring, so never farther apart
-      // than that (a chord is no longer than its arc).
-      const double spacing = ring_length(shape.rings[r]) / static_cast<double>(s[r].size());
+      // Sample k lies on the ring (on one of its edges, up to rounding) at arc length
+      // k L / m from the first vertex: on the boundary and in ring order.
+      const std::vector<Point2>& ring = shape.rings[r].points;
+      const double length = ring_length(shape.rings[r]), spacing = length / static_cast<double>(s[r].size());
       for (std::size_t k = 0; k < s[r].size(); ++k) {
-        const Point2& a = s[r][k];
-        const Point2& b = s[r][(k + 1) % s[r].size()];
-        REQUIRE(std::hypot(b.x - a.x, b.y - a.y) <= spacing * (1 + 1e-9));
+        const Point2& p = s[r][k];
+        double off = 1e300, arc = 0, at = 0;
+        for (std::size_t i = 0; i < ring.size(); ++i) {
+          const Point2 &a = ring[i], &b = ring[(i + 1) % ring.size()];
+          const double len = std::hypot(b.x - a.x, b.y - a.y);
+          const double t = std::clamp(((p.x - a.x) * (b.x - a.x) + (p.y - a.y) * (b.y - a.y)) / (len * len), 0.0, 1.0);
+          const double d = std::hypot(a.x + t * (b.x - a.x) - p.x, a.y + t * (b.y - a.y) - p.y);
+          if (d < off) off = d, at = arc + t * len;
+          arc += len;
+        }
+        CAPTURE(r, k, off, at);
+        REQUIRE(off <= 1e-12 * (1 + std::hypot(p.x, p.y)));
+        REQUIRE(std::fabs(at - static_cast<double>(k) * spacing) <= 1e-9 * length);
       }
     }
     CHECK(seen.size() == total(s));

@@ -215,7 +215,8 @@ TEST_CASE("field names parse; bad ones are rejected", "[svg2d]") {
 }
 
 TEST_CASE("grassfire edf2d --svg writes a picture; a bad --field writes nothing", "[svg2d]") {
-  const std::string out = "test_svg2d_cli.svg", json = "test_svg2d_cli.json";
+  const std::string out = grassfire::testing::temp_path("test_svg2d_cli.svg");
+  const std::string json = grassfire::testing::temp_path("test_svg2d_cli.json");
   std::remove(out.c_str());
   std::remove(json.c_str());
   const std::string cli = std::string(GF_CLI) + " edf2d rectangle --exact --quiet --svg " + out;

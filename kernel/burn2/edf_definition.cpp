@@ -42,6 +42,10 @@ class Oracle {
     for (std::uint32_t x = 0; x < g_.node_count(); ++x)
       if (!core_.node_in_core[x]) by_node[x] = node_edf_[k++];
     out.edf = by_node;
+    out.branches.assign(g_.node_count(), {});
+    for (std::uint32_t x = 0; x < g_.node_count(); ++x)
+      for (const auto& [e, r] : branch_reach_[x])
+        out.branches[x].push_back({e, r.infinite ? std::nullopt : std::optional<GraphSum>(r.value)});
     extended_medial_axis(by_node, out);
     out.stats = stats_;
     return out;

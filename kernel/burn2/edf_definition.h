@@ -36,8 +36,20 @@ struct DefinitionalEma {
   std::vector<std::uint32_t> core_nodes;
 };
 
+// reach(b) of the branch at a node through `edge`; nullopt where it leads into the 2-core.
+struct BranchReach {
+  std::uint32_t edge = 0;
+  std::optional<GraphSum> reach;
+};
+
 struct DefinitionalEdf {
   std::vector<std::optional<GraphSum>> edf;  // per node; nullopt where infinite
+  // Per node outside the 2-core, one per incident edge (empty in the core): from them the
+  // EDF along an edge {i, j} at distance s from i is min(s + A_i, w - s + A_j), A_i the
+  // largest reach at i over the other branches (R(i) at a leaf), and the branches at x
+  // split by Prop. 2 into reach > EDF(x) (gradient +1), = EDF(x) (-1, continuous) and
+  // < EDF(x) (-1, a jump).
+  std::vector<std::vector<BranchReach>> branches;
   std::vector<DefinitionalEma> ema;          // per component, ids as component_of_nodes()
   NumberStats stats;
 };

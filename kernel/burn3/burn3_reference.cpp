@@ -7,10 +7,11 @@
 
 namespace grassfire {
 
-double planar_convex_sheet_burning_time(const MedialComplex& mc, const Vec3d& x) {
+SheetBurningTime planar_convex_sheet_burning(const MedialComplex& mc, const Vec3d& x) {
   if (mc.sheets().size() != 1 || !mc.sheets()[0].planar)
     throw std::invalid_argument("planar_convex_sheet_burning_time: " + mc.source() + " is not one planar sheet");
-  double best = std::numeric_limits<double>::infinity();
+  SheetBurningTime best;
+  best.time = std::numeric_limits<double>::infinity();
   for (std::uint32_t e = 0; e < mc.edge_count(); ++e) {
     if (mc.edge(e).stratum != EdgeStratum::Border || mc.edge(e).rule == IgnitionRule::Never) continue;
     auto cost = [&](double s) {
@@ -22,9 +23,14 @@ double planar_convex_sheet_burning_time(const MedialComplex& mc, const Vec3d& x)
       const double m1 = lo + (hi - lo) / 3, m2 = hi - (hi - lo) / 3;
       (cost(m1) <= cost(m2) ? hi : lo) = (cost(m1) <= cost(m2) ? m2 : m1);
     }
-    best = std::min({best, cost(0.0), cost(1.0), cost(0.5 * (lo + hi))});
+    for (double s : {0.0, 1.0, 0.5 * (lo + hi)})
+      if (cost(s) < best.time) best = {cost(s), DiscreteBurning::point_on_edge(mc, e, s), e};
   }
   return best;
+}
+
+double planar_convex_sheet_burning_time(const MedialComplex& mc, const Vec3d& x) {
+  return planar_convex_sheet_burning(mc, x).time;
 }
 
 ErrorSummary summarize_error(const MedialComplex& mc, const DiscreteBurning& d,
@@ -35,8 +41,16 @@ ErrorSummary summarize_error(const MedialComplex& mc, const DiscreteBurning& d,
   double sum = 0.0;
   auto visit = [&](const Vec3d& p, double bt) {
     if (!inside(p)) return;
+    ++s.considered;
     const double exact = reference(p);
-    if (!std::isfinite(exact) || !std::isfinite(bt)) return;
+    if (std::isinf(exact) && std::isinf(bt) && (exact > 0) == (bt > 0)) {
+      ++s.both_infinite;
+      return;
+    }
+    if (!std::isfinite(exact) || !std::isfinite(bt)) {
+      ++s.one_sided_infinite;
+      return;
+    }
     const double diff = bt - exact;
     ++s.points;
     sum += std::abs(diff);

@@ -5,8 +5,8 @@
 
 namespace grassfire {
 
-BurnSets::BurnSets(const SteinerGraph& g, const DiscreteBurning& d)
-    : g_(g), d_(d), witness_(g.slot_total(), DiscreteBurning::kInfinity) {
+BurnSets::BurnSets(const SteinerGraph& g, const DiscreteBurning& d, const BurnRuleOverride* rule_override)
+    : g_(g), d_(d), override_(rule_override), witness_(g.slot_total(), DiscreteBurning::kInfinity) {
   for (std::uint32_t y = 0; y < g.node_count(); ++y) {
     const double bt = burn_time(y);
     if (!std::isfinite(bt)) continue;
@@ -39,9 +39,13 @@ bool BurnSets::link_condition(std::uint32_t node, double t) const {
   const std::size_t n = g_.slot_count(node);
   std::vector<bool> arrived(n);
   for (std::size_t j = 0; j < n; ++j) arrived[j] = witness_[g_.slot(node, static_cast<std::uint32_t>(j))] <= t;
-  if (g_.is_vertex(node)) return g_.complex().link_burns(node, arrived);
+  if (g_.is_vertex(node)) {
+    const bool rule = g_.complex().link_burns(node, arrived);
+    return override_ ? override_->burns(vertex_link_arrivals(g_.complex(), node, arrived, rule)) : rule;
+  }
   const std::size_t arcs = static_cast<std::size_t>(std::count(arrived.begin() + 2, arrived.end(), true));
-  return MedialComplex::edge_link_burns(n - 2, arrived[0], arrived[1], arcs);
+  const bool rule = MedialComplex::edge_link_burns(n - 2, arrived[0], arrived[1], arcs);
+  return override_ ? override_->burns(edge_link_arrivals(n - 2, arrived[0], arrived[1], arcs, rule)) : rule;
 }
 
 bool BurnSets::contains(std::uint32_t node, double t) const {
@@ -54,13 +58,21 @@ bool BurnSets::contains(std::uint32_t node, double t) const {
   return any && link_condition(node, t);
 }
 
-double BurnSets::first_time(std::uint32_t node) const {
+std::vector<double> BurnSets::candidate_times(std::uint32_t node) const {
   std::vector<double> times;
-  if (border(node)) times.push_back(ignition(node));
-  for (std::size_t j = 0; j < g_.slot_count(node); ++j) times.push_back(witness_[g_.slot(node, static_cast<std::uint32_t>(j))]);
+  if (border(node) && std::isfinite(ignition(node))) times.push_back(ignition(node));
+  for (std::size_t j = 0; j < g_.slot_count(node); ++j) {
+    const double w = witness_[g_.slot(node, static_cast<std::uint32_t>(j))];
+    if (std::isfinite(w)) times.push_back(w);
+  }
   std::sort(times.begin(), times.end());
-  for (double t : times)
-    if (std::isfinite(t) && contains(node, t)) return t;
+  times.erase(std::unique(times.begin(), times.end()), times.end());
+  return times;
+}
+
+double BurnSets::first_time(std::uint32_t node) const {
+  for (double t : candidate_times(node))
+    if (contains(node, t)) return t;
   return DiscreteBurning::kInfinity;
 }
 

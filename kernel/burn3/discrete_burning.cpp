@@ -26,7 +26,8 @@ struct Arrival {
 
 class Burner {
  public:
-  Burner(const SteinerGraph& g, DiscreteBurning& out) : g_(g), mc_(g.complex()), out_(out), nv_(g.vertex_count()) {}
+  Burner(const SteinerGraph& g, DiscreteBurning& out, const BurnRuleOverride* rule_override)
+      : g_(g), mc_(g.complex()), out_(out), nv_(g.vertex_count()), override_(rule_override) {}
 
   void layout() {
     out_.spacing = g_.spacing();
@@ -36,18 +37,21 @@ class Burner {
     out_.edge_slot = g_.edge_slots();
     bt_.assign(g_.node_count(), DiscreteBurning::kInfinity);
     out_.arrival_time.assign(g_.slot_total(), DiscreteBurning::kInfinity);
+    out_.arrival_from.assign(g_.slot_total(), kNoIndex);
+    out_.burn_slot.assign(g_.node_count(), kNoIndex);
     done_.assign(g_.slot_total(), 0);
   }
 
   void run(const DiscreteBurningOptions& options) {
-    for (const PointSource& source : options.sources) ignite(source);
+    for (std::uint32_t i = 0; i < options.sources.size(); ++i) ignite(options.sources[i], i);
+    for (const PointSource& source : options.sources) out_.source_points.push_back(source.location.approx());
     for (std::uint32_t v = 0; v < nv_; ++v)
-      if (std::isfinite(mc_.ignition_at_vertex(v))) heap_.push({mc_.ignition_at_vertex(v), v, kIgnite});
+      if (std::isfinite(mc_.ignition_at_vertex(v))) heap_.push({ignition(mc_.ignition_at_vertex(v)), v, kIgnite});
     for (std::uint32_t e = 0; e < mc_.edge_count(); ++e) {
       if (mc_.edge(e).stratum != EdgeStratum::Border) continue;
       for (std::uint32_t i = 1; i <= g_.steiner_count(e); ++i) {
         const double f = mc_.ignition_on_edge(e, g_.parameter(e, i));
-        if (std::isfinite(f)) heap_.push({f, g_.steiner_node(e, i), kIgnite});
+        if (std::isfinite(f)) heap_.push({ignition(f), g_.steiner_node(e, i), kIgnite});
       }
     }
     // Flat event loop: pop the earliest arrival, drop stale ones, record it, burn when the
@@ -59,13 +63,16 @@ class Burner {
       if (options.progress && (out_.stats.pops & 0xFFFF) == 0) options.progress(burned_, g_.node_count());
       if (std::isfinite(bt_[a.node])) continue;
       if (a.slot == kIgnite) {
+        out_.burn_slot[a.node] = DiscreteBurning::kIgnited;
         burn(a.node, a.time);
         continue;
       }
       const std::uint64_t g = slot(a.node, a.slot);
       if (done_[g] || a.time > out_.arrival_time[g]) continue;
       done_[g] = 1;
-      if (condition(a.node)) burn(a.node, a.time);
+      if (!condition(a.node)) continue;
+      out_.burn_slot[a.node] = a.slot;
+      burn(a.node, a.time);
     }
   }
 
@@ -75,47 +82,55 @@ class Burner {
     out_.vertex_et.resize(nv_);
     for (std::uint32_t v = 0; v < nv_; ++v) out_.vertex_et[v] = out_.vertex_bt[v] - mc_.vertex(v).radius;
     for (std::size_t g = 0; g < done_.size(); ++g)
-      if (!done_[g]) out_.arrival_time[g] = DiscreteBurning::kInfinity;
+      if (!done_[g]) out_.arrival_time[g] = DiscreteBurning::kInfinity, out_.arrival_from[g] = kNoIndex;
   }
 
  private:
   std::uint64_t slot(std::uint32_t node, std::uint32_t local) const { return g_.slot(node, local); }
+
+  double ignition(double f) const { return override_ ? override_->ignition(f) : f; }
 
   bool condition(std::uint32_t node) const {
     if (node < nv_) {
       const std::uint64_t first = out_.vertex_slot[node];
       std::vector<bool> arrived(out_.vertex_slot[node + 1] - first);
       for (std::size_t j = 0; j < arrived.size(); ++j) arrived[j] = done_[first + j] != 0;
-      return mc_.link_burns(node, arrived);
+      const bool rule = mc_.link_burns(node, arrived);
+      return override_ ? override_->burns(vertex_link_arrivals(mc_, node, arrived, rule)) : rule;
     }
     const std::size_t k = mc_.edge_triangles(g_.edge_of(node)).size();
     const std::uint64_t first = slot(node, 0);
     std::size_t arcs = 0;
     for (std::size_t j = 0; j < k; ++j) arcs += done_[first + 2 + j];
-    return MedialComplex::edge_link_burns(k, done_[first], done_[first + 1], arcs);
+    const bool rule = MedialComplex::edge_link_burns(k, done_[first], done_[first + 1], arcs);
+    return override_ ? override_->burns(edge_link_arrivals(k, done_[first], done_[first + 1], arcs, rule)) : rule;
   }
 
   void burn(std::uint32_t node, double time) {
     bt_[node] = time;
     ++burned_;
-    g_.for_each_move(node, [&](std::uint32_t y, std::uint32_t local, double length) { arrive(y, local, time + length); });
+    g_.for_each_move(node, [&](std::uint32_t y, std::uint32_t local, double length) { arrive(y, local, time + length, node); });
   }
 
-  void arrive(std::uint32_t y, std::uint32_t local, double t) {
+  // `from`: the graph point that emitted the fire, or DiscreteBurning::kFromSource + i for
+  // the moves of point source i (recorded for the burning paths).
+  void arrive(std::uint32_t y, std::uint32_t local, double t, std::uint32_t from) {
     if (std::isfinite(bt_[y])) return;
     const std::uint64_t s = slot(y, local);
     if (!(t < out_.arrival_time[s])) return;
     out_.arrival_time[s] = t;
+    out_.arrival_from[s] = from;
     heap_.push({t, y, local});
     ++out_.stats.pushes;
   }
 
   // A point source: its graph point ignites, or its straight moves carry fire to the graph
   // points of its closed triangles (see DiscreteBurningOptions::sources).
-  void ignite(const PointSource& source) {
+  void ignite(const PointSource& source, std::uint32_t index) {
     const double t0 = source.t0.get_d();
     const ComplexPoint& x = source.location;
-    auto move = [&](std::uint32_t y, std::uint32_t local, double length) { arrive(y, local, t0 + length); };
+    const std::uint32_t from = DiscreteBurning::kFromSource + index;
+    auto move = [&](std::uint32_t y, std::uint32_t local, double length) { arrive(y, local, t0 + length, from); };
     if (x.kind == ComplexPoint::Kind::Vertex) {
       heap_.push({t0, x.id, kIgnite});
     } else if (x.kind == ComplexPoint::Kind::Triangle) {
@@ -135,6 +150,7 @@ class Burner {
   const MedialComplex& mc_;
   DiscreteBurning& out_;
   const std::uint32_t nv_;
+  const BurnRuleOverride* override_;
   std::vector<double> bt_;
   std::uint64_t burned_ = 0;
   std::vector<std::uint8_t> done_;
@@ -142,6 +158,30 @@ class Burner {
 };
 
 }  // namespace
+
+LinkArrivals vertex_link_arrivals(const MedialComplex& mc, std::uint32_t v, const std::vector<bool>& arrived, bool rule) {
+  LinkArrivals a;
+  const std::vector<LinkElement>& elements = mc.link_elements(v);
+  for (std::size_t j = 0; j < elements.size(); ++j) {
+    (elements[j].is_pole ? a.poles : a.sectors)++;
+    if (arrived[j]) (elements[j].is_pole ? a.poles_arrived : a.sectors_arrived)++;
+  }
+  const VertexKind kind = mc.vertex(v).kind;
+  a.junction = kind == VertexKind::SingularCurve || kind == VertexKind::SingularPoint;
+  a.rule = rule;
+  return a;
+}
+
+LinkArrivals edge_link_arrivals(std::size_t triangles, bool pole0, bool pole1, std::size_t arcs, bool rule) {
+  LinkArrivals a;
+  a.sectors = triangles;
+  a.sectors_arrived = arcs;
+  a.poles = 2;
+  a.poles_arrived = std::size_t{pole0} + std::size_t{pole1};
+  a.junction = triangles >= 3;
+  a.rule = rule;
+  return a;
+}
 
 Vec3d DiscreteBurning::point_on_edge(const MedialComplex& mc, std::uint32_t e, double s) {
   const Vec3d& a = mc.vertex(mc.edge(e).v[0]).approx;
@@ -170,7 +210,7 @@ DiscreteBurning burn_discrete(const MedialComplex& mc, const DiscreteBurningOpti
   const auto start = std::chrono::steady_clock::now();
   DiscreteBurning out;
   const SteinerGraph graph(mc, options.spacing, options.max_points);
-  Burner burner(graph, out);
+  Burner burner(graph, out, options.rule_override);
   burner.layout();
   for (const PointSource& s : options.sources)
     if (sgn(s.location.snap_squared) != 0)

@@ -38,6 +38,19 @@
 // length), O(h) where it bends (around a vertex or into a singular curve), plus the
 // sampling of f on border edges. On the board and fin the measured maximum error
 // shrinks linearly in h (experiments/study_board_fin_convergence.cpp).
+// Stated bounds: the construction gives no constant in general. On a planar convex sheet
+// snapping the straight optimal path to graph points gives BT_h(x) <= BT(x) + 2 |y* y'| +
+// 2 sum delta_i (foot y* moved to the nearest graph point y' of its edge, each edge
+// crossing moved by delta_i <= h/2 to the nearest graph point; proofs-checks
+// snapping_bound). On the reference cases the tests assert these stated constants, from
+// which their tolerances are derived: BT_h - BT <= h/2 on the board and fin, <= 0.3 h on
+// planar convex fans (random_planar_fan) and on books at h = 1/8; the first arrival of
+// each sheet along the junction N of the board and fin <= its exact value + 0.75 h (the
+// fin reaches N only from inside the fin, from Steiner points up to h above N).
+// Mutation hook: options.rule_override (nullptr by default) replaces the link rule and the
+// ignition times, so that proofs-checks can run the engine with a deliberately broken rule
+// (a junction burning at its first or at its last sector arrival, a late ignition) and
+// show that its checks detect it. The default path pays one pointer test per arrival.
 // Contract: a validated MedialComplex; spacing h > 0 and the point budget respected.
 // Complexity: O(N log N + sum over triangles of (points on its boundary)^2) with N graph
 // points; memory O(N (2 + average edge degree)). BT at points that are not graph points:
@@ -55,9 +68,33 @@
 
 namespace grassfire {
 
+// The arrivals at a graph point when the link rule is evaluated, for a BurnRuleOverride.
+struct LinkArrivals {
+  std::size_t sectors = 0, sectors_arrived = 0;  // disk-type elements: sectors of a vertex, triangles at an edge point
+  std::size_t poles = 0, poles_arrived = 0;      // segment directions
+  bool junction = false;  // an edge point with three or more triangles, or a vertex of kind SingularCurve/SingularPoint
+  bool rule = false;      // what the rule of this header decides
+};
+
+// A different burning rule (mutation tests of the proof checks; see the header comment).
+class BurnRuleOverride {
+ public:
+  virtual ~BurnRuleOverride() = default;
+  // Whether the point burns now, given its arrivals (called after every arrival).
+  virtual bool burns(const LinkArrivals& a) const = 0;
+  // The ignition time of a border graph point whose f is `f`.
+  virtual double ignition(double f) const { return f; }
+};
+
+// The arrivals at vertex v (arrived: per link element) and at an interior point of an edge
+// with `triangles` triangles.
+LinkArrivals vertex_link_arrivals(const MedialComplex& mc, std::uint32_t v, const std::vector<bool>& arrived, bool rule);
+LinkArrivals edge_link_arrivals(std::size_t triangles, bool pole0, bool pole1, std::size_t arcs, bool rule);
+
 struct DiscreteBurningOptions {
   double spacing = 0.25;                   // h
   std::uint64_t max_points = 200'000'000;  // refuse (std::invalid_argument) above this
+  const BurnRuleOverride* rule_override = nullptr;  // nullptr: the rule of this header
   // Points that ignite at their t0 (point_sources.h), besides the border. A source at a
   // vertex or exactly at a Steiner point ignites that graph point; a source inside an edge
   // or a triangle is joined by straight moves to the graph points of the closed triangles
@@ -108,6 +145,20 @@ class DiscreteBurning {
   std::vector<double> arrival_time;
   std::vector<std::uint64_t> vertex_slot;
   std::vector<std::uint64_t> edge_slot;
+
+  // Burning paths (burning_field.h): per slot, the graph point whose move gave the slot's
+  // recorded arrival (kNoIndex when arrival_time is kInfinity); per graph point (vertices,
+  // then Steiner points edge by edge), the local slot of the arrival that burned it, or
+  // kIgnited when it burned at its own ignition f (a border point, or a source at the
+  // point), kNoIndex if never. An arrival carried from point source i straight to a graph
+  // point records kFromSource + i (its position: source_points[i]).
+  // Following arrival_from[slot(x, burn_slot[x])] from x back to an ignited point is the
+  // discrete burning path of x (a polygonal non-crossing path, Definition 9).
+  static constexpr std::uint32_t kIgnited = std::numeric_limits<std::uint32_t>::max() - 1;
+  static constexpr std::uint32_t kFromSource = 0x80000000u;  // graph points stay below 2^31
+  std::vector<Vec3d> source_points;
+  std::vector<std::uint32_t> arrival_from;
+  std::vector<std::uint32_t> burn_slot;
 };
 
 DiscreteBurning burn_discrete(const MedialComplex& mc, const DiscreteBurningOptions& options);

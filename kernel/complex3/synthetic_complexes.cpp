@@ -4,9 +4,11 @@
 #include <algorithm>
 #include <cmath>
 #include <functional>
+#include <random>
 #include <stdexcept>
 
 #include "complex3/complex_builder.h"
+#include "complex3/synthetic_tubes.h"
 #include "number/exact_sum.h"
 
 namespace grassfire {
@@ -282,9 +284,33 @@ RawComplex box_medial_axis(long a, long b, long c, int n) {
   return bld.take();
 }
 
+double box_medial_axis_burning_time(double a, double b, double c, const std::array<double, 3>& p) {
+  const double x = std::abs(p[0]), y = std::abs(p[1]), z = std::abs(p[2]);
+  if (z == 0 && x <= a - c && y <= b - c) return kSqrt2 * c + std::min(a - c - x, b - c - y);
+  return kSqrt2 * std::min({a - x, b - y, c - z});
+}
+
+RawComplex random_planar_fan(std::uint32_t seed) {
+  std::mt19937 rng(seed);
+  ComplexBuilder b("planar sheet " + std::to_string(seed));
+  const std::uint32_t centre = b.vertex({0, 0, 0}, 4);
+  const int k = 5 + static_cast<int>(seed % 6);
+  std::uniform_int_distribution<int> radius(6, 12), rr(0, 3);
+  const mpq_class rho = radius(rng);
+  std::vector<std::uint32_t> rim;
+  for (int j = 0; j < k; ++j) {
+    const auto d = rational_unit_direction(2 * M_PI * j / k);
+    const mpq_class r = rr(rng);
+    rim.push_back(b.vertex({rho * d[0], rho * d[1], 0}, r * r));
+  }
+  for (int j = 0; j < k; ++j) b.triangle(centre, rim[j], rim[(j + 1) % k]);
+  b.rule(rim[0], rim[1], IgnitionRule::Never);
+  return b.take();
+}
+
 std::vector<std::string> synthetic_complex_names() {
   return {"board-fin", "board-cylinder", "book:K", "y-junction", "tetrahedron", "octahedron", "double-cone",
-          "tetrahedron-flap", "box:A:B:C"};
+          "tetrahedron-flap", "box:A:B:C", "tube", "annulus", "torus"};
 }
 
 RawComplex synthetic_complex(const std::string& name) {
@@ -295,6 +321,9 @@ RawComplex synthetic_complex(const std::string& name) {
   if (name == "octahedron") return octahedron_surface();
   if (name == "double-cone") return pinched_double_cone();
   if (name == "tetrahedron-flap") return tetrahedron_with_flap();
+  if (name == "tube") return tube();
+  if (name == "annulus") return square_annulus();
+  if (name == "torus") return frame_torus();
   if (name.rfind("book:", 0) == 0) {
     BookOptions o;
     try {

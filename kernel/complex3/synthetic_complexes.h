@@ -93,12 +93,29 @@ RawComplex tetrahedron_with_flap();
 // border, R = 0 there. Each piece is split into an n x n grid (R stays exact: it is affine
 // on every piece). A real medial axis with exact R for the checks.
 RawComplex box_medial_axis(long a, long b, long c, int subdivisions = 1);
+// BT of box_medial_axis(a, b, c) at a point of it (the box edges ignite at f = R = 0):
+//  - trapezoids and triangles: sqrt2 R. Each is the bisector of two box faces at a right
+//    angle and burns from its box edge; a point at distance R from both faces is at
+//    sqrt(R^2 + R^2) from that edge, and no path through the singular set is shorter: its
+//    points burn at sqrt2 R too, and R changes by at most 1/sqrt2 per unit of length in
+//    these 45-degree planes, so sqrt2 R(p) <= sqrt2 R(q) + |pq|.
+//  - the rectangle (z = 0, |x| <= a - c, |y| <= b - c, R = c): its border is singular and
+//    burns at c sqrt2 everywhere (both trapezoids arrive then), so BT = c sqrt2 + the
+//    distance to the rectangle's border. The two formulas agree on that border.
+double box_medial_axis_burning_time(double a, double b, double c, const std::array<double, 3>& p);
+
+// A seeded random planar convex sheet (the brute-force reference of burn3_reference.h
+// applies): a fan around the origin (R = 2) with k = 5 + seed % 6 rim points on a circle of
+// radius rho in [6, 12], R at the rim in {0, 1, 2, 3} (so f is 1-Lipschitz along the rim,
+// whose edges are longer than 3), and one rim edge that never ignites.
+RawComplex random_planar_fan(std::uint32_t seed);
 
 // A rational point of the unit circle near angle theta (rational parametrisation).
 std::array<mpq_class, 2> rational_unit_direction(double theta);
 
 // A synthetic complex by name: board-fin, board-cylinder, book:K, y-junction, tetrahedron,
-// octahedron, double-cone, tetrahedron-flap, box:A:B:C (box_medial_axis). Throws std::invalid_argument listing the names.
+// octahedron, double-cone, tetrahedron-flap, box:A:B:C (box_medial_axis), tube, annulus,
+// torus (synthetic_tubes.h). Throws std::invalid_argument listing the names.
 RawComplex synthetic_complex(const std::string& name);
 std::vector<std::string> synthetic_complex_names();
 

@@ -10,6 +10,7 @@
 #include "io/atomic_file.h"
 #include "io/complex_text.h"
 #include "io/json_text.h"
+#include "io/quoted.h"
 
 namespace grassfire {
 namespace {
@@ -86,7 +87,7 @@ class Reader {
   BorderIgnition border_rule(const Json& v, const std::string& where, std::size_t vertex_count) const {
     if (!v.is_object()) fail(where, "is not an object {\"edge\": [i, j], \"rule\": ...} (" + shown(v) + ")");
     for (const auto& [key, value] : v.items())
-      if (key != "edge" && key != "rule" && key != "point") fail(where, "unknown member \"" + key + "\"");
+      if (key != "edge" && key != "rule" && key != "point") fail(where, "unknown member \"" + shorten_token(key) + "\"");
     BorderIgnition b;
     const auto edge = v.find("edge");
     if (edge == v.end()) fail(where, "has no \"edge\"");
@@ -115,7 +116,7 @@ class Reader {
     for (const auto& [key, value] : doc.items())
       if (key != "format" && key != "version" && key != "vertices" && key != "radius_squared" &&
           key != "triangles" && key != "segments" && key != "border" && key != "source" && key != "comment")
-        fail(key, "unknown member (a typo? the members are format, version, vertices, radius_squared, "
+        fail(shorten_token(key), "unknown member (a typo? the members are format, version, vertices, radius_squared, "
                   "triangles, segments, border, source, comment)");
     const auto format = doc.find("format");
     if (format == doc.end() || *format != kFormat)

@@ -8,20 +8,21 @@
 
 #include "io/atomic_file.h"
 #include "io/complex_text.h"
+#include "io/quoted.h"
 
 namespace grassfire {
 namespace {
 
 std::uint32_t index_field(const TextLine& l, std::size_t i, std::uint64_t nv, const std::string& source) {
   const auto v = parse_index(l.tokens[i]);
-  if (!v) format_error(source, l.number, "'" + l.tokens[i] + "' is not a vertex index");
+  if (!v) format_error(source, l.number, quote_token(l.tokens[i]) + " is not a vertex index");
   if (*v >= nv) format_error(source, l.number, "vertex index " + l.tokens[i] + " out of range (" + std::to_string(nv) + " vertices)");
   return static_cast<std::uint32_t>(*v);
 }
 
 mpq_class number_field(const TextLine& l, std::size_t i, const std::string& source) {
   const auto q = parse_exact_decimal(l.tokens[i]);
-  if (!q) format_error(source, l.number, "'" + l.tokens[i] + "' is not a finite decimal number");
+  if (!q) format_error(source, l.number, quote_token(l.tokens[i]) + " is not a finite decimal number");
   return *q;
 }
 
@@ -47,7 +48,7 @@ RawComplex parse_ma(const std::string& text, const std::string& source) {
   std::uint64_t counts[3];
   for (int i = 0; i < 3; ++i) {
     const auto c = parse_index(head.tokens[i]);
-    if (!c) format_error(source, head.number, "header count '" + head.tokens[i] + "' is not a non-negative integer");
+    if (!c) format_error(source, head.number, "header count " + quote_token(head.tokens[i]) + " is not a non-negative integer");
     counts[i] = *c;
   }
   if (counts[0] == 0) format_error(source, head.number, "no vertices (nv = 0)");
@@ -62,7 +63,7 @@ RawComplex parse_ma(const std::string& text, const std::string& source) {
       expect_fields(l, 5, "vertex line 'v x y z r'", source);
       raw.vertices.push_back({number_field(l, 1, source), number_field(l, 2, source), number_field(l, 3, source)});
       const mpq_class r = number_field(l, 4, source);
-      if (sgn(r) < 0) format_error(source, l.number, "negative radius " + l.tokens[4]);
+      if (sgn(r) < 0) format_error(source, l.number, "negative radius " + shorten_token(l.tokens[4]));
       raw.radius_squared.push_back(r * r);
       ++seen[0];
     } else if (tag == "e") {
@@ -78,7 +79,7 @@ RawComplex parse_ma(const std::string& text, const std::string& source) {
                                index_field(l, 3, counts[0], source)});
       ++seen[2];
     } else {
-      format_error(source, l.number, "unknown line tag '" + tag + "' (expected v, e or f)");
+      format_error(source, l.number, "unknown line tag " + quote_token(tag) + " (expected v, e or f)");
     }
   }
   const char* names[3] = {"vertices", "edges", "faces"};

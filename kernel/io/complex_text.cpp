@@ -56,7 +56,7 @@ std::optional<mpq_class> parse_exact_decimal(const std::string& s) {
     for (++i; i < s.size() && std::isdigit(static_cast<unsigned char>(s[i])); ++i)
       digits += s[i], ++fraction_digits, any = true;
   }
-  if (!any) return std::nullopt;
+  if (!any || digits.size() > kMaxDecimalDigits) return std::nullopt;
   long exponent = 0;
   if (i < s.size() && (s[i] == 'e' || s[i] == 'E')) {
     ++i;

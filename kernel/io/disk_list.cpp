@@ -6,6 +6,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "io/quoted.h"
 #include "number/exact_sum.h"
 
 namespace grassfire {
@@ -13,6 +14,7 @@ namespace grassfire {
 namespace {
 
 constexpr long kMaxExponent = 300;
+constexpr std::size_t kMaxDigits = 1000;  // as the 3D readers (io/complex_text.h): exact arithmetic stays fast
 
 bool all_digits(const std::string& s) {
   for (char c : s)
@@ -48,6 +50,7 @@ bool parse_exact_decimal(const std::string& token, mpq_class& value) {
   const std::string whole = mantissa.substr(0, dot);
   const std::string fraction = dot == std::string::npos ? "" : mantissa.substr(dot + 1);
   if (whole.empty() && fraction.empty()) return false;
+  if (whole.size() + fraction.size() > kMaxDigits) return false;
   if (!all_digits(whole) || !all_digits(fraction)) return false;
   long exponent = 0;
   if (e != std::string::npos) {
@@ -92,9 +95,9 @@ DiskList parse_disk_list(const std::string& text, const std::string& source) {
     mpq_class* targets[3] = {&d.x, &d.y, &d.r};
     for (int k = 0; k < 3; ++k)
       if (!parse_exact_decimal(f[k], *targets[k]))
-        fail(std::string(names[k]) + " = '" + f[k] +
-             "' is not a decimal number (digits, an optional point and an exponent of at most 300)");
-    if (sgn(d.r) <= 0) fail("radius r = " + f[2] + " must be positive");
+        fail(std::string(names[k]) + " = " + quote_token(f[k]) +
+             " is not a decimal number (at most 1000 digits, an optional point and an exponent of at most 300)");
+    if (sgn(d.r) <= 0) fail("radius r = " + shorten_token(f[2]) + " must be positive");
     list.disks.push_back(std::move(d));
   }
   if (list.disks.empty()) throw DiskListError(source + ": no disks (one 'x y r' line per disk)");

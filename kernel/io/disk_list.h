@@ -9,8 +9,9 @@
 // the double nearest to it), so the union is exactly the one in the file. Fields are
 // separated by spaces, tabs or commas.
 // Errors (DiskListError; what() is "<file>:<line>: <problem>"): a line without exactly
-// three numbers, a field that is not such a decimal (nan, inf, 0x1p3, 1/2, ...), an
-// exponent beyond +-300, r <= 0, and a file without any disk.
+// three numbers, a field that is not such a decimal (nan, inf, 0x1p3, 1/2, ...), a number
+// of more than 1000 digits or with an exponent beyond +-300, r <= 0, and a file without any
+// disk.
 // Accepted on purpose, and handled by the axis builder: a disk inside another or a
 // repeated disk (it adds nothing to the union and is reported as covered); disjoint
 // groups of disks (the union is disconnected and its medial axis is a forest, one tree

@@ -1,11 +1,29 @@
 // json_text.cpp -- see json_text.h.
 #include "io/json_text.h"
 
+#include <cstring>
 #include <set>
 #include <vector>
 
+#include "io/quoted.h"
+
 namespace grassfire {
 namespace {
+
+// nlohmann quotes the input it stopped at ("last read: '<token>'", "number overflow parsing
+// '<token>'", maybe followed by "; expected ..."); a long token is shown shortened.
+std::string shorten_quoted_input(const std::string& reason) {
+  for (const char* opener : {"last read: '", "parsing '"}) {
+    const std::size_t at = reason.find(opener);
+    if (at == std::string::npos) continue;
+    const std::size_t from = at + std::strlen(opener) - 1;
+    std::size_t to = reason.rfind("'; expected");
+    if (to == std::string::npos || to < from) to = reason.back() == '\'' ? reason.size() - 1 : std::string::npos;
+    if (to == std::string::npos || to <= from) continue;
+    return reason.substr(0, from) + quote_token(reason.substr(from + 1, to - from - 1)) + reason.substr(to + 1);
+  }
+  return reason;
+}
 
 // nlohmann's SAX DOM builder behind a filter that keeps number text, watches keys, and
 // turns parse errors into positioned messages.
@@ -32,7 +50,7 @@ class PositionedDomParser {
   }
   bool key(std::string& k) {
     if (options_.reject_duplicate_keys && !keys_.back().insert(k).second)
-      throw JsonSyntaxError(source_ + ": key \"" + k + "\" appears twice in one object");
+      throw JsonSyntaxError(source_ + ": key \"" + shorten_token(k) + "\" appears twice in one object");
     return dom_.key(k);
   }
   bool end_object() {
@@ -52,6 +70,7 @@ class PositionedDomParser {
     std::string reason = e.what();
     reason = reason.substr(reason.find("] ") + 2);
     if (reason.rfind("parse error", 0) == 0) reason = reason.substr(reason.find(": ") + 2);
+    reason = shorten_quoted_input(reason);
     throw JsonSyntaxError(source_ + ":" + std::to_string(line) + ":" + std::to_string(column) +
                           ": invalid JSON: " + reason);
   }

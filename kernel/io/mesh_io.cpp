@@ -5,9 +5,12 @@
 #include <cctype>
 #include <cmath>
 #include <fstream>
+#include <limits>
 #include <regex>
 
 #include "io/complex_text.h"
+#include "io/mesh_weld.h"
+#include "io/quoted.h"
 
 namespace grassfire {
 namespace {
@@ -17,7 +20,7 @@ std::array<double, 3> xyz(const TextLine& l, std::size_t first, const std::strin
   for (std::size_t i = 0; i < 3; ++i) {
     if (first + i >= l.tokens.size()) format_error(source, l.number, "a vertex needs three coordinates");
     const auto d = parse_finite_double(l.tokens[first + i]);
-    if (!d) format_error(source, l.number, "'" + l.tokens[first + i] + "' is not a finite number");
+    if (!d) format_error(source, l.number, quote_token(l.tokens[first + i]) + " is not a finite number");
     p[i] = *d;
   }
   return p;
@@ -30,8 +33,8 @@ bool is_off_keyword(const std::string& w) {
   return std::regex_match(w, family);
 }
 
-void check_not_empty(const TriangleMesh3& m) {
-  if (m.vertices.empty() || m.triangles.empty()) format_error(m.source, 0, "empty mesh (no vertices or no triangles)");
+[[noreturn]] void unknown_mesh_extension(const std::string& source, const std::string& ext) {
+  throw ComplexFormatError(source + ": unknown mesh extension '" + ext + "' (expected .off, .ply, .obj or .stl)");
 }
 
 std::ofstream open_for_writing(const std::string& path) {
@@ -47,14 +50,25 @@ void finish(std::ofstream& out, const std::string& path) {
 
 }  // namespace
 
-bool append_polygon_face(TriangleMesh3& mesh, const std::vector<std::uint32_t>& face) {
-  if (face.size() < 3) return false;
+PolygonFace append_polygon_face(TriangleMesh3& mesh, std::vector<std::uint32_t> face) {
+  const auto file_face = static_cast<std::uint32_t>(mesh.cleanup.file_faces++);
+  face.erase(std::unique(face.begin(), face.end()), face.end());
+  while (face.size() > 1 && face.front() == face.back()) face.pop_back();
+  if (face.size() < 3) {
+    ++mesh.cleanup.degenerate_faces;
+    return PolygonFace::Degenerate;
+  }
   std::vector<std::uint32_t> sorted = face;
   std::sort(sorted.begin(), sorted.end());
-  if (std::adjacent_find(sorted.begin(), sorted.end()) != sorted.end()) return false;
-  for (std::size_t i = 1; i + 1 < face.size(); ++i) mesh.triangles.push_back({face[0], face[i], face[i + 1]});
-  return true;
+  if (std::adjacent_find(sorted.begin(), sorted.end()) != sorted.end()) return PolygonFace::RepeatsVertex;
+  for (std::size_t i = 1; i + 1 < face.size(); ++i) {
+    mesh.triangles.push_back({face[0], face[i], face[i + 1]});
+    mesh.triangle_origin.push_back(file_face);
+  }
+  return PolygonFace::Added;
 }
+
+bool is_mesh_extension(const std::string& ext) { return ext == "off" || ext == "ply" || ext == "obj" || ext == "stl"; }
 
 std::string file_extension(const std::string& path) {
   const std::size_t slash = path.find_last_of('/');
@@ -84,7 +98,7 @@ TriangleMesh3 parse_off(const std::string& text, const std::string& source) {
   std::uint64_t c[3];
   for (int i = 0; i < 3; ++i) {
     const auto v = parse_index(count_tokens[i]);
-    if (!v) format_error(source, count_line, "count '" + count_tokens[i] + "' is not a non-negative integer");
+    if (!v) format_error(source, count_line, "count " + quote_token(count_tokens[i]) + " is not a non-negative integer");
     c[i] = *v;
   }
   const std::uint64_t nv = c[0], nf = c[1];
@@ -102,12 +116,15 @@ TriangleMesh3 parse_off(const std::string& text, const std::string& source) {
     std::vector<std::uint32_t> face;
     for (std::uint64_t k = 0; k < *n; ++k) {  // numbers after the indices (colours) are ignored
       const auto idx = parse_index(l.tokens[1 + k]);
-      if (!idx || *idx >= nv) format_error(source, l.number, "vertex index '" + l.tokens[1 + k] + "' out of range (" + std::to_string(nv) + " vertices)");
+      if (!idx) format_error(source, l.number, quote_token(l.tokens[1 + k]) + " is not a vertex index");
+      if (*idx >= nv)
+        format_error(source, l.number, "vertex index '" + l.tokens[1 + k] + "' out of range (" + std::to_string(nv) + " vertices)");
       face.push_back(static_cast<std::uint32_t>(*idx));
     }
-    if (!append_polygon_face(m, face)) format_error(source, l.number, "face repeats a vertex");
+    if (append_polygon_face(m, face) == PolygonFace::RepeatsVertex)
+      format_error(source, l.number, "face repeats a vertex (not next to itself)");
   }
-  check_not_empty(m);
+  finish_mesh_reading(m);
   return m;
 }
 
@@ -131,7 +148,7 @@ TriangleMesh3 parse_obj(const std::string& text, const std::string& source) {
         const std::string idx = l.tokens[1 + k].substr(0, l.tokens[1 + k].find('/'));
         const bool negative = !idx.empty() && idx[0] == '-';
         const auto v = parse_index(negative ? idx.substr(1) : idx);
-        if (!v || *v == 0) format_error(source, l.number, "'" + l.tokens[1 + k] + "' is not a vertex reference");
+        if (!v || *v == 0) format_error(source, l.number, quote_token(l.tokens[1 + k]) + " is not a vertex reference");
         f.ref[k] = negative ? -static_cast<long long>(*v) : static_cast<long long>(*v);
         // A negative reference counts back from the vertices read so far.
         if (negative) f.ref[k] = static_cast<long long>(m.vertices.size()) + f.ref[k] + 1;
@@ -146,18 +163,26 @@ TriangleMesh3 parse_obj(const std::string& text, const std::string& source) {
         format_error(source, f.line, "vertex reference out of range (" + std::to_string(m.vertices.size()) + " vertices)");
       face.push_back(static_cast<std::uint32_t>(r - 1));
     }
-    if (!append_polygon_face(m, face)) format_error(source, f.line, "face repeats a vertex");
+    if (append_polygon_face(m, face) == PolygonFace::RepeatsVertex)
+      format_error(source, f.line, "face repeats a vertex (not next to itself)");
   }
-  check_not_empty(m);
+  finish_mesh_reading(m);
   return m;
+}
+
+TriangleMesh3 parse_triangle_mesh(const std::string& bytes, const std::string& source) {
+  const std::string ext = file_extension(source);
+  if (ext == "off") return parse_off(bytes, source);
+  if (ext == "obj") return parse_obj(bytes, source);
+  if (ext == "ply") return parse_ply(bytes, source);
+  if (ext == "stl") return parse_stl(bytes, source);
+  unknown_mesh_extension(source, ext);
 }
 
 TriangleMesh3 read_triangle_mesh(const std::string& path) {
   const std::string ext = file_extension(path);
-  if (ext == "off") return parse_off(read_text_file(path), path);
-  if (ext == "obj") return parse_obj(read_text_file(path), path);
-  if (ext == "ply") return parse_ply(read_text_file(path), path);
-  throw ComplexFormatError(path + ": unknown mesh extension '" + ext + "' (expected .off, .ply or .obj)");
+  if (!is_mesh_extension(ext)) unknown_mesh_extension(path, ext);
+  return parse_triangle_mesh(read_text_file(path), path);
 }
 
 void write_off(const TriangleMesh3& m, const std::string& path) {
@@ -192,12 +217,16 @@ BallSet parse_ball_list(const std::string& text, const std::string& source) {
   for (const TextLine& l : tokenize_lines(text)) {
     if (l.tokens.size() != 4) format_error(source, l.number, "a ball line must be 'x y z w' (w = squared radius)");
     mpq_class v[4];
+    // The builders triangulate the approximate balls in doubles first (CGAL), so every value
+    // must have a finite nearest double.
+    static const mpq_class largest(std::numeric_limits<double>::max());
     for (int i = 0; i < 4; ++i) {
       const auto q = parse_exact_decimal(l.tokens[i]);
-      if (!q) format_error(source, l.number, "'" + l.tokens[i] + "' is not a finite decimal number");
+      if (!q) format_error(source, l.number, quote_token(l.tokens[i]) + " is not a finite decimal number");
+      if (abs(*q) > largest) format_error(source, l.number, quote_token(l.tokens[i]) + " is beyond the range of doubles");
       v[i] = *q;
     }
-    if (sgn(v[3]) <= 0) format_error(source, l.number, "squared radius " + l.tokens[3] + " is not positive");
+    if (sgn(v[3]) <= 0) format_error(source, l.number, "squared radius " + shorten_token(l.tokens[3]) + " is not positive");
     b.centers.push_back({v[0], v[1], v[2]});
     b.squared_radii.push_back(v[3]);
     b.approx_centers.push_back({v[0].get_d(), v[1].get_d(), v[2].get_d()});

@@ -6,6 +6,8 @@
 
 #include "io/complex_text.h"
 #include "io/mesh_io.h"
+#include "io/mesh_weld.h"
+#include "io/quoted.h"
 
 namespace grassfire {
 namespace {
@@ -78,7 +80,7 @@ PlyHeader parse_header(const std::string& bytes, const std::string& source) {
       if (t.size() != 3 || t[2] != "1.0") format_error(source, line, "format line must be 'format <kind> 1.0'");
       if (t[1] == "ascii") h.binary = false;
       else if (t[1] == "binary_little_endian") h.binary = true;
-      else format_error(source, line, "unsupported PLY format '" + t[1] + "' (ascii or binary_little_endian)");
+      else format_error(source, line, "unsupported PLY format " + quote_token(t[1]) + " (ascii or binary_little_endian)");
       format_seen = true;
     } else if (t[0] == "element") {
       const auto n = t.size() == 3 ? parse_index(t[2]) : std::nullopt;
@@ -93,14 +95,14 @@ PlyHeader parse_header(const std::string& bytes, const std::string& source) {
         p = {t[4], true, *ct, *vt};
       } else if (t.size() == 3) {
         const auto vt = ply_type(t[1]);
-        if (!vt) format_error(source, line, "unknown PLY type '" + t[1] + "'");
+        if (!vt) format_error(source, line, "unknown PLY type " + quote_token(t[1]));
         p = {t[2], false, PlyType::UInt8, *vt};
       } else {
         format_error(source, line, "malformed property line");
       }
       h.elements.back().properties.push_back(p);
     } else {
-      format_error(source, line, "unknown header keyword '" + t[0] + "'");
+      format_error(source, line, "unknown header keyword " + quote_token(t[0]));
     }
   }
   if (!format_seen) format_error(source, line, "header has no format line");
@@ -116,7 +118,7 @@ class PlyReader {
       : bytes_(bytes), h_(h), source_(source), pos_(h.body_offset), line_(h.body_line - 1) {}
 
   std::vector<std::vector<double>> next(const PlyElement& e, std::uint64_t index) {
-    where_ = e.name + " " + std::to_string(index);
+    where_ = shorten_token(e.name) + " " + std::to_string(index);
     if (!h_.binary) start_line();
     std::vector<std::vector<double>> values;
     for (const PlyProperty& p : e.properties) {
@@ -171,7 +173,7 @@ class PlyReader {
       if (tok == "inf" || tok == "+inf") return std::numeric_limits<double>::infinity();
       if (tok == "-inf") return -std::numeric_limits<double>::infinity();
       if (tok == "nan") return std::numeric_limits<double>::quiet_NaN();
-      fail("'" + tok + "' is not a number");
+      fail(quote_token(tok) + " is not a number");
     }
     const std::size_t n = type_size(t);
     if (pos_ + n > bytes_.size()) fail("file ends early");
@@ -240,18 +242,21 @@ TriangleMesh3 parse_ply(const std::string& bytes, const std::string& source) {
           throw ComplexFormatError(where + "face with " + std::to_string(idx.size()) + " vertices; at least 3 are required");
         std::vector<std::uint32_t> face;
         for (double k : idx) {
-          if (k < 0 || k != std::floor(k) || k >= vertex_count) throw ComplexFormatError(where + "vertex index out of range");
+          if (k < 0 || k != std::floor(k) || k >= vertex_count)
+            throw ComplexFormatError(where + "vertex index " + shortest_double(k) + " out of range (" +
+                                     shortest_double(vertex_count) + " vertices)");
           face.push_back(static_cast<std::uint32_t>(k));
         }
-        if (!append_polygon_face(m, face)) throw ComplexFormatError(where + "face repeats a vertex");
+        if (append_polygon_face(m, face) == PolygonFace::RepeatsVertex)
+          throw ComplexFormatError(where + "face repeats a vertex (not next to itself)");
       }
     }
     have_vertices = have_vertices || e.name == "vertex";
     have_faces = have_faces || e.name == "face";
   }
   reader.finish();
-  if (!have_vertices || !have_faces || m.vertices.empty() || m.triangles.empty())
-    throw ComplexFormatError(source + ": empty mesh (no vertices or no triangles)");
+  if (!have_vertices || !have_faces) throw ComplexFormatError(source + ": empty mesh (no vertices or no triangles)");
+  finish_mesh_reading(m);
   return m;
 }
 

@@ -9,6 +9,8 @@
 #include <numeric>
 #include <stdexcept>
 
+#include "io/xml_escape.h"
+
 namespace grassfire {
 namespace {
 
@@ -36,17 +38,6 @@ std::string points_attr(const std::vector<Point2d>& pts) {
   for (const Point2d& p : pts) s += fmt(p[0]) + "," + fmt(p[1]) + " ";
   if (!s.empty()) s.pop_back();
   return s;
-}
-
-std::string escape(const std::string& s) {
-  std::string out;
-  for (char c : s) {
-    if (c == '<') out += "&lt;";
-    else if (c == '>') out += "&gt;";
-    else if (c == '&') out += "&amp;";
-    else out += c;
-  }
-  return out;
 }
 
 }  // namespace
@@ -108,7 +99,7 @@ void SvgCanvas::circle(const Point2d& c, double r, const Rgb& fill, const Rgb& s
 
 void SvgCanvas::text(const Point2d& p, const std::string& s, double size, const std::string& anchor, const Rgb& color) {
   body_ += "<text x=\"" + fmt(p[0]) + "\" y=\"" + fmt(p[1]) + "\" font-family=\"DejaVu Sans, sans-serif\" font-size=\"" +
-           fmt(size) + "\" text-anchor=\"" + anchor + "\" fill=\"" + to_svg_color(color) + "\">" + escape(s) + "</text>\n";
+           fmt(size) + "\" text-anchor=\"" + anchor + "\" fill=\"" + to_svg_color(color) + "\">" + xml_escape(s) + "</text>\n";
 }
 
 void SvgCanvas::rect(double x, double y, double w, double h, const Rgb& fill) {

@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "io/json_text.h"
+#include "io/quoted.h"
 
 namespace grassfire {
 
@@ -15,7 +16,7 @@ double coordinate(const nlohmann::json& point, const char* axis, std::size_t ind
   const std::string where = source + ": points[" + std::to_string(index) + "]";
   const auto it = point.find(axis);
   if (it == point.end()) throw ShapeFormatError(where + " has no \"" + axis + "\" member");
-  if (!it->is_number()) throw ShapeFormatError(where + "." + axis + " is not a number (" + it->dump() + ")");
+  if (!it->is_number()) throw ShapeFormatError(where + "." + axis + " is not a number (" + shorten_token(it->dump()) + ")");
   const double v = it->get<double>();
   if (!std::isfinite(v)) throw ShapeFormatError(where + "." + axis + " is not a finite number");
   return v;

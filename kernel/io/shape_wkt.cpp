@@ -6,6 +6,8 @@
 #include <cmath>
 #include <sstream>
 
+#include "io/quoted.h"
+
 namespace grassfire {
 
 namespace {
@@ -35,7 +37,7 @@ class WktReader {
              "give each polygon its own file");
       expect(')');
     } else {
-      fail_at(start, "expected POLYGON or MULTIPOLYGON, found '" + type + "'");
+      fail_at(start, "expected POLYGON or MULTIPOLYGON, found " + quote_token(type));
     }
     skip_space();
     if (peek() == ';') advance();
@@ -79,7 +81,7 @@ class WktReader {
     if (word == "EMPTY") fail_at(start, type + " EMPTY: the shape has no rings (empty input)");
     if (word == "Z" || word == "M" || word == "ZM")
       fail_at(start, type + " " + word + ": only 2D coordinates are supported");
-    fail_at(start, "expected '(' after " + type + ", found '" + word + "'");
+    fail_at(start, "expected '(' after " + quote_token(type) + ", found " + quote_token(word));
   }
 
   double number(const std::string& what) {
@@ -90,9 +92,9 @@ class WktReader {
     const char* last = word.data() + word.size();
     double value = 0.0;
     const std::from_chars_result r = std::from_chars(first, last, value);
-    if (r.ec == std::errc::result_out_of_range) fail_at(start, what + " '" + word + "' is out of the range of doubles");
-    if (r.ec != std::errc() || r.ptr != last) fail_at(start, "expected a number (" + what + "), found '" + word + "'");
-    if (!std::isfinite(value)) fail_at(start, what + " is not a finite number ('" + word + "')");
+    if (r.ec == std::errc::result_out_of_range) fail_at(start, what + " " + quote_token(word) + " is out of the range of doubles");
+    if (r.ec != std::errc() || r.ptr != last) fail_at(start, "expected a number (" + what + "), found " + quote_token(word));
+    if (!std::isfinite(value)) fail_at(start, what + " is not a finite number (" + quote_token(word) + ")");
     return value;
   }
 

@@ -6,8 +6,9 @@
 #include "io/complex_export.h"
 #include "io/complex_json.h"
 #include "io/complex_ma.h"
+#include "io/progress.h"
+#include "pipeline/complex_input.h"
 #include "tools/commands.h"
-#include "tools/complex_input.h"
 #include "tools/options.h"
 
 namespace grassfire::cli {
@@ -31,12 +32,13 @@ int run_complex(int argc, char** argv) {
   mc.validate();
   if (opt.has("json")) write_complex_json(raw, opt.get("json"));
   if (opt.has("ma") && !write_ma_file(raw, opt.get("ma")))
-    std::cerr << "complex: " << opt.get("ma") << ": some values are not decimals and were written as nearest doubles\n";
+    note("complex: " + opt.get("ma") + ": some values are not decimals and were written as nearest doubles");
   if (opt.has("ply")) {
     std::vector<double> r;
     for (const ComplexVertex& v : mc.vertices()) r.push_back(v.radius);
     write_complex_ply(mc, {{"R", r}}, opt.get("ply"));
   }
+  if (opt.has("quiet")) return 0;
   std::cout << "complex " << input << ": " << mc.vertex_count() << " vertices, " << mc.edge_count() << " edges, "
             << mc.triangle_count() << " triangles, " << mc.count(EdgeStratum::Dangling) << " segments, "
             << mc.count(EdgeStratum::Border) << " border edges, " << mc.count(EdgeStratum::Singular)

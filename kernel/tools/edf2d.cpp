@@ -1,16 +1,13 @@
 // edf2d.cpp -- `grassfire edf2d`: medial axis, EDF, EMA, ET and ST of a planar shape.
 #include <cstdio>
 #include <iostream>
-#include <optional>
 #include <sstream>
 
-#include "burn2/closest_points.h"
-#include "burn2/potential_residue.h"
 #include "io/atomic_file.h"
 #include "io/disk_list.h"
-#include "io/medial2_json.h"
 #include "io/svg_medial2.h"
 #include "pipeline/edf2d.h"
+#include "pipeline/edf2d_json.h"
 #include "shapes/builtin_shapes.h"
 #include "shapes/load_shape.h"
 #include "tools/commands.h"
@@ -72,7 +69,7 @@ int edf2d_main(int argc, char** argv) {
               "Computes the medial axis of a planar shape, the extended distance function (EDF),\n"
               "the extended medial axis (EMA), erosion thickness ET = EDF - R and shape\n"
               "tubularity ST = 1 - R/EDF (Liu 2011, ch. 3), with certified arithmetic.");
-  opt.positional("SHAPE", "a .json (2D Shape Structure dataset) or .wkt file, or a built-in name (" +
+  opt.positional("SHAPE", "a .json (2D Shape Structure dataset), .wkt, .png or .gif file, or a built-in name (" +
                               builtin_shape_names() + "); not with --disks", false)
       .option("disks", "FILE", "a union of disks instead of SHAPE (one 'x y r' line per disk): its exact axis")
       .option("samples", "N", "boundary samples for the Voronoi medial axis", std::to_string(kDefaultSamples))
@@ -83,11 +80,11 @@ int edf2d_main(int argc, char** argv) {
       .option("json", "OUT", "write nodes, edges, EDF, ET, ST and the EMA as JSON (format: README)")
       .option("svg", "OUT", "draw the shape, its medial axis coloured by --field and the EMA as SVG")
       .option("field", "F", "the field --svg colours the axis by: edf, et, st or r", "edf")
-      .flag("quiet", "print nothing on success")
       .epilog("examples:\n  grassfire edf2d hole --json hole.json\n"
               "  grassfire edf2d data/shapes2d/Bone-1.json --samples 5000\n"
               "  grassfire edf2d rectangle --exact --variant dissertation\n"
               "  grassfire edf2d --disks tests/data/disks/three.txt");
+  add_image_options(opt);
   if (!opt.parse(argc, argv)) return opt.exit_code();
   Edf2dOptions options;
   if (opt.has("exact")) options.axis = AxisMethod::ExactPolygon;
@@ -116,18 +113,10 @@ int edf2d_main(int argc, char** argv) {
     options.disks = &disks;
     shape.name = disks.name;
   } else {
-    shape = load_shape(opt.arg("SHAPE"));
+    shape = load_shape(opt.arg("SHAPE"), image_options(opt));
   }
   const Edf2dResult r = compute_edf2d(shape, options);
-  if (opt.has("json")) {
-    std::size_t samples = 0;
-    for (const auto& ring : r.samples) samples += ring.size();
-    std::optional<PotentialResidue> pr;  // PR needs arc lengths along the boundary
-    if (options.axis != AxisMethod::DiskUnion)
-      pr = potential_residue(*r.graph, closest_points(*r.graph, &shape, &r.samples));
-    write_file_atomically(opt.get("json"), medial2d_json({shape.name, samples, r.graph.get(), r.burning.get(),
-                                                          &r.measures, pr ? &*pr : nullptr}));
-  }
+  if (opt.has("json")) write_file_atomically(opt.get("json"), edf2d_json(shape, options, r));
   if (opt.has("svg")) {
     Medial2SvgOptions svg;
     svg.field = field;

@@ -3,6 +3,7 @@
 #include <iostream>
 #include <string>
 
+#include "grassfire_version.h"
 #include "tools/commands.h"
 
 namespace {
@@ -13,7 +14,7 @@ void print_usage(std::ostream& os) {
         "the extended medial axis (EMA) of Liu 2011.\n\ncommands:\n";
   for (const grassfire::cli::Command& c : grassfire::cli::commands())
     os << "  " << c.name << std::string(c.name.size() < 12 ? 12 - c.name.size() : 1, ' ') << c.summary << "\n";
-  os << "\n'grassfire <command> --help' describes a command.\n";
+  os << "\n'grassfire <command> --help' describes a command; 'grassfire --version' prints the version.\n";
 }
 
 }  // namespace
@@ -23,8 +24,8 @@ int main(int argc, char** argv) {
     print_usage(std::cout);
     return argc < 2 ? 2 : 0;
   }
-  if (!std::strcmp(argv[1], "--version")) {
-    std::cout << "grassfire 0.1\n";
+  if (!std::strcmp(argv[1], "--version") || !std::strcmp(argv[1], "version")) {
+    std::cout << "grassfire " << GRASSFIRE_VERSION << "\n";
     return 0;
   }
   for (const grassfire::cli::Command& c : grassfire::cli::commands())

@@ -58,7 +58,7 @@ int match2d_main(int argc, char** argv) {
               "boundary signature, boundary eccentricity BE by default (Liu 2011, 3.5.3): every\n"
               "cyclic start offset, then a monotone correspondence minimising the difference of\n"
               "the normalised signatures plus a penalty per stretch step.");
-  opt.positional("A", "the first shape: a .json or .wkt file, or a built-in name (" + builtin_shape_names() + ")")
+  opt.positional("A", "the first shape: a .json, .wkt, .png or .gif file, or a built-in name (" + builtin_shape_names() + ")")
       .positional("B", "the second shape, likewise")
       .option("samples", "N", "boundary samples per shape (the DP costs O(N^3))", "200")
       .option("stretch", "S", "cost of a step where only one curve advances (normalised units)", "0.05")
@@ -66,16 +66,16 @@ int match2d_main(int argc, char** argv) {
       .option("json", "OUT", "write the signatures and the correspondence as JSON (format: see source)")
       .option("svg", "OUT", "draw both boundaries coloured by the signature, with lines joining the "
                             "signature's local maxima on A to their partners on B")
-      .flag("quiet", "print nothing on success")
       .epilog("examples:\n  grassfire match2d data/shapes2d/children-1.json data/shapes2d/children-2.json --svg m.svg\n"
               "  grassfire match2d branches noisy --signature lfs --samples 150");
+  add_image_options(opt);
   if (!opt.parse(argc, argv)) return opt.exit_code();
   const auto n = static_cast<std::size_t>(opt.get_long("samples", 8, 2000));
   MatchOptions mo;
   mo.stretch = opt.get_double("stretch");
   if (!(mo.stretch >= 0)) throw std::invalid_argument("option --stretch must be a non-negative number");
   const std::string kind = opt.get("signature");
-  const Shape2 a = load_shape(opt.arg("A")), b = load_shape(opt.arg("B"));
+  const Shape2 a = load_shape(opt.arg("A"), image_options(opt)), b = load_shape(opt.arg("B"), image_options(opt));
   const BoundarySignature sa = signature_of(a, kind, n), sb = signature_of(b, kind, n);
   const BoundaryMatch m = match_signatures(sa.values, sb.values, mo);
   const std::vector<std::uint32_t> corr = correspondence_of(m, n);

@@ -7,6 +7,7 @@
 #include "io/complex_export.h"
 #include "io/complex_json.h"
 #include "io/complex_ma.h"
+#include "io/progress.h"
 #include "tools/commands.h"
 #include "tools/options.h"
 
@@ -15,7 +16,7 @@ namespace {
 
 int run_medial3d(int argc, char** argv) {
   Options opt("medial3d", "The medial axis of a convex polyhedron, a union of balls or a closed mesh, as a 2-complex.");
-  opt.positional("INPUT", "a mesh (.off .ply .obj), a half-space list (.hs .halfspaces: one `a b c d` per line, "
+  opt.positional("INPUT", "a mesh (.off .ply .obj .stl), a half-space list (.hs .halfspaces: one `a b c d` per line, "
                           "a x + b y + c z <= d) or a ball list (.cin .balls: `x y z w`, w = r^2)")
       .option("kind", "K", "convex (exact axis of a convex polyhedron), balls (exact axis of the union), mesh "
                            "(axis of the inner polar balls of a closed mesh), auto (by extension; convex meshes "
@@ -30,12 +31,20 @@ int run_medial3d(int argc, char** argv) {
   if (!opt.parse(argc, argv)) return opt.exit_code();
   const std::string input = opt.arg("INPUT");
   const int samples = static_cast<int>(opt.get_long("samples", 1, 64));
+  Progress progress("medial3d " + input, 3);
+  progress.stage("building the medial axis");
   const MedialAxisBuild axis = build_medial_axis(input, parse_medial_input_kind(opt.get("kind")), samples);
+  if (const std::string r = axis.report.value("/mesh_input/repairs"_json_pointer, ""); !r.empty())
+    note("medial3d: " + input + ": " + r);
+  progress.advance();
+  progress.stage("building and validating the complex");
   const MedialComplex mc(axis.complex);
   mc.validate();
+  progress.advance();
+  progress.stage("writing");
   if (opt.has("complex")) write_complex_json(axis.complex, opt.get("complex"));
   if (opt.has("ma") && !write_ma_file(axis.complex, opt.get("ma")))
-    std::cerr << "medial3d: " << opt.get("ma") << ": some values are irrational and were written as nearest doubles\n";
+    note("medial3d: " + opt.get("ma") + ": some values are irrational and were written as nearest doubles");
   if (opt.has("ply")) {
     std::vector<double> r;
     for (const ComplexVertex& v : mc.vertices()) r.push_back(v.radius);
@@ -46,6 +55,8 @@ int run_medial3d(int argc, char** argv) {
     out << axis.report.dump(1) << '\n';
     if (!out) throw std::runtime_error(opt.get("json") + ": cannot write");
   }
+  progress.done();
+  if (opt.has("quiet")) return 0;
   const nlohmann::json& a = axis.report["axis"];
   std::cout << "medial3d " << input << " (" << axis.kind << "): " << a["vertices"] << " vertices, " << a["triangles"]
             << " triangles, " << a["segments"] << " segments, " << mc.count(EdgeStratum::Singular)

@@ -1,6 +1,8 @@
 // options.cpp -- see options.h.
 #include "tools/options.h"
 
+#include "io/progress.h"
+
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
@@ -60,7 +62,9 @@ std::string Options::usage() const {
     if (s.default_value) os << " (default: " << *s.default_value << ")";
     os << "\n";
   }
-  os << "  --help\n      print this help and exit\n";
+  os << "  --quiet\n      print nothing but errors\n"
+        "  --progress\n      report progress on stderr even when it is not a terminal (it is shown on a terminal)\n"
+        "  --help\n      print this help and exit\n";
   if (!epilog_.empty()) os << "\n" << epilog_ << "\n";
   return os.str();
 }
@@ -87,6 +91,10 @@ bool Options::parse(int argc, char** argv) {
         value = name.substr(eq + 1);
         name = name.substr(0, eq);
       }
+      if ((name == "quiet" || name == "progress") && !inline_value) {  // every command's switches
+        values_[name] = "";
+        continue;
+      }
       const Spec* s = find(name);
       if (!s) return fail("unknown option --" + name);
       if (!s->takes_value) {
@@ -106,6 +114,8 @@ bool Options::parse(int argc, char** argv) {
   }
   if (next_positional < required_positionals_)
     return fail("missing argument " + positionals_[next_positional].first);
+  if (has("quiet") && has("progress")) return fail("--quiet and --progress exclude each other");
+  set_verbosity(has("quiet") ? Verbosity::Quiet : has("progress") ? Verbosity::Progress : Verbosity::Auto);
   return true;
 }
 
@@ -139,6 +149,23 @@ double Options::get_double(const std::string& name) const {
   if (v.empty() || *end != '\0' || !std::isfinite(x))
     throw std::invalid_argument("option --" + name + " must be a finite number, got '" + v + "'");
   return x;
+}
+
+void add_image_options(Options& opt) {
+  opt.option("connectivity", "4|8", "image shapes: foreground pixels touching at a corner are joined (8) or not (4)",
+             "8")
+      .option("contour", "C", "image shapes: pixel (the exact pixel boundary) or marching-squares", "pixel")
+      .option("foreground", "F", "image shapes: auto (the pixels unlike the image border; opaque ones if the image "
+                                 "has transparency), dark, light or opaque", "auto")
+      .option("threshold", "T", "image shapes: gray levels below T (0..255) are dark", "128")
+      .flag("largest", "image shapes: keep the largest foreground component instead of failing on several");
+}
+
+ImageShapeOptions image_options(const Options& opt) {
+  std::map<std::string, std::string> named;
+  for (const char* name : {"connectivity", "contour", "foreground", "threshold"}) named[name] = opt.get(name);
+  named["largest"] = opt.has("largest") ? "true" : "false";
+  return parse_image_shape_options(named);
 }
 
 }  // namespace grassfire::cli

@@ -4,12 +4,16 @@
 // text, then parse(). `--help`/`-h` prints the generated usage and makes parse() return
 // false with exit code 0; a malformed command line prints the usage and an error and
 // returns false with exit code 2. Values are checked when read (integers, reals).
+// Every command also takes --quiet (nothing but errors) and --progress (progress lines on
+// stderr even when it is not a terminal); parse() sets the verbosity of io/progress.h.
 #pragma once
 
 #include <map>
 #include <optional>
 #include <string>
 #include <vector>
+
+#include "shapes/image_shape.h"
 
 namespace grassfire::cli {
 
@@ -53,5 +57,10 @@ class Options {
   std::map<std::string, std::string> args_;
   int exit_code_ = 0;
 };
+
+// The options of a shape given as an image (shapes/image_shape.h): --connectivity,
+// --contour, --foreground, --threshold, --largest; every 2D command that loads a SHAPE takes them.
+void add_image_options(Options& opt);
+ImageShapeOptions image_options(const Options& opt);
 
 }  // namespace grassfire::cli

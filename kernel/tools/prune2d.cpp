@@ -112,7 +112,7 @@ int prune2d_main(int argc, char** argv) {
               "ST = 1 - R/EDF is at least S, cutting edges exactly where a threshold is crossed;\n"
               "--topology peels only failing leaves instead (the thinning of 3.3.2), which keeps\n"
               "the homotopy type of the axis.");
-  opt.positional("SHAPE", "a .json or .wkt file, or a built-in name (" + builtin_shape_names() + ")")
+  opt.positional("SHAPE", "a .json, .wkt, .png or .gif file, or a built-in name (" + builtin_shape_names() + ")")
       .option("et", "T", "ET threshold, in shape units (a fraction of the shape's size with --relative)", "0")
       .option("st", "S", "ST threshold, in [0, 1]", "0")
       .flag("relative", "T is a fraction of the shape's size, the larger side of its bounding box")
@@ -120,18 +120,18 @@ int prune2d_main(int argc, char** argv) {
       .option("samples", "N", "boundary samples for the Voronoi medial axis", std::to_string(kDefaultSamples))
       .flag("exact", "exact medial axis of the polygon instead of samples")
       .option("json", "OUT", "write the pruned graph as JSON (format: kernel/tools/prune2d.cpp)")
-      .flag("quiet", "print nothing on success")
       .epilog("Thresholds are read exactly as decimals. The dissertation's (Fig. 3.6 e, 3.7) are\n"
               "ET 0.05 of the shape's size and ST 1 - 1/sqrt(2) ~ 0.3; the ST of a branch into a right-\n"
               "angled corner is exactly 1 - 1/sqrt(2) all along it, so take S a little above to remove it:\n"
               "  grassfire prune2d blunt-sharp --et 0.05 --relative --st 0.3 --topology");
+  add_image_options(opt);
   if (!opt.parse(argc, argv)) return opt.exit_code();
   PruningThresholds t;
   t.erosion = threshold(opt, "et");
   t.tubularity = threshold(opt, "st");
   if (t.tubularity > 1) throw std::invalid_argument("option --st must be at most 1");
   t.topology = opt.has("topology");
-  const Shape2 shape = load_shape(opt.arg("SHAPE"));
+  const Shape2 shape = load_shape(opt.arg("SHAPE"), image_options(opt));
   const double size = shape_dimension(shape);
   if (opt.has("relative")) t.erosion *= mpq_class(size);
   Edf2dOptions options;

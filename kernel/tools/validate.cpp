@@ -19,13 +19,16 @@ int run_validate(int argc, char** argv) {
   Options opt("validate", "Load a shape, check it exactly (simple rings, no ring meeting another, holes inside the\n"
                           "outer ring and outside each other) and describe it. Exit 0 when valid, 1 with the first\n"
                           "problem otherwise.");
-  opt.positional("SHAPE", "a .json (shapes2d) or .wkt / .txt (Well-Known Text) file, or a built-in name")
+  opt.positional("SHAPE", "a .json (shapes2d), .wkt / .txt (Well-Known Text) or .png / .gif (binary image) file, "
+                          "or a built-in name")
       .epilog("Repeated consecutive vertices and a repeated closing vertex are dropped silently; the outer\n"
               "ring is made counter-clockwise and holes clockwise. Vertex numbers in messages are\n"
               "0-based positions in the file.");
+  add_image_options(opt);
   if (!opt.parse(argc, argv)) return opt.exit_code();
   ShapeValidation report;
-  const Shape2 shape = load_shape(opt.arg("SHAPE"), &report);
+  const Shape2 shape = load_shape(opt.arg("SHAPE"), image_options(opt), &report);
+  if (opt.has("quiet")) return 0;  // the exit code says valid
   std::cout << shape.name << ": valid, " << shape.rings.size() << (shape.rings.size() == 1 ? " ring" : " rings")
             << "\n";
   Interval area(0.0);

@@ -178,9 +178,12 @@ ConvexAxis convex_polyhedron_axis(const ConvexPolyhedron& input, const ConvexAxi
   PolytopeCell p0 = polytope_from_planes(given, input.source);
   std::vector<HalfSpace> facets;
   std::vector<ExactPoint3> centroid;
-  for (const auto& f : p0.faces) {
+  for (auto& f : p0.faces) {
     facets.push_back(input.planes[first_of(f.label)]);
     centroid.push_back(polygon_centroid(p0, f));
+    // From here on facets are numbered in this order (g->u, clip_order): relabel, or a
+    // redundant input plane shifts the numbers past the end of g->u.
+    f.label = label(kFacet, facets.size() - 1);
   }
   out.redundant_planes = input.planes.size() - facets.size();
   std::vector<double> deltas;

@@ -49,6 +49,10 @@ ConvexPolyhedron parse_halfspaces(const std::string& text, const std::string& so
 ConvexPolyhedron read_halfspaces(const std::string& path);
 // The facet planes of a closed convex triangle mesh (coplanar triangles merged).
 ConvexPolyhedron convex_polyhedron_from_mesh(const TriangleMesh3& mesh);
+// A seeded random test polyhedron: the cube [-2, 2]^3 cut by 1-4 planes whose normals have
+// rational length (every |n|^2 a square, so the builder is exact), at offsets from |n| (at
+// distance 1 from the centre) to just below the largest n . x on the cube.
+ConvexPolyhedron random_cut_cube(std::uint32_t seed);
 
 struct ConvexAxisOptions {
   long approximation_bits = 24;  // approximate mode: rational unit normals within about 2^-bits

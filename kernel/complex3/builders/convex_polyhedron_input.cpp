@@ -1,6 +1,7 @@
 // convex_polyhedron_input.cpp -- half-space lists and convex meshes as ConvexPolyhedron
 // (see convex_polyhedron_axis.h).
 #include <map>
+#include <random>
 #include <stdexcept>
 #include <tuple>
 
@@ -8,6 +9,7 @@
 #include "complex3/builders/mesh_checks.h"
 #include "complex3/exact_predicates3.h"
 #include "io/complex_text.h"
+#include "io/quoted.h"
 
 namespace grassfire {
 
@@ -19,7 +21,7 @@ ConvexPolyhedron parse_halfspaces(const std::string& text, const std::string& so
     std::array<mpq_class, 4> v;
     for (int k = 0; k < 4; ++k) {
       const auto q = parse_exact_decimal(line.tokens[k]);
-      if (!q) format_error(source, line.number, "not a finite decimal number: `" + line.tokens[k] + "`");
+      if (!q) format_error(source, line.number, "not a finite decimal number: " + quote_token(line.tokens[k]));
       v[k] = *q;
     }
     if (sgn(v[0]) == 0 && sgn(v[1]) == 0 && sgn(v[2]) == 0)
@@ -31,6 +33,29 @@ ConvexPolyhedron parse_halfspaces(const std::string& text, const std::string& so
 }
 
 ConvexPolyhedron read_halfspaces(const std::string& path) { return parse_halfspaces(read_text_file(path), path); }
+
+ConvexPolyhedron random_cut_cube(std::uint32_t seed) {
+  static const int dirs[6][3] = {{3, 4, 0}, {0, 3, 4}, {4, 0, 3}, {1, 2, 2}, {2, 3, 6}, {12, 5, 0}};
+  static const int length[6] = {5, 5, 5, 3, 7, 13};
+  ConvexPolyhedron p;
+  p.source = "cube cut at seed " + std::to_string(seed);
+  for (int axis = 0; axis < 3; ++axis)
+    for (int sign : {1, -1}) {
+      mpq_class n[3] = {0, 0, 0};
+      n[axis] = sign;
+      p.planes.push_back({n[0], n[1], n[2], 2});
+    }
+  std::mt19937 rng(seed);
+  std::uniform_int_distribution<int> cuts(1, 4), pick(0, 5), sign(0, 1);
+  for (int k = cuts(rng); k > 0; --k) {
+    const int d = pick(rng);
+    int v[3];
+    for (int i = 0; i < 3; ++i) v[i] = dirs[d][i] * (sign(rng) ? 1 : -1);
+    std::uniform_int_distribution<int> offset(length[d], 2 * (std::abs(v[0]) + std::abs(v[1]) + std::abs(v[2])) - 1);
+    p.planes.push_back({v[0], v[1], v[2], offset(rng)});
+  }
+  return p;
+}
 
 namespace {
 

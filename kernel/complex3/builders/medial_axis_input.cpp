@@ -9,6 +9,7 @@
 #include "complex3/builders/simplicial_homology.h"
 #include "complex3/builders/union_of_balls_axis.h"
 #include "io/mesh_io.h"
+#include "io/mesh_weld.h"
 
 namespace grassfire {
 
@@ -75,17 +76,14 @@ nlohmann::json balls_json(const UnionOfBallsAxis& a) {
 
 MedialInputKind kind_of_path(const std::string& path) {
   const std::string ext = file_extension(path);
-  if (ext == "off" || ext == "ply" || ext == "obj") return MedialInputKind::Auto;
+  if (is_mesh_extension(ext)) return MedialInputKind::Auto;
   if (ext == "hs" || ext == "halfspaces") return MedialInputKind::Convex;
   if (ext == "cin" || ext == "balls") return MedialInputKind::Balls;
   throw std::invalid_argument(path + ": unknown extension '" + ext +
-                              "' (meshes: .off .ply .obj; half-spaces: .hs .halfspaces; balls: .cin .balls)");
+                              "' (meshes: .off .ply .obj .stl; half-spaces: .hs .halfspaces; balls: .cin .balls)");
 }
 
-bool is_mesh_path(const std::string& path) {
-  const std::string ext = file_extension(path);
-  return ext == "off" || ext == "ply" || ext == "obj";
-}
+bool is_mesh_path(const std::string& path) { return is_mesh_extension(file_extension(path)); }
 
 }  // namespace
 
@@ -136,6 +134,7 @@ MedialAxisBuild build_medial_axis(const std::string& path, MedialInputKind kind,
       out.report["protrusion_bound"] = poles.protrusion;
       out.report["uncovered_estimate"] = poles.uncovered;
     }
+    out.report["mesh_input"] = mesh_input_json(mesh);
   }
   out.report["input"] = path;
   out.report["kind"] = out.kind;

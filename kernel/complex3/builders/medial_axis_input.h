@@ -8,8 +8,9 @@
 //  - a closed mesh: the axis of its inner polar balls (mesh_poles.h) -- an approximation
 //    with the convergence guarantee of the power crust, then the exact union-of-balls axis;
 // and a JSON report of what was computed (counts, exactness and error bounds, timings,
-// Betti numbers of the shape and of the axis where known). Kind Auto picks by extension;
-// for a mesh it takes the convex builder when the mesh is convex, else the pole builder.
+// Betti numbers of the shape and of the axis where known; for meshes "mesh_input": what the
+// reader welded and dropped, io/mesh_weld.h, "repairs" its one-line summary). Kind Auto
+// picks by extension; for a mesh it takes the convex builder when the mesh is convex, else the pole builder.
 // Contract: errors are exceptions whose message names the file and the problem (readers:
 // ComplexFormatError; geometry: std::invalid_argument); nothing is written here.
 // Complexity: that of the builder used.

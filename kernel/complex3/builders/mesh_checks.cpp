@@ -8,7 +8,9 @@
 #include <stdexcept>
 #include <string>
 
+#include "complex3/builders/mesh_embedding.h"
 #include "complex3/exact_predicates3.h"
+#include "io/complex_text.h"
 
 namespace grassfire {
 
@@ -18,8 +20,20 @@ namespace {
   throw std::invalid_argument(mesh.source + ": " + problem);
 }
 
-std::string edge_text(std::uint32_t a, std::uint32_t b) {
-  return "edge (" + std::to_string(a) + ", " + std::to_string(b) + ")";
+// Vertices and faces are named by their index in the file (TriangleMesh3::vertex_origin),
+// with the point, which identifies a vertex in formats without vertex indices (STL).
+std::string point_text(const std::array<double, 3>& p) {
+  return "(" + shortest_double(p[0]) + ", " + shortest_double(p[1]) + ", " + shortest_double(p[2]) + ")";
+}
+
+std::string vertex_text(const TriangleMesh3& mesh, std::uint32_t v) {
+  return "vertex " + std::to_string(file_vertex_index(mesh, v)) + " at " + point_text(mesh.vertices[v]);
+}
+
+std::string edge_text(const TriangleMesh3& mesh, std::uint32_t a, std::uint32_t b, std::uint32_t t) {
+  return "edge (" + std::to_string(file_vertex_index(mesh, a)) + ", " + std::to_string(file_vertex_index(mesh, b)) +
+         ") from " + point_text(mesh.vertices[a]) + " to " + point_text(mesh.vertices[b]) + " of face " +
+         std::to_string(file_face_index(mesh, t));
 }
 
 void require_distinct_used_vertices(const TriangleMesh3& mesh) {
@@ -27,15 +41,16 @@ void require_distinct_used_vertices(const TriangleMesh3& mesh) {
   for (const auto& t : mesh.triangles)
     for (std::uint32_t v : t) used[v] = true;
   for (std::size_t v = 0; v < used.size(); ++v)
-    if (!used[v]) reject(mesh, "vertex " + std::to_string(v) + " is not used by any triangle");
+    if (!used[v]) reject(mesh, vertex_text(mesh, v) + " is not used by any triangle");
   std::vector<std::uint32_t> order(mesh.vertices.size());
   std::iota(order.begin(), order.end(), 0u);
   std::sort(order.begin(), order.end(),
             [&](std::uint32_t a, std::uint32_t b) { return mesh.vertices[a] < mesh.vertices[b]; });
   for (std::size_t i = 1; i < order.size(); ++i)
     if (mesh.vertices[order[i]] == mesh.vertices[order[i - 1]])
-      reject(mesh, "duplicate vertices " + std::to_string(std::min(order[i], order[i - 1])) + " and " +
-                       std::to_string(std::max(order[i], order[i - 1])) + " (same position)");
+      reject(mesh, "duplicate vertices " + std::to_string(file_vertex_index(mesh, std::min(order[i], order[i - 1]))) +
+                       " and " + std::to_string(file_vertex_index(mesh, std::max(order[i], order[i - 1]))) +
+                       " (same position " + point_text(mesh.vertices[order[i]]) + ")");
 }
 
 // Each undirected edge once in each direction; returns the directed edge -> triangle map.
@@ -45,13 +60,12 @@ std::map<std::pair<std::uint32_t, std::uint32_t>, std::uint32_t> require_paired_
     for (int k = 0; k < 3; ++k) {
       const std::uint32_t a = mesh.triangles[t][k], b = mesh.triangles[t][(k + 1) % 3];
       if (!directed.emplace(std::make_pair(a, b), t).second)
-        reject(mesh, edge_text(a, b) + " is used twice in the same direction (inconsistent orientation or "
-                                       "more than two triangles on the edge)");
+        reject(mesh, edge_text(mesh, a, b, t) + " is used twice in the same direction (inconsistent orientation or "
+                                                "more than two triangles on the edge)");
     }
   for (const auto& [e, t] : directed)
     if (!directed.count({e.second, e.first}))
-      reject(mesh, edge_text(std::min(e.first, e.second), std::max(e.first, e.second)) +
-                       " has one triangle (the mesh is not closed)");
+      reject(mesh, edge_text(mesh, e.first, e.second, t) + " has one triangle (the mesh is not closed)");
   return directed;
 }
 
@@ -70,7 +84,7 @@ void require_single_fans(const TriangleMesh3& mesh) {
       ++steps;
     } while (u != link[v].front().first && steps <= link[v].size());
     if (steps != link[v].size())
-      reject(mesh, "vertex " + std::to_string(v) + " is non-manifold (its triangles form more than one fan)");
+      reject(mesh, vertex_text(mesh, v) + " is non-manifold (its triangles form more than one fan)");
   }
 }
 
@@ -103,6 +117,7 @@ void require_closed_manifold(const TriangleMesh3& mesh) {
   require_distinct_used_vertices(mesh);
   require_paired_edges(mesh);
   require_single_fans(mesh);
+  require_embedded(mesh);
 }
 
 int mesh_orientation(const TriangleMesh3& mesh) {

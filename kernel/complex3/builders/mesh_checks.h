@@ -1,11 +1,12 @@
 // mesh_checks.h -- is a triangle mesh the boundary of a solid? Exact checks.
 //
-// Computes: whether a TriangleMesh3 is a closed, consistently oriented 2-manifold without
-// duplicate or unused vertices, and which way it is oriented; exact orientation of four
-// double points. The medial-axis builders (convex polyhedron, mesh poles) require solids.
+// Computes: whether a TriangleMesh3 is a closed, consistently oriented, embedded 2-manifold
+// without duplicate or unused vertices (mesh_embedding.h: no zero-area triangle, no fold,
+// no self-intersection), and which way it is oriented; exact orientation of four double
+// points. The medial-axis builders (convex polyhedron, mesh poles) require solids.
 // Contract: coordinates finite, indices in range, three distinct indices per triangle
 // (what the readers guarantee). Errors are std::invalid_argument "<source>: <problem>",
-// naming the first offending vertex or edge.
+// naming the first offending vertex, edge or face by its index in the file and its point.
 // Complexity: O(n log n) for n triangles; the orientation filter is Shewchuk's static
 // bound for orient3d on doubles, with an exact rational fallback.
 #pragma once
@@ -18,7 +19,8 @@
 namespace grassfire {
 
 // Every edge in exactly two triangles, used once in each direction; every vertex used,
-// with one fan of triangles around it; no two vertices at the same point.
+// with one fan of triangles around it; no two vertices at the same point; embedded
+// (require_embedded).
 void require_closed_manifold(const TriangleMesh3& mesh);
 
 // +1 when the triangles are oriented outward (positive signed volume), -1 inward, 0 for

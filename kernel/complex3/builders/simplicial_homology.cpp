@@ -32,24 +32,7 @@ class SimplexIndex {
 
 // Rank over GF(2) of the matrix with these columns (sorted row ids each).
 long gf2_rank(std::vector<std::vector<std::uint32_t>> columns) {
-  std::unordered_map<std::uint32_t, std::size_t> pivot_column;
-  long rank = 0;
-  for (std::size_t c = 0; c < columns.size(); ++c) {
-    std::vector<std::uint32_t>& col = columns[c];
-    while (!col.empty()) {
-      auto it = pivot_column.find(col.back());
-      if (it == pivot_column.end()) break;
-      std::vector<std::uint32_t> sum;
-      const std::vector<std::uint32_t>& other = columns[it->second];
-      std::set_symmetric_difference(col.begin(), col.end(), other.begin(), other.end(), std::back_inserter(sum));
-      col.swap(sum);
-    }
-    if (!col.empty()) {
-      pivot_column[col.back()] = c;
-      ++rank;
-    }
-  }
-  return rank;
+  return static_cast<long>(columns.size() - gf2_zero_columns(std::move(columns)).size());
 }
 
 long components(std::size_t n, const std::map<std::array<std::uint32_t, 2>, std::uint32_t>& edges) {
@@ -71,6 +54,27 @@ long components(std::size_t n, const std::map<std::array<std::uint32_t, 2>, std:
 }
 
 }  // namespace
+
+std::vector<std::size_t> gf2_zero_columns(std::vector<std::vector<std::uint32_t>> columns) {
+  std::unordered_map<std::uint32_t, std::size_t> pivot_column;
+  std::vector<std::size_t> zero;
+  for (std::size_t c = 0; c < columns.size(); ++c) {
+    std::vector<std::uint32_t>& col = columns[c];
+    while (!col.empty()) {
+      auto it = pivot_column.find(col.back());
+      if (it == pivot_column.end()) break;
+      std::vector<std::uint32_t> sum;
+      const std::vector<std::uint32_t>& other = columns[it->second];
+      std::set_symmetric_difference(col.begin(), col.end(), other.begin(), other.end(), std::back_inserter(sum));
+      col.swap(sum);
+    }
+    if (col.empty())
+      zero.push_back(c);
+    else
+      pivot_column[col.back()] = c;
+  }
+  return zero;
+}
 
 BettiNumbers betti_numbers(std::size_t vertex_count, const std::vector<std::array<std::uint32_t, 2>>& edges,
                            const std::vector<std::array<std::uint32_t, 3>>& triangles,

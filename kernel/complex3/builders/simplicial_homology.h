@@ -30,6 +30,12 @@ BettiNumbers betti_numbers(std::size_t vertex_count, const std::vector<std::arra
                            const std::vector<std::array<std::uint32_t, 3>>& triangles,
                            const std::vector<std::array<std::uint32_t, 4>>& tetrahedra);
 
+// The columns that reduce to zero over GF(2), in order, when each column (sorted row ids)
+// is reduced by the earlier ones (the standard pivot reduction): a column is listed iff it
+// is a sum of earlier columns. Removing all of them leaves the rank unchanged; for the
+// boundary columns of triangles they are one triangle per independent 2-cycle.
+std::vector<std::size_t> gf2_zero_columns(std::vector<std::vector<std::uint32_t>> columns);
+
 // Of a RawComplex: every vertex, the triangles, their edges and the segments.
 BettiNumbers betti_numbers(const RawComplex& complex);
 

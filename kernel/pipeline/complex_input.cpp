@@ -1,7 +1,6 @@
 // complex_input.cpp -- see complex_input.h.
-#include "tools/complex_input.h"
+#include "pipeline/complex_input.h"
 
-#include <iostream>
 #include <stdexcept>
 
 #include "complex3/builders/medial_axis_input.h"
@@ -9,8 +8,10 @@
 #include "io/complex_json.h"
 #include "io/complex_ma.h"
 #include "io/mesh_io.h"
+#include "io/mesh_weld.h"
+#include "io/progress.h"
 
-namespace grassfire::cli {
+namespace grassfire {
 namespace {
 
 bool is_synthetic(const std::string& input) {
@@ -24,7 +25,7 @@ bool is_synthetic(const std::string& input) {
 
 std::string complex_input_help() {
   return "a complex (.json in the grassfire-complex format, .ma medial axis); a shape whose medial axis is built as "
-         "by `grassfire medial3d`: a closed mesh (.off/.ply/.obj: exact for convex meshes, else from its inner polar "
+         "by `grassfire medial3d`: a closed mesh (.off/.ply/.obj/.stl: exact for convex meshes, else from its inner polar "
          "balls), a half-space list (.hs) or a ball list (.cin/.balls, exact); or a synthetic complex: board-fin, "
          "board-cylinder, book:K, y-junction, tetrahedron, octahedron, double-cone, tetrahedron-flap, box:A:B:C";
 }
@@ -35,21 +36,24 @@ RawComplex load_complex(const std::string& input, bool mesh_is_complex, const st
   if (ext == "json") return read_complex_json(input);
   if (ext == "ma") return read_ma(input);
   if (mesh_is_complex) {
-    if (ext != "off" && ext != "ply" && ext != "obj")
-      throw std::runtime_error(input + ": --mesh-is-complex needs a mesh (.off, .ply or .obj)");
-    return mesh_as_complex(read_triangle_mesh(input));
+    if (!is_mesh_extension(ext))
+      throw std::runtime_error(input + ": --mesh-is-complex needs a mesh (.off, .ply, .obj or .stl)");
+    const TriangleMesh3 mesh = read_triangle_mesh(input);
+    if (mesh.cleanup.any()) note(command + ": " + input + ": " + describe_cleanup(mesh.cleanup));
+    return mesh_as_complex(mesh);
   }
-  if (ext == "off" || ext == "ply" || ext == "obj" || ext == "hs" || ext == "halfspaces" || ext == "cin" ||
-      ext == "balls") {
+  if (is_mesh_extension(ext) || ext == "hs" || ext == "halfspaces" || ext == "cin" || ext == "balls") {
     MedialAxisBuild axis = build_medial_axis(input, MedialInputKind::Auto);
-    std::cerr << command << ": " << input << ": medial axis by the " << axis.kind << " builder\n";
+    note(command + ": " + input + ": medial axis by the " + axis.kind + " builder");
+    if (const std::string r = axis.report.value("/mesh_input/repairs"_json_pointer, ""); !r.empty())
+      note(command + ": " + input + ": " + r);
     return std::move(axis.complex);
   }
   std::string names;
   for (const std::string& n : synthetic_complex_names()) names += " " + n;
   throw std::runtime_error("'" + input + "' is neither a synthetic complex (" + names.substr(1) +
-                           ") nor a file with extension .json, .ma, .off, .ply, .obj, .hs, .halfspaces, .cin or "
+                           ") nor a file with extension .json, .ma, .off, .ply, .obj, .stl, .hs, .halfspaces, .cin or "
                            ".balls");
 }
 
-}  // namespace grassfire::cli
+}  // namespace grassfire

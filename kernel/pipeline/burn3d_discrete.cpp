@@ -1,12 +1,13 @@
 // burn3d_discrete.cpp -- `burn3d --method discrete`: the Steiner-point baseline.
 #include <cmath>
+#include <limits>
 #include <sstream>
 
 #include "burn3/discrete_burning.h"
 #include "burn3/discrete_query.h"
-#include "tools/burn3d_methods.h"
+#include "pipeline/burn3d_methods.h"
 
-namespace grassfire::cli {
+namespace grassfire {
 
 BurnOutcome burn_by_discrete(const BurnRequest& request) {
   const MedialComplex& mc = request.mc;
@@ -39,4 +40,4 @@ BurnOutcome burn_by_discrete(const BurnRequest& request) {
   return out;
 }
 
-}  // namespace grassfire::cli
+}  // namespace grassfire

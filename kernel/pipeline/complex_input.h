@@ -5,18 +5,21 @@
 // (mesh_is_complex, .off/.ply/.obj), or a shape whose medial axis is built as
 // `grassfire medial3d` builds it (complex3/builders/medial_axis_input.h: convex meshes and
 // half-spaces exactly, ball lists exactly, other closed meshes through their inner polar
-// balls). Errors name the input; nothing is written.
+// balls). Errors name the input; nothing is written. `grassfire burn3d`, `grassfire complex`
+// and the Python module's grassfire.burn3d read their INPUT through it.
+// Complexity: that of the reader or builder the input selects.
+// Section: DESIGN.md 5 (the complexes of ch. 4).
 #pragma once
 
 #include <string>
 
 #include "complex3/raw_complex.h"
 
-namespace grassfire::cli {
+namespace grassfire {
 
 // `command` prefixes the line that says which builder made a medial axis (stderr).
 RawComplex load_complex(const std::string& input, bool mesh_is_complex, const std::string& command);
 // The help text of INPUT for the commands that take one.
 std::string complex_input_help();
 
-}  // namespace grassfire::cli
+}  // namespace grassfire

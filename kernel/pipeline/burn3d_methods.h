@@ -1,14 +1,17 @@
-// burn3d_methods.h -- the burning methods behind `grassfire burn3d --method NAME`.
+// burn3d_methods.h -- the burning methods behind `grassfire burn3d --method NAME` and the
+// Python module's grassfire.burn3d(method=NAME).
 //
-// burn3d loads and validates the complex, locates the sources and the queries on it
-// (exactly; complex3/point_location.h), then calls one method through this interface
-// and writes what it returns (JSON, CSV, PLY, VTK, each through a temporary file). A new
-// method is one function of this signature and one row of the table in burn3d.cpp.
+// The pipeline (pipeline/burn3d.h) loads and validates the complex, locates the sources
+// and the queries on it (exactly; complex3/point_location.h), then calls one method
+// through this interface; the program writes what it returns (JSON, CSV, PLY, VTK), the
+// module returns it as numpy arrays. A new method is one function of this signature and
+// one row of the table in burn3d_methods.cpp.
 // Contract for a method: vertex_bt has one value per vertex and query_values one per
 // query (same order); +infinity where the point never burns; bt_error is a bound on
 // |bt - BT| (+infinity when the method certifies no two-sided bound: the discrete
 // baseline is an upper bound only). report holds the method's own counters (timings,
 // event counts, certification counts); summary is one line for stdout.
+// Complexity: that of the method. Section: ch. 4 (Definitions 9-10), DESIGN.md 5.
 #pragma once
 
 #include <nlohmann/json.hpp>
@@ -22,7 +25,7 @@
 #include "complex3/medial_complex.h"
 #include "complex3/point_location.h"
 
-namespace grassfire::cli {
+namespace grassfire {
 
 struct BurnRequest {
   const MedialComplex& mc;
@@ -48,7 +51,12 @@ struct BurnOutcome {
 
 // Dijkstra over vertices and Steiner points (burn3/discrete_burning.h, discrete_query.h).
 BurnOutcome burn_by_discrete(const BurnRequest& request);
-// The exact window-propagation engine (issue 8); tools/burn3d_exact.cpp.
+// The exact window-propagation engine (issue 8); pipeline/burn3d_exact.cpp.
 BurnOutcome burn_by_exact(const BurnRequest& request);
 
-}  // namespace grassfire::cli
+using BurnMethod = BurnOutcome (*)(const BurnRequest&);
+// The method called `name` ("discrete", "exact"); std::invalid_argument "unknown method
+// 'NAME' (discrete or exact)" for any other name.
+BurnMethod burn_method(const std::string& name);
+
+}  // namespace grassfire

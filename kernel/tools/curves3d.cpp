@@ -1,0 +1,105 @@
+// curves3d.cpp -- `grassfire curves3d`: medial curves of a 3D medial axis (5.1.2).
+//
+// Builds the complex and its burning field (tools/field_input.h), the medial curve graph
+// (burn3/medial_curves.h), validates it (1-dimensional, in the axis, the axis' b0 and b1),
+// splits the axis into planar and tubular parts (burn3/shape_analysis.h, 5.3) and only then
+// writes the outputs, each whole or not at all: --json (format grassfire-curves3d with the
+// analysis, io/curves_export.h), --ply and --vtk (polylines with R, BT, ET), and for a mesh
+// input --surface-ply / --surface-vtk: the mesh with BT, ET, R of the medial ball touching
+// each vertex (Fig. 5.5).
+#include <iostream>
+
+#include "burn3/medial_curves.h"
+#include "burn3/shape_analysis.h"
+#include "complex3/medial_complex.h"
+#include "io/complex_export.h"
+#include "io/complex_text.h"
+#include "io/mesh_io.h"
+#include "io/atomic_file.h"
+#include "io/curves_export.h"
+#include "tools/commands.h"
+#include "tools/complex_input.h"
+#include "tools/field_input.h"
+#include "tools/options.h"
+
+namespace grassfire::cli {
+namespace {
+
+void write_surface(const TriangleMesh3& mesh, const AxisRefinement& k, const Options& opt) {
+  const MedialComplex surface(mesh_as_complex(mesh));
+  std::vector<Vec3d> points;
+  for (const ComplexVertex& v : surface.vertices()) points.push_back(v.approx);
+  const SurfaceValues values = map_to_surface(k, points);
+  const std::vector<VertexField> fields = {{"BT", values.bt}, {"ET", values.et}, {"R", values.radius}};
+  if (opt.has("surface-ply")) write_complex_ply(surface, fields, opt.get("surface-ply"));
+  if (opt.has("surface-vtk")) write_complex_vtk(surface, fields, opt.get("surface-vtk"));
+}
+
+int run_curves3d(int argc, char** argv) {
+  Options opt("curves3d", "Medial curves of the medial axis of a 3D shape: where burning paths end, made "
+                          "connected and homotopy-preserving by the burning collapse (5.1.2).");
+  opt.positional("INPUT", complex_input_help());
+  declare_field_options(opt);
+  opt.option("arrive-cosine", "C", "a side arrives at an edge when its fire runs into it at an angle whose sine "
+                                   "is above C (significance of a path end)", "0.5")
+      .option("depart-cosine", "C", "a side departs when its fire leaves at an angle whose sine is above C", "0.1")
+      .option("min-et", "F", "drop pieces of path ends whose largest ET is below F times the axis' largest ET "
+                             "(significance by erosion thickness)", "0")
+      .option("time-margin", "T", "a front arrived before the curve burned when earlier by more than T (default: "
+                                  "the field's resolution, h for the discrete method)")
+      .option("json", "OUT", "write the curve graph as JSON (format grassfire-curves3d)")
+      .option("ply", "OUT", "write the curve graph as PLY polylines with R, BT, ET")
+      .option("vtk", "OUT", "write the curve graph as legacy VTK polylines with R, BT, ET")
+      .option("planar-tubularity", "S", "a part of the axis is planar where 1 - R / BT >= S, else tubular (5.3)", "0.5")
+      .option("surface-ply", "OUT", "mesh input: write the mesh with BT, ET, R of the medial ball touching each vertex")
+      .option("surface-vtk", "OUT", "mesh input: the same as legacy VTK")
+      .epilog("The graph has the b0 and b1 of the axis (checked by simplicial homology before anything is written).\n"
+              "Example: grassfire curves3d board-fin --spacing 0.1 --json board_fin_curves.json");
+  if (!opt.parse(argc, argv)) return opt.exit_code();
+  const std::string input = opt.arg("INPUT");
+  const FieldInput in = load_field(opt, input, "curves3d");
+  MedialCurveOptions o;
+  o.arrive_cosine = opt.get_double("arrive-cosine");
+  o.depart_cosine = opt.get_double("depart-cosine");
+  if (opt.has("time-margin")) o.time_margin = opt.get_double("time-margin");
+  o.min_et_fraction = opt.get_double("min-et");
+  if (!(o.min_et_fraction >= 0 && o.min_et_fraction <= 1)) throw std::runtime_error("--min-et must be in [0, 1]");
+  if (!(o.arrive_cosine >= 0 && o.arrive_cosine < 1) || !(o.depart_cosine >= 0 && o.depart_cosine < 1))
+    throw std::runtime_error("--arrive-cosine and --depart-cosine must be in [0, 1)");
+  if (opt.has("time-margin") && !(o.time_margin >= 0)) throw std::runtime_error("--time-margin must be >= 0");
+  const double split = opt.get_double("planar-tubularity");
+  if (!(split >= 0 && split <= 1)) throw std::runtime_error("--planar-tubularity must be in [0, 1]");
+  const bool surface = opt.has("surface-ply") || opt.has("surface-vtk");
+  const std::string ext = file_extension(input);
+  if (surface && ext != "off" && ext != "ply" && ext != "obj")
+    throw std::runtime_error("--surface-ply / --surface-vtk need a mesh input (.off, .ply, .obj)");
+  const AxisRefinement k = AxisRefinement::build(*in.field);
+  const MedialCurves curves = medial_curves(k, *in.field, o);
+  curves.validate(*in.complex);
+  const ShapeAnalysis analysis = analyze_shape(k, curves, {split});
+  if (surface) write_surface(read_triangle_mesh(input), k, opt);
+  nlohmann::json j = medial_curves_json(curves, input);
+  j["analysis"] = shape_analysis_json(analysis, split);
+  if (opt.has("json")) write_file_atomically(opt.get("json"), j.dump(1) + "\n");
+  const PolylineSet lines = medial_curves_polylines(curves);
+  if (opt.has("ply")) write_polylines_ply(lines, "grassfire medial curves of " + input, opt.get("ply"));
+  if (opt.has("vtk")) write_polylines_vtk(lines, "grassfire medial curves of " + input, opt.get("vtk"));
+  const MedialCurveStats& s = curves.stats;
+  std::cout << "curves3d " << input << " (" << curves.method << "): " << curves.nodes.size() << " nodes, "
+            << curves.edges.size() << " edges, length " << curves.total_length() << "; betti [" << curves.curve_betti.b0
+            << ", " << curves.curve_betti.b1 << "] = axis [" << curves.axis_betti.b0 << ", " << curves.axis_betti.b1
+            << "] (axis b2 = " << curves.axis_betti.b2 << ")\n"
+            << "refinement " << s.refined_triangles << " triangles; " << s.raw_end_edges << " raw end edges, "
+            << s.punctures << " punctures, " << s.walls_opened << " walls opened, " << s.peeled_edges << " edges peeled; "
+            << s.seconds << " s\n"
+            << "planar area " << analysis.signature.planar_area << ", tubular area " << analysis.signature.tubular_area
+            << "; curves in tubular parts " << analysis.signature.tubular_curve_length << " ("
+            << analysis.signature.curve_lengths.size() << " branches), in planar parts "
+            << analysis.signature.planar_curve_length << "\n";
+  return 0;
+}
+
+GF_REGISTER_COMMAND("curves3d", "medial curves of a 3D medial axis from its burning (5.1.2)", run_curves3d);
+
+}  // namespace
+}  // namespace grassfire::cli

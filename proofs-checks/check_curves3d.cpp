@@ -1,0 +1,136 @@
+// check_curves3d.cpp -- 5.1.2: the medial curves (burn3/medial_curves.h) have the b0 and b1
+// of the medial axis, on synthetic, generated and real complexes.
+//
+// Independent reference: the Betti numbers of the axis by GF(2) simplicial homology of its
+// triangles, segments and vertices (complex3/builders/simplicial_homology.h), against the
+// curve graph's, counted afresh from its edge list (union-find: b0, and b1 = E - V + b0).
+// Tolerance: exact (integers). Mutant: the same graph with one of its joining edges (a
+// "join", else any edge) removed: removing an edge of a graph always changes b0 or b1, so
+// the comparison must flag it; the row reports in how many instances it did, and fails
+// unless every instance with an edge caught its mutant.
+#include <algorithm>
+#include <cmath>
+#include <dirent.h>
+#include <random>
+
+#include "burn3/discrete_burning_field.h"
+#include "burn3/medial_curves.h"
+#include "check_registry.h"
+#include "complex3/builders/convex_polyhedron_axis.h"
+#include "complex3/builders/medial_axis_input.h"
+#include "complex3/synthetic_complexes.h"
+#include "io/complex_ma.h"
+#include "io/mesh_io.h"
+#include "medial2/union_find.h"
+
+namespace grassfire::checks {
+namespace {
+
+struct Named {
+  std::string name;
+  RawComplex raw;
+};
+
+BettiNumbers graph_betti(std::size_t nodes, const std::vector<CurveEdge>& edges) {
+  UnionFind uf(nodes);
+  for (const CurveEdge& e : edges) uf.unite(e.u, e.v);
+  BettiNumbers b;
+  for (std::uint32_t v = 0; v < nodes; ++v) b.b0 += uf.find(v) == v ? 1 : 0;
+  b.b1 = static_cast<long>(edges.size()) - static_cast<long>(nodes) + b.b0;
+  return b;
+}
+
+std::vector<std::pair<std::string, std::vector<Named>>> corpora(const CheckContext& ctx) {
+  std::vector<Named> syn, gen, real;
+  for (const char* n : {"board-fin", "y-junction", "book:3", "tetrahedron", "tetrahedron-flap", "double-cone", "tube",
+                        "annulus", "torus", "box:4:3:1"})
+    syn.push_back({n, synthetic_complex(n)});
+  if (!ctx.quick())
+    for (const char* n : {"board-cylinder", "book:2", "book:4", "book:5", "octahedron"}) syn.push_back({n, synthetic_complex(n)});
+  std::mt19937 rng(512);
+  for (int i = 0; i < (ctx.quick() ? 2 : 8); ++i) {
+    std::uniform_int_distribution<int> pages(2, 5), width(1, 4), dim(1, 5);
+    BookOptions o;
+    o.pages = pages(rng);
+    for (int j = 0; j < o.pages; ++j) o.widths.push_back(width(rng));
+    o.cells_per_unit = 1;
+    gen.push_back({"random book " + std::to_string(i), book(o)});
+    long d[3] = {dim(rng), dim(rng), dim(rng)};
+    std::sort(d, d + 3, std::greater<long>());
+    if (d[1] == d[2]) ++d[0], ++d[1];
+    gen.push_back({"random box " + std::to_string(i), box_medial_axis(d[0], d[1], d[2], 1)});
+  }
+  if (DIR* dir = opendir((ctx.data_dir + "/ma").c_str())) {
+    std::vector<std::string> files;
+    while (dirent* e = readdir(dir)) {
+      const std::string f = e->d_name;
+      if (f.size() > 3 && f.substr(f.size() - 3) == ".ma") files.push_back(f);
+    }
+    closedir(dir);
+    std::sort(files.begin(), files.end());
+    for (const std::string& f : files) real.push_back({f, read_ma(ctx.data_dir + "/ma/" + f)});
+  }
+  for (const char* mesh : {"cube.off", "tripod.off", "cross.off"})
+    real.push_back({mesh, build_medial_axis(ctx.data_dir + "/meshes/" + mesh, MedialInputKind::Auto).complex});
+  real.push_back({"caffeine.cin", build_medial_axis(ctx.data_dir + "/balls/caffeine.cin", MedialInputKind::Auto).complex});
+  return {{"synthetic", std::move(syn)}, {"generated (seeded)", std::move(gen)}, {"real (data/)", std::move(real)}};
+}
+
+double diagonal(const MedialComplex& mc) {
+  Vec3d lo = mc.vertex(0).approx, hi = lo;
+  for (const ComplexVertex& v : mc.vertices())
+    for (int i = 0; i < 3; ++i) lo[i] = std::min(lo[i], v.approx[i]), hi[i] = std::max(hi[i], v.approx[i]);
+  return std::hypot(hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]);
+}
+
+std::vector<CheckRow> check_curves3d(const CheckContext& ctx) {
+  std::vector<CheckRow> rows;
+  for (const auto& [corpus, instances] : corpora(ctx)) {
+    std::uint64_t n = 0, points = 0, mismatches = 0, mutants = 0, caught = 0, punctures = 0, walls = 0;
+    std::string failed;
+    for (const Named& in : instances) {
+      const MedialComplex mc(in.raw);
+      mc.validate();
+      const double h = std::max(diagonal(mc), 1.0) / (ctx.quick() ? 24 : 48);
+      const DiscreteBurning d = burn_discrete(mc, {h});
+      const DiscreteBurningField field(mc, d);
+      const MedialCurves c = medial_curves(field);
+      const BettiNumbers axis = complex_betti(mc), curves = graph_betti(c.nodes.size(), c.edges);
+      ++n;
+      points += c.nodes.size();
+      punctures += c.stats.punctures;
+      walls += c.stats.walls_opened;
+      if (c.stats.residual_triangles != 0 || axis.b0 != curves.b0 || axis.b1 != curves.b1) {
+        ++mismatches;
+        failed += " " + in.name;
+      }
+      if (c.edges.empty()) continue;
+      std::vector<CurveEdge> mutant = c.edges;
+      const auto join = std::find_if(mutant.begin(), mutant.end(), [](const CurveEdge& e) { return !e.raw_end; });
+      mutant.erase(join != mutant.end() ? join : mutant.begin());
+      const BettiNumbers broken = graph_betti(c.nodes.size(), mutant);
+      ++mutants;
+      caught += (broken.b0 != axis.b0 || broken.b1 != axis.b1) ? 1 : 0;
+    }
+    CheckRow r;
+    r.proposition = "5.1.2: medial curves have the axis' b0 and b1";
+    r.corpus = corpus;
+    r.instances = n;
+    r.points = points;
+    r.worst_violation = static_cast<double>(mismatches);
+    r.unit = "count";
+    r.pass = n > 0 && mismatches == 0 && caught == mutants;
+    r.note = "reference: GF(2) simplicial homology of the axis; graph Betti numbers recounted from its edges; " +
+             std::to_string(punctures) + " punctures (axis b2), " + std::to_string(walls) +
+             " walls opened; mutant (one joining edge removed) caught in " + std::to_string(caught) + "/" +
+             std::to_string(mutants) + "; h = diagonal / " + (ctx.quick() ? "24" : "48") +
+             (failed.empty() ? "" : "; failed:" + failed);
+    rows.push_back(r);
+  }
+  return rows;
+}
+
+GF_REGISTER_CHECK("curves3d", check_curves3d);
+
+}  // namespace
+}  // namespace grassfire::checks
