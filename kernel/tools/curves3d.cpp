@@ -18,7 +18,7 @@
 #include "io/atomic_file.h"
 #include "io/curves_export.h"
 #include "tools/commands.h"
-#include "tools/complex_input.h"
+#include "pipeline/complex_input.h"
 #include "tools/field_input.h"
 #include "tools/options.h"
 

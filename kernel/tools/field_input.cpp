@@ -5,7 +5,7 @@
 #include <stdexcept>
 
 #include "burn3/discrete_burning_field.h"
-#include "tools/complex_input.h"
+#include "pipeline/complex_input.h"
 
 namespace grassfire::cli {
 

@@ -18,7 +18,7 @@
 #include "io/curves_export.h"
 #include "io/point_csv.h"
 #include "tools/commands.h"
-#include "tools/complex_input.h"
+#include "pipeline/complex_input.h"
 #include "tools/field_input.h"
 #include "tools/options.h"
 
