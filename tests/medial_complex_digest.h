@@ -25,6 +25,7 @@
 #include "complex3/medial_complex.h"
 #include "complex3/refined_mesh.h"
 #include "complex3/synthetic_complexes.h"
+#include "complex3/triangle_mesh.h"
 #include "io/complex_ma.h"
 #include "io/mesh_io.h"
 
@@ -107,6 +108,58 @@ inline RawComplex random_height_field(std::uint32_t seed, int n) {
   return b.take();
 }
 
+// A book about the edge from the origin to a random small integer point: 3..7 pages whose
+// third vertices are random points of a small half-integer grid (ties, opposite and
+// coplanar pages, and pages in the same half-plane occur; points on the edge's line are
+// skipped). Some draws overlap: both implementations must then refuse them alike.
+inline RawComplex random_book(std::uint32_t seed) {
+  std::mt19937 rng(seed);
+  std::uniform_int_distribution<int> coordinate(-3, 3), spine(-2, 2), pages(3, 7), denominator(1, 2);
+  ComplexBuilder b("random-book-" + std::to_string(seed));
+  const ExactPoint3 origin{0, 0, 0};
+  ExactPoint3 d{0, 0, 0};
+  while (is_zero(d)) d = {spine(rng), spine(rng), spine(rng)};
+  const std::uint32_t a = b.vertex(origin), e = b.vertex(d);
+  for (int k = pages(rng), j = 0; j < k; ++j) {
+    const int q = denominator(rng);
+    const ExactPoint3 p{mpq_class(coordinate(rng), q), mpq_class(coordinate(rng), q), mpq_class(coordinate(rng), q)};
+    if (collinear(origin, d, p)) continue;
+    b.triangle(a, e, b.vertex(p));
+  }
+  return b.take();
+}
+
+// A Loop-refined mesh whose coordinates are rounded down to the grid of step 1/(64 grid)
+// and moved by a seeded random -1, 0 or +1 steps (small denominators: on the coarse grid
+// coplanar neighbours occur, and degenerate or intersecting triangles, which both
+// implementations must refuse alike).
+inline RawComplex perturbed_mesh_complex(const TriangleMesh3& mesh, std::uint32_t seed, int grid) {
+  std::mt19937 rng(seed);
+  std::uniform_int_distribution<int> jitter(-1, 1);
+  RawComplex raw = mesh_as_complex(mesh);
+  raw.source = "perturbed-" + std::to_string(seed);
+  for (ExactPoint3& p : raw.vertices)
+    for (mpq_class* c : {&p.x, &p.y, &p.z}) {
+      const mpq_class scaled = *c * (grid * 64);
+      mpz_class n;
+      mpz_fdiv_q(n.get_mpz_t(), scaled.get_num_mpz_t(), scaled.get_den_mpz_t());
+      *c = mpq_class(n + jitter(rng), grid * 64);
+      c->canonicalize();
+    }
+  return raw;
+}
+
+// The digest text, or the refusal message when construction (or validate()) throws.
+inline std::string digest_text(const RawComplex& raw) {
+  try {
+    const MedialComplex mc(raw);
+    mc.validate();
+    return medial_complex_text(mc);
+  } catch (const std::exception& e) {
+    return std::string("refused: ") + e.what();
+  }
+}
+
 // Named complexes, in a fixed order (names present in every version).
 inline std::vector<std::pair<std::string, RawComplex>> digest_corpus(const std::string& data) {
   std::vector<std::pair<std::string, RawComplex>> out;
@@ -129,6 +182,14 @@ inline std::vector<std::pair<std::string, RawComplex>> digest_corpus(const std::
   }
   out.emplace_back("axis-caffeine.cin", build_medial_axis(data + "/balls/caffeine.cin", MedialInputKind::Auto).complex);
   for (std::uint32_t seed = 1; seed <= 6; ++seed) out.emplace_back("height-field", random_height_field(seed, 6));
+  for (std::uint32_t seed = 1; seed <= 40; ++seed) out.emplace_back("random-book", random_book(seed));
+  const TriangleMesh3 cube = refined_mesh(read_triangle_mesh(data + "/meshes/cube.off"), 300);
+  const TriangleMesh3 tripod = refined_mesh(read_triangle_mesh(data + "/meshes/tripod.off"), 300);
+  for (std::uint32_t seed = 1; seed <= 4; ++seed)
+    for (int grid : {1, 16}) {
+      out.emplace_back("perturbed-cube-" + std::to_string(grid), perturbed_mesh_complex(cube, seed, grid));
+      out.emplace_back("perturbed-tripod-" + std::to_string(grid), perturbed_mesh_complex(tripod, seed, grid));
+    }
   return out;
 }
 
