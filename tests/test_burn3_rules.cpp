@@ -35,7 +35,7 @@ std::size_t infinite_points(const DiscreteBurning& d) {
 
 }  // namespace
 
-TEST_CASE("Prop 7: closed surfaces never burn; what hangs off them does", "[burn3]") {
+TEST_CASE("Prop 7: closed surfaces never burn: what hangs off them does", "[burn3]") {
   for (const RawComplex& raw : {tetrahedron_surface(), octahedron_surface()}) {
     const MedialComplex mc = built(raw);
     const DiscreteBurning d = burn_discrete(mc, {0.1});
@@ -143,7 +143,7 @@ TEST_CASE("board and fin: the kink lands within the stated arrival bound of 2 + 
   }
 }
 
-TEST_CASE("finer nested spacings never burn later; errors shrink within 0.5 h", "[burn3]") {
+TEST_CASE("finer nested spacings never burn later: errors shrink within 0.5 h", "[burn3]") {
   // On the Y (edges 1 and sqrt 2 only) h = 1/2, 1/4, 1/8 double the points of every edge, so
   // the graphs are nested and every coarse graph point exists at the finer spacing.
   const MedialComplex y = built(y_junction(1));

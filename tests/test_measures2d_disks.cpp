@@ -184,7 +184,7 @@ TEST_CASE("degenerate unions are rejected with the disks involved", "[measures2d
   CHECK(inside.union_components == 1);
 }
 
-TEST_CASE("random unions: valid axes with the Betti numbers of the union; translation", "[measures2d]") {
+TEST_CASE("random unions: valid axes with the Betti numbers of the union: translation", "[measures2d]") {
   std::mt19937 rng(44);
   std::uniform_int_distribution<int> coord(0, 600), radius(40, 150);
   for (int k = 0; k < 12; ++k) {

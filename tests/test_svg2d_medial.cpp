@@ -204,7 +204,7 @@ TEST_CASE("svg of the hole shape: well-formed, colour bar = finite EDF range, R 
   CHECK(count(svg, "<rect") > 100);     // the background raster
 }
 
-TEST_CASE("field names parse; bad ones are rejected", "[svg2d]") {
+TEST_CASE("field names parse: bad ones are rejected", "[svg2d]") {
   CHECK(parse_medial2_field("EDF") == Medial2Field::Edf);
   CHECK(parse_medial2_field("et") == Medial2Field::Et);
   CHECK(parse_medial2_field("St") == Medial2Field::St);
@@ -214,7 +214,7 @@ TEST_CASE("field names parse; bad ones are rejected", "[svg2d]") {
   CHECK(heat_color(1).r == 1.0);
 }
 
-TEST_CASE("grassfire edf2d --svg writes a picture; a bad --field writes nothing", "[svg2d]") {
+TEST_CASE("grassfire edf2d --svg writes a picture: a bad --field writes nothing", "[svg2d]") {
   const std::string out = grassfire::testing::temp_path("test_svg2d_cli.svg");
   const std::string json = grassfire::testing::temp_path("test_svg2d_cli.json");
   std::remove(out.c_str());

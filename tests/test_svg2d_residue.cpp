@@ -131,7 +131,7 @@ TEST_CASE("PR is constant along every edge of a sampled axis, and the scalar ref
   CHECK_THROWS_AS(potential_residue_scalar(g, exact.cp, exact.pr), std::invalid_argument);
 }
 
-TEST_CASE("a field drawn as a scalar is draw_medial2; the panel frame is the one drawn in", "[svg2d_pr]") {
+TEST_CASE("a field drawn as a scalar is draw_medial2: the panel frame is the one drawn in", "[svg2d_pr]") {
   const Analysed a = analyse("rectangle", AxisMethod::ExactPolygon);
   const MedialGraph& g = *a.axis.graph;
   const GrassfireResult& r = *a.axis.burning;

@@ -1,7 +1,7 @@
 // field_input.h -- the burning field a 3D analysis command works on (curves3d, paths3d).
 //
 // Declares the options shared by those commands (--method, --spacing, --max-points,
-// --mesh-is-complex) and builds, from INPUT (tools/complex_input.h), the validated
+// --mesh-is-complex) and builds, from INPUT (pipeline/complex_input.h), the validated
 // MedialComplex and a BurningField over it (burn3/burning_field.h): `discrete` runs the
 // baseline (burn3/discrete_burning.h) with the Steiner spacing h (default: 1/100 of the
 // bounding box diagonal) and wraps it (burn3/discrete_burning_field.h). A new method is a
