@@ -2,7 +2,7 @@
 // same cell, point and exact squared distance on seeded queries near and on several
 // complexes, including points equidistant from several cells (ties), points on vertices
 // and edges, and far points; plus the interval closest-point enclosures against the exact
-// closest point.
+// closest point, and the integer closest point against the rational one.
 #include <catch2/catch.hpp>
 
 #include <random>
@@ -69,7 +69,7 @@ TEST_CASE("ComplexLocator with its index equals the scan of every cell", "[compl
   CHECK(on_complex > 200);
 }
 
-TEST_CASE("interval closest-point enclosures contain the exact squared distance", "[complex3][location]") {
+TEST_CASE("interval closest-point enclosures contain the exact squared distance, integer and rational closest points agree", "[complex3][location]") {
   std::mt19937 rng(11);
   std::uniform_int_distribution<int> c(-20, 20), d(1, 7);
   auto point = [&] { return ExactPoint3{mpq_class(c(rng), d(rng)), mpq_class(c(rng), d(rng)), mpq_class(c(rng), d(rng))}; };
@@ -87,6 +87,7 @@ TEST_CASE("interval closest-point enclosures contain the exact squared distance"
     if (collinear(a, b, t)) continue;
     if (tries % 5 == 0) p = mpq_class(1, 2) * (a + b);  // on an edge: region boundaries
     const auto w = closest_weights(a, b, t, p);
+    CHECK(w == closest_weights_reference(a, b, t, p));
     const mpq_class exact = squared_distance(w[0] * a + w[1] * b + w[2] * t, p);
     if (const auto box = closest_squared_distance(enclose(a), enclose(b), enclose(t), enclose(p))) {
       ++decided;

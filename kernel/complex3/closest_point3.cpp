@@ -51,8 +51,8 @@ std::array<Interval, 2> enclosed_weights(const IntervalPoint3& a, const Interval
 
 }  // namespace
 
-std::array<mpq_class, 3> closest_weights(const ExactPoint3& a, const ExactPoint3& b, const ExactPoint3& c,
-                                         const ExactPoint3& p) {
+std::array<mpq_class, 3> closest_weights_reference(const ExactPoint3& a, const ExactPoint3& b, const ExactPoint3& c,
+                                                   const ExactPoint3& p) {
   const ExactPoint3 ab = b - a, ac = c - a, ap = p - a;
   const mpq_class d1 = dot(ab, ap), d2 = dot(ac, ap);
   if (sgn(d1) <= 0 && sgn(d2) <= 0) return {1, 0, 0};
@@ -79,6 +79,60 @@ std::array<mpq_class, 3> closest_weights(const ExactPoint3& a, const ExactPoint3
   }
   const mpq_class denom = va + vb + vc;
   const mpq_class v = vb / denom, w = vc / denom;
+  return {1 - v - w, v, w};
+}
+
+// The same region tests on the points scaled by a common denominator L of their twelve
+// coordinates: integers, so no gcd per operation. Every d_i scales by L^2 and every v_i by
+// L^4, which changes no sign and no ratio, so the weights are those of the reference.
+std::array<mpq_class, 3> closest_weights(const ExactPoint3& a, const ExactPoint3& b, const ExactPoint3& c,
+                                         const ExactPoint3& p) {
+  const std::array<const ExactPoint3*, 4> pts = {&a, &b, &c, &p};
+  mpz_class scale = 1;
+  for (const ExactPoint3* x : pts)
+    for (const mpq_class* q : {&x->x, &x->y, &x->z}) mpz_lcm(scale.get_mpz_t(), scale.get_mpz_t(), q->get_den_mpz_t());
+  std::array<std::array<mpz_class, 3>, 4> z;  // a, b, c, p times scale
+  for (int i = 0; i < 4; ++i) {
+    int k = 0;
+    for (const mpq_class* q : {&pts[i]->x, &pts[i]->y, &pts[i]->z}) {
+      mpz_divexact(z[i][k].get_mpz_t(), scale.get_mpz_t(), q->get_den_mpz_t());
+      z[i][k] *= q->get_num();
+      ++k;
+    }
+  }
+  const auto diff_dot = [&](int u0, int u1, int w0, int w1) {  // (z[u1] - z[u0]) . (z[w1] - z[w0])
+    mpz_class sum = 0;
+    for (int k = 0; k < 3; ++k) sum += (z[u1][k] - z[u0][k]) * (z[w1][k] - z[w0][k]);
+    return sum;
+  };
+  const auto ratio = [](const mpz_class& num, const mpz_class& den) {
+    mpq_class r(num, den);
+    r.canonicalize();
+    return r;
+  };
+  const mpz_class d1 = diff_dot(0, 1, 0, 3), d2 = diff_dot(0, 2, 0, 3);
+  if (sgn(d1) <= 0 && sgn(d2) <= 0) return {1, 0, 0};
+  const mpz_class d3 = diff_dot(0, 1, 1, 3), d4 = diff_dot(0, 2, 1, 3);
+  if (sgn(d3) >= 0 && d4 <= d3) return {0, 1, 0};
+  const mpz_class vc = d1 * d4 - d3 * d2;
+  if (sgn(vc) <= 0 && sgn(d1) >= 0 && sgn(d3) <= 0) {
+    const mpq_class v = ratio(d1, d1 - d3);
+    return {1 - v, v, 0};
+  }
+  const mpz_class d5 = diff_dot(0, 1, 2, 3), d6 = diff_dot(0, 2, 2, 3);
+  if (sgn(d6) >= 0 && d5 <= d6) return {0, 0, 1};
+  const mpz_class vb = d5 * d2 - d1 * d6;
+  if (sgn(vb) <= 0 && sgn(d2) >= 0 && sgn(d6) <= 0) {
+    const mpq_class w = ratio(d2, d2 - d6);
+    return {1 - w, 0, w};
+  }
+  const mpz_class va = d3 * d6 - d5 * d4;
+  if (sgn(va) <= 0 && sgn(d4 - d3) >= 0 && sgn(d5 - d6) >= 0) {
+    const mpq_class w = ratio(d4 - d3, (d4 - d3) + (d5 - d6));
+    return {0, 1 - w, w};
+  }
+  const mpz_class denom = va + vb + vc;
+  const mpq_class v = ratio(vb, denom), w = ratio(vc, denom);
   return {1 - v - w, v, w};
 }
 

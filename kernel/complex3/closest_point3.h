@@ -3,7 +3,9 @@
 //
 // Computes: closest_weights(a, b, c, p), the barycentric weights of the point of triangle
 // abc nearest to p, by the region tests of Ericson, Real-Time Collision Detection 5.1.5,
-// in rationals (the nearest point of a closed triangle to a rational point is rational);
+// in rationals (the nearest point of a closed triangle to a rational point is rational),
+// evaluated on integers (the points times a common denominator, no gcd per operation);
+// closest_weights_reference is the same in plain rationals, the reference tests compare with;
 // and closest_squared_distance(a, b, c, p) on interval enclosures of the four points: the
 // same region tests with certified interval signs, then |p - x|^2 for the point x of the
 // region, an interval that contains the exact squared distance from p to the triangle.
@@ -30,6 +32,9 @@ using IntervalPoint3 = std::array<Interval, 3>;
 
 std::array<mpq_class, 3> closest_weights(const ExactPoint3& a, const ExactPoint3& b, const ExactPoint3& c,
                                          const ExactPoint3& p);
+
+std::array<mpq_class, 3> closest_weights_reference(const ExactPoint3& a, const ExactPoint3& b, const ExactPoint3& c,
+                                                   const ExactPoint3& p);
 
 std::optional<Interval> closest_squared_distance(const IntervalPoint3& a, const IntervalPoint3& b,
                                                  const IntervalPoint3& c, const IntervalPoint3& p);
