@@ -11,8 +11,9 @@
 //   {"input", "method", "spacing" (discrete only), "complex": {vertices, edges, triangles,
 //    segments, border_edges, singular_edges, singular_points, sheets}, "sources", "queries"
 //    (counts), "stats": {the method's counters}, "summary": {burned_vertices,
-//    unburned_vertices, max_bt, max_et}, "vertex_values": {"x", "y", "z", "R", "BT", "ET"}}
-// with null for BT and ET where nothing burns.
+//    unburned_vertices, max_bt, max_et}, "vertex_values": {"x", "y", "z", "R", "BT", "ET",
+//    "BT_error" (methods with a certified two-sided bound: exact)}}
+// with null for BT, ET and BT_error where nothing burns.
 // Order of the checks (the program's messages depend on it): the method name, the
 // complex, the spacing, the sources, the queries. Progress on stderr follows io/progress.h.
 // Contract: errors are exceptions whose message names the input and the problem

@@ -120,6 +120,7 @@ py::dict burn3d(const py::object& input, const std::string& method, const py::ob
   add_complex(out, *run->mc);
   out["BT"] = float_array(run->outcome.vertex_bt);
   out["ET"] = float_array(run->et);
+  if (!run->outcome.vertex_bt_error.empty()) out["BT_error"] = float_array(run->outcome.vertex_bt_error);
   add_report(out, run->report, "vertex_values");
   if (!at.is_none()) {
     std::vector<double> bt, bt_error, snap;

@@ -19,9 +19,13 @@ int run_medial3d(int argc, char** argv) {
   opt.positional("INPUT", "a mesh (.off .ply .obj .stl), a half-space list (.hs .halfspaces: one `a b c d` per line, "
                           "a x + b y + c z <= d) or a ball list (.cin .balls: `x y z w`, w = r^2)")
       .option("kind", "K", "convex (exact axis of a convex polyhedron), balls (exact axis of the union), mesh "
-                           "(axis of the inner polar balls of a closed mesh), auto (by extension; convex meshes "
+                           "(inner Voronoi axis of a closed mesh, refined until it has the solid's Betti numbers), auto (by extension; convex meshes "
                            "go to the convex builder)", "auto")
-      .option("samples", "S", "mesh kind: split every triangle edge into S parts for the samples (1 = vertices)", "1")
+      .option("samples", "S", "mesh kind: initial sample spacing = mean edge length / S (halved until the axis "
+                              "has the solid's Betti numbers)", "1")
+      .option("angle", "DEG", "mesh kind: Voronoi faces narrower than DEG degrees seen from the axis are pruned "
+                              "while the topology allows (0: no angle test)", "0")
+      .option("refinements", "N", "mesh kind: at most N halvings of the spacing", "5")
       .option("ma", "OUT", "write the axis as .ma (Q-MAT format: v x y z r, e i j, f i j k)")
       .option("complex", "OUT", "write the axis in the grassfire-complex JSON format (exact; burn3d reads it)")
       .option("ply", "OUT", "write the axis with per-vertex R as PLY")
@@ -30,10 +34,15 @@ int run_medial3d(int argc, char** argv) {
               "Example: grassfire medial3d data/balls/caffeine.cin --ma caffeine.ma --json caffeine.json");
   if (!opt.parse(argc, argv)) return opt.exit_code();
   const std::string input = opt.arg("INPUT");
-  const int samples = static_cast<int>(opt.get_long("samples", 1, 64));
+  MeshAxisOptions mesh;
+  mesh.samples_per_edge = opt.get_double("samples");
+  mesh.angle_degrees = opt.get_double("angle");
+  mesh.max_refinements = static_cast<int>(opt.get_long("refinements", 0, 12));
+  if (!(mesh.samples_per_edge > 0 && mesh.samples_per_edge <= 1024)) throw std::invalid_argument("--samples must be in (0, 1024]");
+  if (!(mesh.angle_degrees >= 0 && mesh.angle_degrees < 180)) throw std::invalid_argument("--angle must be in [0, 180)");
   Progress progress("medial3d " + input, 3);
   progress.stage("building the medial axis");
-  const MedialAxisBuild axis = build_medial_axis(input, parse_medial_input_kind(opt.get("kind")), samples);
+  const MedialAxisBuild axis = build_medial_axis(input, parse_medial_input_kind(opt.get("kind")), mesh);
   if (const std::string r = axis.report.value("/mesh_input/repairs"_json_pointer, ""); !r.empty())
     note("medial3d: " + input + ": " + r);
   progress.advance();

@@ -5,7 +5,7 @@
 #include <stdexcept>
 
 #include "complex3/builders/convex_polyhedron_axis.h"
-#include "complex3/builders/mesh_poles.h"
+#include "complex3/builders/mesh_axis.h"
 #include "complex3/builders/simplicial_homology.h"
 #include "complex3/builders/union_of_balls_axis.h"
 #include "io/mesh_io.h"
@@ -95,7 +95,7 @@ MedialInputKind parse_medial_input_kind(const std::string& name) {
   throw std::invalid_argument("unknown kind '" + name + "' (auto, convex, balls, mesh)");
 }
 
-MedialAxisBuild build_medial_axis(const std::string& path, MedialInputKind kind, int samples) {
+MedialAxisBuild build_medial_axis(const std::string& path, MedialInputKind kind, const MeshAxisOptions& mesh_options) {
   const auto start = std::chrono::steady_clock::now();
   if (kind == MedialInputKind::Auto) kind = kind_of_path(path);
   MedialAxisBuild out;
@@ -114,7 +114,7 @@ MedialAxisBuild build_medial_axis(const std::string& path, MedialInputKind kind,
         p = convex_polyhedron_from_mesh(mesh);
         use_convex = true;
       } catch (const std::invalid_argument&) {
-        use_convex = false;  // not convex (or not a solid: the pole builder reports that)
+        use_convex = false;  // not convex (or not a solid: the mesh axis builder reports that)
       }
     } else if (use_convex) {
       p = convex_polyhedron_from_mesh(mesh);
@@ -122,17 +122,8 @@ MedialAxisBuild build_medial_axis(const std::string& path, MedialInputKind kind,
     if (use_convex) {
       out = convex(p);
     } else {
-      MeshPolesOptions o;
-      o.subdivision = samples;
-      const MeshPoles poles = inner_polar_balls(mesh, o);
-      const UnionOfBallsAxis a = union_of_balls_axis(poles.balls);
-      out = {a.complex, "mesh", balls_json(a)};
-      out.report["samples"] = poles.samples;
-      out.report["subdivision"] = samples;
-      out.report["poles_outside"] = poles.poles_outside;
-      out.report["samples_without_pole"] = poles.samples_without_pole;
-      out.report["protrusion_bound"] = poles.protrusion;
-      out.report["uncovered_estimate"] = poles.uncovered;
+      const MeshAxis a = mesh_medial_axis(mesh, mesh_options);
+      out = {a.complex, "mesh", mesh_axis_json(a)};
     }
     out.report["mesh_input"] = mesh_input_json(mesh);
   }
@@ -141,6 +132,12 @@ MedialAxisBuild build_medial_axis(const std::string& path, MedialInputKind kind,
   out.report["axis"] = complex_json(out.complex);
   out.report["total_seconds"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return out;
+}
+
+MedialAxisBuild build_medial_axis(const std::string& path, MedialInputKind kind, int samples) {
+  MeshAxisOptions o;
+  o.samples_per_edge = samples;
+  return build_medial_axis(path, kind, o);
 }
 
 }  // namespace grassfire

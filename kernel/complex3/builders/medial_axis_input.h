@@ -5,12 +5,12 @@
 //    .halfspaces; convex_polyhedron_axis.h) -- exact, or certified approximate mode;
 //  - a union of balls: a ball list (.cin, .balls; union_of_balls_axis.h) -- exact
 //    combinatorics, rational or certified approximate vertices;
-//  - a closed mesh: the axis of its inner polar balls (mesh_poles.h) -- an approximation
-//    with the convergence guarantee of the power crust, then the exact union-of-balls axis;
+//  - a closed mesh: the inner Voronoi axis of surface samples, refined until its Betti
+//    numbers are the solid's (mesh_axis.h) -- an approximation with exact vertices;
 // and a JSON report of what was computed (counts, exactness and error bounds, timings,
 // Betti numbers of the shape and of the axis where known; for meshes "mesh_input": what the
 // reader welded and dropped, io/mesh_weld.h, "repairs" its one-line summary). Kind Auto
-// picks by extension; for a mesh it takes the convex builder when the mesh is convex, else the pole builder.
+// picks by extension; for a mesh it takes the convex builder when the mesh is convex, else the mesh axis builder.
 // Contract: errors are exceptions whose message names the file and the problem (readers:
 // ComplexFormatError; geometry: std::invalid_argument); nothing is written here.
 // Complexity: that of the builder used.
@@ -20,6 +20,7 @@
 
 #include <string>
 
+#include "complex3/builders/mesh_axis.h"
 #include "complex3/raw_complex.h"
 
 namespace grassfire {
@@ -35,7 +36,9 @@ struct MedialAxisBuild {
   nlohmann::json report;
 };
 
-// `samples`: for meshes, the subdivision S of mesh_poles.h (1 = the vertices only).
-MedialAxisBuild build_medial_axis(const std::string& path, MedialInputKind kind, int samples = 1);
+// `mesh_options`: for closed meshes (mesh_axis.h).
+MedialAxisBuild build_medial_axis(const std::string& path, MedialInputKind kind, const MeshAxisOptions& mesh_options = {});
+// The same with only the initial sampling given: h = mean edge length / samples.
+MedialAxisBuild build_medial_axis(const std::string& path, MedialInputKind kind, int samples);
 
 }  // namespace grassfire

@@ -1,0 +1,301 @@
+// mesh_axis.cpp -- see mesh_axis.h.
+#include "complex3/builders/mesh_axis.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "complex3/builders/axis_pruning.h"
+#include "complex3/builders/cpu_clock.h"
+#include "complex3/builders/inner_voronoi.h"
+#include "complex3/builders/mesh_checks.h"
+#include "complex3/builders/mesh_samples.h"
+#include "complex3/exact_predicates3.h"
+#include "number/exact_sum.h"
+
+namespace grassfire {
+
+namespace {
+
+
+double seconds_since(double t) { return cpu_seconds() - t; }
+
+// The angle test of a Voronoi vertex x against two samples u, v on its empty sphere:
+// |u - v|^2 >= kappa R(x)^2. In lattice units R(x) = |N| / |D| (the centre is
+// n_0 + N / D and n_0 lies on the sphere), so the test is D^2 |u - v|^2 >= kappa |N|^2:
+// an interval filter, then exact integers.
+class AngleTest {
+ public:
+  AngleTest(const InnerVoronoi& vor, double angle_degrees)
+      : vor_(vor), kappa_(2 * (1 - std::cos(angle_degrees * M_PI / 180))), exact_kappa_(kappa_) {}
+
+  bool wide(std::uint32_t x, std::uint32_t u, std::uint32_t v) const {
+    if (kappa_ <= 0) return true;
+    const auto& a = vor_.samples.lattice[u];
+    const auto& b = vor_.samples.lattice[v];
+    const LatticeCentre& c = vor_.vertices[x].centre;
+    std::int64_t d2 = 0;  // < 3 * 2^54
+    for (int k = 0; k < 3; ++k) d2 += (a[k] - b[k]) * (a[k] - b[k]);
+    Interval n2(0.0);
+    for (int k = 0; k < 3; ++k) n2 += square(around(c.num[k]));
+    const int sign = certified_sign(square(around(c.den)) * Interval(static_cast<double>(d2)) - Interval(kappa_) * n2);
+    if (sign != kUndecided) return sign >= 0;
+    mpq_class nn = 0;
+    for (int k = 0; k < 3; ++k) nn += to_mpq(c.num[k]) * to_mpq(c.num[k]);
+    const mpq_class den = to_mpq(c.den);
+    return sgn(den * den * mpq_class(d2) - exact_kappa_ * nn) >= 0;
+  }
+
+ private:
+  static Interval around(__int128 x) {
+    const double d = static_cast<double>(x);
+    return {round_down(d), round_up(d)};
+  }
+  const InnerVoronoi& vor_;
+  double kappa_;
+  mpq_class exact_kappa_;
+};
+
+// The separation test of two samples: |u - v| >= lambda max(h_u, h_v), h the spacing of
+// the triangles a sample lies on. Exact: |u - v|^2 is an integer in lattice units, compared
+// with the ceiling of the double threshold.
+class SeparationTest {
+ public:
+  SeparationTest(const InnerVoronoi& vor, const std::vector<double>& triangle_spacing, double lambda)
+      : vor_(vor), spacing_(vor.samples.lattice.size(), INFINITY), lambda_(lambda) {
+    for (std::size_t t = 0; t + 1 < vor.samples.offset.size(); ++t)
+      for (std::uint32_t i = vor.samples.offset[t]; i < vor.samples.offset[t + 1]; ++i) {
+        double& h = spacing_[vor.samples.on_triangle[i]];
+        h = std::min(h, triangle_spacing[t] / vor.samples.grid);
+      }
+  }
+
+  bool apart(std::uint32_t u, std::uint32_t v) const {
+    if (lambda_ <= 0) return true;
+    const auto& a = vor_.samples.lattice[u];
+    const auto& b = vor_.samples.lattice[v];
+    std::int64_t d2 = 0;  // < 3 * 2^54
+    for (int k = 0; k < 3; ++k) d2 += (a[k] - b[k]) * (a[k] - b[k]);
+    const double h = lambda_ * std::max(spacing_[u], spacing_[v]);
+    const double threshold = std::ceil(h * h);
+    return threshold < 0x1p62 && d2 >= static_cast<std::int64_t>(threshold);
+  }
+
+ private:
+  const InnerVoronoi& vor_;
+  std::vector<double> spacing_;  // per sample, in lattice units
+  double lambda_;
+};
+
+PrunedComplex prune(const InnerVoronoi& vor, const AngleTest& angle, const SeparationTest& separation) {
+  PolygonalComplex complex;
+  complex.vertex_count = vor.vertices.size();
+  complex.polygons = vor.polygons;
+  for (const auto& s : vor.segments) complex.segments.push_back(s.v);
+  auto keep_polygon = [&](std::uint32_t i) {
+    if (!separation.apart(vor.pq[i][0], vor.pq[i][1])) return false;
+    for (std::uint32_t k = 0; k < vor.polygons.ring_size(i); ++k)
+      if (!angle.wide(vor.polygons.ring(i)[k], vor.pq[i][0], vor.pq[i][1])) return false;
+    return true;
+  };
+  auto keep_edge = [&](const EdgeOrigin& o) {
+    std::array<std::uint32_t, 2> ends;
+    std::array<std::uint32_t, 3> t;
+    if (o.segment) {
+      ends = vor.segments[o.index].v;
+      t = vor.segments[o.index].triangle;
+    } else {
+      ends = vor.polygons.side(o.index, o.side);
+      t = {vor.pq[o.index][0], vor.pq[o.index][1], vor.apex[vor.polygons.offset[o.index] + o.side]};
+    }
+    if (!separation.apart(t[0], t[1]) && !separation.apart(t[1], t[2]) && !separation.apart(t[2], t[0])) return false;
+    for (std::uint32_t x : ends)
+      if (!angle.wide(x, t[0], t[1]) && !angle.wide(x, t[1], t[2]) && !angle.wide(x, t[2], t[0])) return false;
+    return true;
+  };
+  return prune_by_collapse(complex, keep_polygon, keep_edge);
+}
+
+// The kept cells with compact vertex ids: fans of the polygons, bare edges, and every
+// kept vertex (isolated ones are components of the axis).
+struct AxisCells {
+  std::vector<std::uint32_t> vertex_id;  // per Voronoi vertex, UINT32_MAX when dropped
+  std::vector<std::uint32_t> voronoi_vertex;
+  PolygonRings rings;  // the kept polygons, in compact vertex ids
+  std::vector<std::array<std::uint32_t, 2>> segments;
+  std::vector<std::uint32_t> polygons;  // kept polygon ids
+};
+
+AxisCells axis_cells(const InnerVoronoi& vor, const PrunedComplex& pruned) {
+  AxisCells out;
+  out.vertex_id.assign(vor.vertices.size(), UINT32_MAX);
+  for (std::uint32_t v = 0; v < vor.vertices.size(); ++v)
+    if (pruned.vertex_kept[v]) {
+      out.vertex_id[v] = static_cast<std::uint32_t>(out.voronoi_vertex.size());
+      out.voronoi_vertex.push_back(v);
+    }
+  for (std::uint32_t i = 0; i < vor.polygons.size(); ++i) {
+    if (!pruned.polygon_kept[i]) continue;
+    out.polygons.push_back(i);
+    for (std::uint32_t k = 0; k < vor.polygons.ring_size(i); ++k) out.rings.vertex.push_back(out.vertex_id[vor.polygons.ring(i)[k]]);
+    out.rings.close();
+  }
+  for (const auto& e : pruned.bare_edges) out.segments.push_back({out.vertex_id[e[0]], out.vertex_id[e[1]]});
+  return out;
+}
+
+// Exact coordinates and R^2 of the kept vertices; border rules on the polygons' free sides.
+RawComplex assemble(const InnerVoronoi& vor, const AxisCells& cells, const std::string& source) {
+  RawComplex raw;
+  raw.source = source + " (inner Voronoi medial axis)";
+  for (std::uint32_t v : cells.voronoi_vertex) {
+    mpq_class r2;
+    raw.vertices.push_back(exact_point(vor.samples, vor.vertices[v].centre, &r2));
+    raw.radius_squared.push_back(r2);
+  }
+  for (std::size_t i = 0; i < cells.rings.size(); ++i) {  // fans: the polygons are strictly convex
+    const std::uint32_t* ring = cells.rings.ring(i);
+    for (std::uint32_t k = 1; k + 1 < cells.rings.ring_size(i); ++k) raw.triangles.push_back({ring[0], ring[k], ring[k + 1]});
+  }
+  raw.segments = cells.segments;
+  std::vector<std::uint64_t> sides;
+  auto key = [](std::uint32_t a, std::uint32_t b) {
+    return (static_cast<std::uint64_t>(std::min(a, b)) << 32) | std::max(a, b);
+  };
+  for (std::uint32_t i : cells.polygons)
+    for (std::uint32_t k = 0; k < vor.polygons.ring_size(i); ++k) {
+      const auto [a, b] = vor.polygons.side(i, k);
+      sides.push_back(key(a, b));
+    }
+  std::sort(sides.begin(), sides.end());
+  for (std::uint32_t i : cells.polygons)
+    for (std::uint32_t k = 0; k < vor.polygons.ring_size(i); ++k) {
+      const auto [a, b] = vor.polygons.side(i, k);
+      const auto range = std::equal_range(sides.begin(), sides.end(), key(a, b));
+      if (range.second - range.first != 1) continue;
+      BorderIgnition rule;
+      rule.edge = {cells.vertex_id[a], cells.vertex_id[b]};
+      rule.rule = IgnitionRule::DistanceToPoint;
+      rule.point = exact_sample(vor.samples, vor.pq[i][0]);  // every point x of the face has R(x) = |x - p|
+      raw.border_rules.push_back(rule);
+    }
+  return raw;
+}
+
+// The next spacing per triangle: where the poles of its samples say that the local
+// feature size f is small (spacing > f / 2, the sampling density of the power crust's
+// experiments), down to f / 2 but at most by a factor 4 per round; if nowhere, everywhere
+// by half.
+void refine(const InnerVoronoi& vor, const MeshAxisOptions& options, std::vector<double>* spacing) {
+  bool changed = false;
+  for (std::size_t t = 0; t < spacing->size(); ++t) {
+    double f = INFINITY;
+    for (std::uint32_t i = vor.samples.offset[t]; i < vor.samples.offset[t + 1]; ++i)
+      f = std::min(f, vor.pole_distance[vor.samples.on_triangle[i]]);
+    double& h = (*spacing)[t];
+    if (options.feature_ratio * f < h) {
+      h = std::max(options.feature_ratio * f, h / 4);
+      changed = true;
+    }
+  }
+  if (!changed)
+    for (double& h : *spacing) h /= 2;
+}
+
+}  // namespace
+
+MeshAxis mesh_medial_axis(const TriangleMesh3& mesh, const MeshAxisOptions& options) {
+  const double start = cpu_seconds();
+  if (!(options.samples_per_edge > 0)) throw std::invalid_argument(mesh.source + ": samples per edge must be positive");
+  require_closed_manifold(mesh);
+  MeshAxis out;
+  out.solid = solid_topology(mesh);
+  const SolidLocator solid(mesh);
+  std::vector<double> spacing(mesh.triangles.size(), mean_edge_length(mesh) / options.samples_per_edge);
+  for (int round = 0;; ++round) {
+    MeshAxisRound r;
+    r.spacing = *std::min_element(spacing.begin(), spacing.end());
+    double t = cpu_seconds();
+    SurfaceSamples samples = sample_surface(mesh, spacing);
+    r.samples = samples.lattice.size();
+    if (r.samples > options.max_samples)
+      throw MeshAxisTopologyError(mesh.source + ": " + std::to_string(r.samples) + " samples would exceed the limit of " +
+                                  std::to_string(options.max_samples));
+    r.sample_seconds = seconds_since(t);
+    const InnerVoronoi vor = inner_voronoi(std::move(samples), solid);
+    r.tetrahedra = vor.tetrahedra;
+    r.cells = vor.cells;
+    r.inner_cells = vor.vertices.size();
+    r.interior_samples = vor.interior_samples;
+    r.polygons = vor.polygons.size();
+    r.segments = vor.segments.size();
+    r.delaunay_seconds = vor.delaunay_seconds;
+    r.classify_seconds = vor.classify_seconds;
+    r.extract_seconds = vor.extract_seconds;
+    t = cpu_seconds();
+    const AngleTest angle(vor, options.angle_degrees);
+    const SeparationTest separation(vor, spacing, options.separation);
+    const PrunedComplex pruned = prune(vor, angle, separation);
+    const AxisCells cells = axis_cells(vor, pruned);
+    r.kept_polygons = cells.polygons.size();
+    r.kept_segments = cells.segments.size();
+    r.prune_seconds = seconds_since(t);
+    t = cpu_seconds();
+    r.betti = polygonal_betti_numbers(cells.voronoi_vertex.size(), cells.segments, cells.rings);
+    r.betti_seconds = seconds_since(t);
+    out.rounds.push_back(r);
+    if (r.betti == out.solid.betti) {
+      t = cpu_seconds();
+      out.complex = assemble(vor, cells, mesh.source);
+      out.samples = vor.samples;
+      out.axis_betti = r.betti;
+      out.exact_locator_tests = solid.stats().exact_tests;
+      out.assemble_seconds = seconds_since(t);
+      break;
+    }
+    if (round >= options.max_refinements)
+      throw MeshAxisTopologyError(mesh.source + ": the axis has Betti numbers " + betti_text(r.betti) +
+                                  ", the solid " + betti_text(out.solid.betti) + ", after " + std::to_string(round) +
+                                  " refinements (" + std::to_string(r.samples) +
+                                  " samples); no axis is returned. Try a larger --samples");
+    refine(vor, options, &spacing);
+  }
+  out.total_seconds = seconds_since(start);
+  return out;
+}
+
+nlohmann::json mesh_axis_json(const MeshAxis& a) {
+  auto betti = [](const BettiNumbers& b) { return nlohmann::json{b.b0, b.b1, b.b2}; };
+  nlohmann::json rounds = nlohmann::json::array();
+  for (const MeshAxisRound& r : a.rounds)
+    rounds.push_back({{"spacing", r.spacing},
+                      {"samples", r.samples},
+                      {"tetrahedra", r.tetrahedra},
+                      {"delaunay_cells", r.cells},
+                      {"inner_cells", r.inner_cells},
+                      {"interior_samples", r.interior_samples},
+                      {"voronoi_polygons", r.polygons},
+                      {"voronoi_segments", r.segments},
+                      {"kept_polygons", r.kept_polygons},
+                      {"kept_segments", r.kept_segments},
+                      {"betti", betti(r.betti)},
+                      {"seconds",
+                       {{"samples", r.sample_seconds},
+                        {"delaunay", r.delaunay_seconds},
+                        {"classify", r.classify_seconds},
+                        {"extract", r.extract_seconds},
+                        {"prune", r.prune_seconds},
+                        {"betti", r.betti_seconds}}}});
+  nlohmann::json shells = nlohmann::json::array();
+  for (const MeshShell& s : a.solid.shells)
+    shells.push_back({{"triangles", s.triangles.size()}, {"vertices", s.vertices}, {"genus", s.genus}, {"depth", s.depth}});
+  return {{"solid_betti", betti(a.solid.betti)},
+          {"axis_betti", betti(a.axis_betti)},
+          {"refinements", a.refinements()},
+          {"shells", shells},
+          {"rounds", rounds},
+          {"exact_locator_tests", a.exact_locator_tests},
+          {"assemble_seconds", a.assemble_seconds},
+          {"seconds", a.total_seconds}};
+}
+
+}  // namespace grassfire

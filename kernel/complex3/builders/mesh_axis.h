@@ -1,0 +1,91 @@
+// mesh_axis.h -- the medial axis of the solid bounded by a closed triangle mesh, with the
+// solid's homotopy type checked exactly (2.1.2 in 3D).
+//
+// Computes, for a closed mesh M bounding the solid S (even-odd rule, mesh_solid.h):
+//  1. the Betti numbers of S from the mesh alone (shells, genera, nesting);
+//  2. samples of M at spacing h (mesh_samples.h), h = mean edge length / samples_per_edge;
+//  3. the inner Voronoi complex V_in of the samples (inner_voronoi.h), which is homotopy
+//     equivalent to the interior of the Delaunay cells with inner circumcentres;
+//  4. the pruned axis: Voronoi faces of samples p, q whose angle at every vertex x,
+//     angle(p x q), is below theta (and Voronoi edges of triangles pqr whose angles are all
+//     below theta at both ends) are collapsed away while they have a free side
+//     (axis_pruning.h), so the homotopy type of V_in is kept; angle(p x q) >= theta is the
+//     exact rational test |p - q|^2 >= 2 (1 - cos theta) R(x)^2, R(x) = |x - p|, with
+//     2 (1 - cos theta) taken as the rational value of its double;
+//  5. its Betti numbers by exact simplicial homology (simplicial_homology.h) on the
+//     triangulated axis. When they differ from S's, h is halved and steps 2-5 repeat, at
+//     most max_refinements times; then MeshAxisTopologyError says what was reached. A
+//     wrong axis is never returned.
+// Output: a RawComplex with exact rational vertices (the circumcentres, from the double
+// samples; distinct because equal circumcentres are one Delaunay cell), exact R^2 (the
+// squared circumradius), the Voronoi faces fanned into triangles (they are convex, and
+// strictly so once equal circumcentres are one vertex), the remaining Voronoi edges as
+// segments, and on every border edge the ignition R(x) = |x - p| (p a sample of the face).
+// The complex is embedded: it is a subcomplex of the Voronoi diagram, triangulated inside
+// its convex faces; nothing is rounded.
+// Approximation (what is known): for an epsilon-sample of a smooth surface, the Voronoi
+// faces passing the angle test lie within O(epsilon) lfs of the medial axis and converge to
+// it in Hausdorff distance as epsilon -> 0 (Dey-Zhao 2004, for theta fixed); every vertex x
+// is the centre of an empty ball of radius R(x) through four samples. Mesh edges have lfs
+// 0 and no theorem covers them; the error study (experiments/study_mesh_axis_sampling)
+// measures the axis against itself and against known axes as h shrinks.
+// Contract: a closed 2-manifold mesh (require_closed_manifold), shells disjoint.
+// Complexity: per round, O(n log n) expected for n samples (the Delaunay triangulation),
+// then linear work plus one exact locator query per Delaunay cell; the rounds grow n by
+// about 4 each.
+#pragma once
+
+#include <nlohmann/json.hpp>
+
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "complex3/builders/mesh_samples.h"
+#include "complex3/builders/mesh_solid.h"
+#include "complex3/builders/simplicial_homology.h"
+#include "complex3/raw_complex.h"
+#include "complex3/triangle_mesh.h"
+
+namespace grassfire {
+
+struct MeshAxisOptions {
+  double samples_per_edge = 1;   // h = mean edge length / samples_per_edge
+  int max_refinements = 5;       // halvings of h after the first round
+  double angle_degrees = 0;      // theta of the pruning (0: no angle test)
+  double separation = 2;         // lambda: pq must be >= lambda local spacings apart; 0: no test
+  double feature_ratio = 0.5;    // refinement: spacing <= ratio * (pole distance) where refined
+  std::size_t max_samples = 2000000;
+};
+
+struct MeshAxisRound {
+  double spacing = 0;
+  std::size_t samples = 0, tetrahedra = 0, cells = 0, inner_cells = 0;
+  std::size_t interior_samples = 0;  // samples whose Voronoi cell is inside (inner_voronoi.h)
+  std::size_t polygons = 0, segments = 0, kept_polygons = 0, kept_segments = 0;
+  BettiNumbers betti;
+  double sample_seconds = 0, delaunay_seconds = 0, classify_seconds = 0, extract_seconds = 0, prune_seconds = 0,
+         betti_seconds = 0;
+};
+
+struct MeshAxis {
+  RawComplex complex;
+  SolidTopology solid;
+  BettiNumbers axis_betti;
+  std::vector<MeshAxisRound> rounds;  // the last one is the axis returned
+  SurfaceSamples samples;             // of the last round
+  std::size_t exact_locator_tests = 0;
+  double assemble_seconds = 0, total_seconds = 0;
+  int refinements() const { return static_cast<int>(rounds.size()) - 1; }
+};
+
+class MeshAxisTopologyError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+MeshAxis mesh_medial_axis(const TriangleMesh3& mesh, const MeshAxisOptions& options = {});
+
+nlohmann::json mesh_axis_json(const MeshAxis& axis);
+
+}  // namespace grassfire
