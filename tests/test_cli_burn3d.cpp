@@ -169,6 +169,39 @@ TEST_CASE("grassfire burn3d: bad sources, queries and complexes fail cleanly, wi
   for (const std::string& p : {sources, at}) std::remove(p.c_str());
 }
 
+TEST_CASE("grassfire burn3d --method exact --singular-walls: the board and fin with N as a wall", "[cli][exact3]") {
+  // Part 1's semantics: fire stops at the singular curve N (x = y, z = 0). Closed forms
+  // (4.2.1 before any junction rule): on the fin sqrt 2 (x - 1); on the back of the board
+  // y; on the front, past the corner c = (1, 1, 0), 1 + |p - c|.
+  const std::string at = temp_path("gf_walls_at.csv"), csv = temp_path("gf_walls.csv"),
+                    json = temp_path("gf_walls.json");
+  write_text(at, "x,y,z\n3,3,1\n4,2,0\n2,4,0\n");
+  const testing::CliRun r =
+      run_cli("burn3d board-fin --method exact --singular-walls --at " + at + " --csv " + csv + " --json " + json);
+  INFO(r.output);
+  REQUIRE(r.code == 0);
+  CHECK_THAT(r.output, Catch::Contains("singular edges burned as walls, not Definition 9"));
+  const auto rows = csv_rows(slurp(csv));
+  REQUIRE(rows.size() == 4);
+  const double expected[] = {2 * std::sqrt(2.0), 2.0, 1 + std::sqrt(10.0)};
+  for (int i = 0; i < 3; ++i) {
+    CAPTURE(i);
+    CHECK(std::fabs(std::stod(rows[i + 1][3]) - expected[i]) <= std::stod(rows[i + 1][4]) + 1e-15);
+    CHECK(std::stod(rows[i + 1][4]) < 1e-10);
+  }
+  const nlohmann::json j = nlohmann::json::parse(slurp(json));
+  CHECK(j["stats"]["uncertified"] == 0);
+  CHECK_THAT(j["stats"]["singular_edges"].get<std::string>(), Catch::Contains("walls"));
+  // Without the flag the same run is refused, and the flag needs the exact method.
+  const testing::CliRun refused = run_cli("burn3d board-fin --method exact");
+  CHECK(refused.code == 1);
+  CHECK_THAT(refused.output, Catch::Contains("--singular-walls"));
+  const testing::CliRun discrete = run_cli("burn3d board-fin --singular-walls");
+  CHECK(discrete.code == 1);
+  CHECK_THAT(discrete.output, Catch::Contains("--singular-walls needs --method exact"));
+  for (const std::string& p : {at, csv, json}) std::remove(p.c_str());
+}
+
 TEST_CASE("grassfire burn3d --method exact: the cube's geodesic distances, certified", "[cli][exact3]") {
   const std::string sources = temp_path("gf_exact_sources.csv"), at = temp_path("gf_exact_at.csv"),
                     csv = temp_path("gf_exact_bt.csv"), json = temp_path("gf_exact.json"),
@@ -243,7 +276,7 @@ TEST_CASE("grassfire burn3d --method exact: a hinge with a hair, and clean refus
     CHECK_FALSE(exists(json));
   };
   check_fails("board-fin", "board-fin: method 'exact' cannot burn this complex yet: it has 11 singular edges");
-  check_fails("double-cone", "double-cone: method 'exact' cannot burn this complex yet: it has 1 singular points");
+  check_fails("double-cone", "double-cone: method 'exact' cannot burn this complex yet: it has 1 singular point where");
   write_text(sources, "x,y,z,t0\n2.5,0,0,0\n");
   check_fails(hinge + " --sources " + sources, "hinge.json: source 1: a point source inside a segment (edge 5)");
   for (const std::string& p : {sources, at}) std::remove(p.c_str());

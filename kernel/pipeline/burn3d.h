@@ -50,6 +50,7 @@ struct Burn3dSetup {
   std::string method = "discrete";  // burn_method's name
   bool mesh_is_complex = false;     // burn a mesh itself (R = 0)
   bool no_border_ignition = false;  // every border rule Never: only the sources burn
+  bool singular_walls = false;      // exact: singular edges as walls (BurnRequest)
   std::optional<double> spacing;    // discrete: Steiner spacing h; none: default_burn_spacing
   std::uint64_t max_points = 50'000'000;
   BurnPoints sources;               // x,y,z,t0

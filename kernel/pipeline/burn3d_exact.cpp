@@ -8,7 +8,8 @@
 // |bt - BT| <= bt_error holds for every finite value. Complexes this part of the engine
 // cannot burn by Definition 9 (singular edges, singular points without segments) are
 // refused with a message naming the input's count (exact_engine_unsupported), before any
-// burning. The report holds the propagation's counters and one counter per certification
+// burning, unless the request asks for singular walls (part 1's semantics: fronts stop at
+// every singular edge; the report and the summary say that this is not Definition 9). The report holds the propagation's counters and one counter per certification
 // stage; "uncertified" counts the wedge decisions no stage certified (each taken as
 // collinear and reported, DESIGN.md 3).
 #include <chrono>
@@ -60,9 +61,10 @@ double seconds_since(std::chrono::steady_clock::time_point start) {
 
 BurnOutcome burn_by_exact(const BurnRequest& request) {
   const MedialComplex& mc = request.mc;
-  if (const std::optional<std::string> why = exact_engine_unsupported(mc))
+  const std::optional<std::string> why = exact_engine_unsupported(mc);
+  if (why && !request.singular_walls)
     throw std::runtime_error(request.input + ": method 'exact' cannot burn this complex yet: it has " + *why +
-                             "; use --method discrete");
+                             "; use --method discrete, or --singular-walls for fronts that stop at singular edges");
   const auto start = std::chrono::steady_clock::now();
   ExactBurning eb(mc);
   for (std::size_t i = 0; i < request.sources.size(); ++i) {
@@ -100,10 +102,12 @@ BurnOutcome burn_by_exact(const BurnRequest& request) {
                 {"uncertified", c.uncertified},
                 {"query_candidates", q.candidates},
                 {"query_widened", q.widened},
-                {"max_vertex_bt_error", max_error}};
+                {"max_vertex_bt_error", max_error},
+                {"singular_edges", why ? "walls (not Definition 9: fronts stop at singular edges)" : "none"}};
   std::ostringstream s;
   s << "exact: " << eb.propagation().stats().windows << " windows, " << c.uncertified << " uncertified decisions, "
     << "max vertex error " << max_error << ", " << out.report["seconds"].get<double>() << " s";
+  if (why) s << "; singular edges burned as walls, not Definition 9";
   out.summary = s.str();
   return out;
 }

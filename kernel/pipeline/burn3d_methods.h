@@ -36,6 +36,10 @@ struct BurnRequest {
   // Reports progress: a stage name and the fraction done in [0, 1].
   std::function<void(const std::string&, double)> progress;
   std::string input;               // names the input in a method's messages
+  // exact: burn a complex with singular edges or singular points anyway, with every
+  // singular edge a wall (fire stops there; issue 8, part 1). That is not Definition 9's
+  // BT (which needs the junction rule, issue 9): the report says so.
+  bool singular_walls = false;
 };
 
 struct BurnValue {

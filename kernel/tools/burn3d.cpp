@@ -53,6 +53,8 @@ int run_burn3d(int argc, char** argv) {
       .option("max-points", "N", "discrete: refuse to place more than N graph points", "50000000")
       .flag("mesh-is-complex", "burn a mesh itself as a 2-complex (R = 0) instead of its medial axis")
       .flag("no-border-ignition", "the border never ignites (every border rule set to never): only --sources burn")
+      .flag("singular-walls", "exact: burn complexes with singular edges, each edge a wall where fronts stop\n"
+                              "(not Definition 9's junction rule; the report says so)")
       .option("sources", "FILE", "CSV `x,y,z,t0`: points of the complex that ignite at time t0 (exact decimals)")
       .option("at", "FILE", "CSV `x,y,z`: query points, each located exactly on the complex, else at its nearest point")
       .option("csv", "OUT", "with --at: one row per query `x,y,z,bt,bt_error,snap` (inf where it never burns)")
@@ -75,6 +77,8 @@ int run_burn3d(int argc, char** argv) {
   if (opt.has("csv") && !opt.has("at")) throw std::runtime_error("--csv needs --at (the query points)");
   setup.mesh_is_complex = opt.has("mesh-is-complex");
   setup.no_border_ignition = opt.has("no-border-ignition");
+  setup.singular_walls = opt.has("singular-walls");
+  if (setup.singular_walls && setup.method != "exact") throw std::runtime_error("--singular-walls needs --method exact");
   if (opt.has("spacing")) setup.spacing = opt.get_double("spacing");
   setup.max_points = static_cast<std::uint64_t>(opt.get_long("max-points", 1, 2'000'000'000L));
   if (opt.has("sources")) setup.sources.file = opt.get("sources");

@@ -182,7 +182,7 @@ Interval ExactBurning::burn_time(const ComplexPoint& x) {
 std::optional<std::string> exact_engine_unsupported(const MedialComplex& mc) {
   const std::size_t singular_edges = mc.count(EdgeStratum::Singular);
   if (singular_edges > 0)
-    return std::to_string(singular_edges) + " singular edges (curves where three or more sheets meet); the exact "
+    return std::to_string(singular_edges) + (singular_edges == 1 ? " singular edge" : " singular edges") + " (curves where three or more sheets meet); the exact "
            "engine does not yet apply the junction rule of Definition 9 there (issue 9)";
   std::size_t points = 0;
   for (std::uint32_t v = 0; v < mc.vertex_count(); ++v) {
@@ -193,7 +193,7 @@ std::optional<std::string> exact_engine_unsupported(const MedialComplex& mc) {
     if (!segment) ++points;
   }
   if (points > 0)
-    return std::to_string(points) + " singular points where sheets meet at a point; the exact engine applies the "
+    return std::to_string(points) + (points == 1 ? " singular point" : " singular points") + " where sheets meet at a point; the exact engine applies the "
            "link rule only at vertices with segments (issue 9)";
   return std::nullopt;
 }
