@@ -186,22 +186,6 @@ void check_definition(const Run& r, DefinitionTally& t) {
   }
 }
 
-CheckRow row(const std::string& prop, const std::string& corpus, const std::string& reference, const std::string& tolerance,
-             const Tally& t, const std::string& unit, const std::string& note) {
-  CheckRow r;
-  r.proposition = prop;
-  r.corpus = corpus;
-  r.reference = reference;
-  r.tolerance = tolerance;
-  r.instances = t.instances;
-  r.points = t.points;
-  r.worst_violation = t.worst;
-  r.unit = unit;
-  r.verdict = verdict_of(t);
-  r.note = note + (t.violations ? " (" + std::to_string(t.violations) + " violations)" : "");
-  return r;
-}
-
 std::string fixed(double v, int digits) {
   char buf[32];
   std::snprintf(buf, sizeof buf, "%.*f", digits, v);
@@ -211,16 +195,16 @@ std::string fixed(double v, int digits) {
 std::vector<CheckRow> corpus_rows(const Corpus3& c, const Tally& p7, const Tally& l2, const Tally& d10,
                                   const DefinitionTally& def, std::size_t closed_instances) {
   std::vector<CheckRow> rows;
-  rows.push_back(row("Prop 7 (BT = inf exactly on the maximal closed subcomplex)", c.name,
+  rows.push_back(tally_row("Prop 7 (BT = inf exactly on the maximal closed subcomplex)", c.name,
                      "maximal closed subcomplex peeled combinatorially", "exact", p7, "points",
                      "closed subcomplex non-empty in " + std::to_string(closed_instances) + " instances"));
-  rows.push_back(row("Lemma 2 (B(s) within B(t) for s <= t) on the discrete burning sets", c.name,
+  rows.push_back(tally_row("Lemma 2 (B(s) within B(t) for s <= t) on the discrete burning sets", c.name,
                      "B(t) recomputed from the neighbours' BT at every distinct candidate time", "exact", l2, "points",
                      "nested for any BT values: tests the monotonicity of the link rule"));
-  rows.push_back(row("Def. 10 on the discrete model (BT = inf {t : x in B(t)})", c.name,
+  rows.push_back(tally_row("Def. 10 on the discrete model (BT = inf {t : x in B(t)})", c.name,
                      "B(t) recomputed from the neighbours' BT (burn_sets.h)", "exact (double equality)", d10, "length",
                      "certifies the event loop; shares moves, rule and ignition with the baseline"));
-  CheckRow r = row("Def. 10 against the definition: BT_ref <= BT_h (<= BT_ref + B on planar sheets)", c.name,
+  CheckRow r = tally_row("Def. 10 against the definition: BT_ref <= BT_h (<= BT_ref + B on planar sheets)", c.name,
                    c.references, "rounding 1e-9 relative; B derived (snapping_bound)", def, "length",
                    std::to_string(def.outside_domain) + " points outside the closed forms' domain; upper excess " +
                        "where no bound is derived: " + fixed(def.upper_excess, 2) + " h (shown, not judged)");
@@ -228,12 +212,12 @@ std::vector<CheckRow> corpus_rows(const Corpus3& c, const Tally& p7, const Tally
   rows.push_back(r);
   Tally none;
   none.instances = c.instances.size();
-  CheckRow s = row("Prop 4 in a sheet (|BT(x) - BT(y)| <= d)", c.name, "none on the baseline", "-", none, "length",
+  CheckRow s = tally_row("Prop 4 in a sheet (|BT(x) - BT(y)| <= d)", c.name, "none on the baseline", "-", none, "length",
                    "on the baseline it holds by Dijkstra's relaxation up to snapping the segment xy to graph points, "
                    "so it is no evidence for BT; needs the exact engine (issue 9)");
   s.verdict = Verdict::NotChecked;
   rows.push_back(s);
-  CheckRow k = row("Prop 4 on singular curves (|BT(x) - BT(y)| <= arclength)", c.name, "none on the baseline", "-",
+  CheckRow k = tally_row("Prop 4 on singular curves (|BT(x) - BT(y)| <= arclength)", c.name, "none on the baseline", "-",
                    none, "length",
                    "on the baseline it holds by its rule (an arrival along a curve burns the point), so it is no "
                    "evidence for BT; needs the exact engine (issue 9)");

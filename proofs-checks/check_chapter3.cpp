@@ -256,18 +256,9 @@ Shapes corpus(const CheckContext& ctx) {
 
 CheckRow row(const std::string& prop, const std::string& corpus_name, const std::string& reference,
              const std::string& tolerance, const Tally& t, const std::string& unit, double worst, const std::string& note) {
-  CheckRow r;
-  r.proposition = prop;
-  r.corpus = corpus_name;
-  r.reference = reference;
-  r.tolerance = tolerance;
-  r.instances = t.instances;
-  r.points = t.points;
-  r.worst_violation = worst;
-  r.unit = unit;
-  r.verdict = verdict_of(t);
-  r.note = note + (t.violations ? " (" + std::to_string(t.violations) + " violations)" : "");
-  return r;
+  Tally judged = t;
+  judged.worst = worst;
+  return tally_row(prop, corpus_name, reference, tolerance, judged, unit, note);
 }
 
 std::vector<CheckRow> run_chapter3(const CheckContext& ctx) {

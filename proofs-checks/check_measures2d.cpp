@@ -52,19 +52,13 @@ struct TimedTally : Tally {
   double seconds = 0;
 };
 
+// Count rows show the number of violations as their worst value (and not again in the note).
 CheckRow row(const std::string& prop, const std::string& corpus, const std::string& reference,
              const std::string& tolerance, const Tally& t, const std::string& unit, const std::string& note) {
-  CheckRow r;
-  r.proposition = prop;
-  r.corpus = corpus;
-  r.reference = reference;
-  r.tolerance = tolerance;
-  r.instances = t.instances;
-  r.points = t.points;
-  r.worst_violation = unit == "count" ? static_cast<double>(t.violations) : t.worst;
-  r.unit = unit;
-  r.verdict = verdict_of(t);
-  r.note = note + (t.violations && unit != "count" ? " (" + std::to_string(t.violations) + " violations)" : "");
+  Tally judged = t;
+  if (unit == "count") judged.worst = static_cast<double>(t.violations);
+  CheckRow r = tally_row(prop, corpus, reference, tolerance, judged, unit, note);
+  if (unit == "count") r.note = note;
   return r;
 }
 

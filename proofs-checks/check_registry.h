@@ -71,6 +71,25 @@ inline Verdict verdict_of(const Tally& t) {
   return t.instances > 0 && t.points > 0 && t.violations == 0 ? Verdict::Pass : Verdict::Fail;
 }
 
+// A row from a Tally: worst violation t.worst, the verdict verdict_of(t), and the count
+// of violations appended to the note.
+inline CheckRow tally_row(const std::string& prop, const std::string& corpus, const std::string& reference,
+                          const std::string& tolerance, const Tally& t, const std::string& unit,
+                          const std::string& note) {
+  CheckRow r;
+  r.proposition = prop;
+  r.corpus = corpus;
+  r.reference = reference;
+  r.tolerance = tolerance;
+  r.instances = t.instances;
+  r.points = t.points;
+  r.worst_violation = t.worst;
+  r.unit = unit;
+  r.verdict = verdict_of(t);
+  r.note = note + (t.violations ? " (" + std::to_string(t.violations) + " violations)" : "");
+  return r;
+}
+
 enum class CorpusSize { Full, Quick, Tiny };
 
 struct CheckContext {

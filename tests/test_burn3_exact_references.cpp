@@ -70,16 +70,6 @@ TriangleMesh3 project_mesh(const char* name) {
   return read_triangle_mesh(std::string(GF_PROJECT_DATA) + "/meshes/" + name);
 }
 
-// Face f's point at weights w, exactly (mesh coordinates are doubles, hence rationals).
-ExactPoint3 mesh_point(const TriangleMesh3& mesh, std::uint32_t f, const std::array<mpq_class, 3>& w) {
-  ExactPoint3 c{0, 0, 0};
-  for (int i = 0; i < 3; ++i) {
-    const auto& p = mesh.vertices[mesh.triangles[f][i]];
-    c = c + w[i] * ExactPoint3{mpq_class(p[0]), mpq_class(p[1]), mpq_class(p[2])};
-  }
-  return c;
-}
-
 MeshPoint as_mesh_point(std::uint32_t f, const std::array<mpq_class, 3>& w) {
   return {f, {w[0].get_d(), w[1].get_d(), w[2].get_d()}};
 }
@@ -142,7 +132,7 @@ TEST_CASE("exact engine = CGAL shortest paths on curved closed meshes with point
       const std::array<mpq_class, 3>& w = where[kind];
       const std::uint32_t f = face(rng);
       const mpq_class t0 = q(quarter(rng), 4);
-      const ComplexPoint p = locator.locate(mesh_point(mesh, f, w));
+      const ComplexPoint p = locator.locate(exact_mesh_point(mesh, as_mesh_point(f, w)));
       REQUIRE(sgn(p.snap_squared) == 0);
       CHECK(p.kind == std::array<ComplexPoint::Kind, 3>{ComplexPoint::Kind::Triangle, ComplexPoint::Kind::Edge,
                                                         ComplexPoint::Kind::Vertex}[kind]);
@@ -156,7 +146,7 @@ TEST_CASE("exact engine = CGAL shortest paths on curved closed meshes with point
     double worst = 0, width = 0;
     for (std::uint32_t f = 0; f < faces; f += 2) {
       const std::array<mpq_class, 3> w = f % 4 ? interior_weights(rng) : std::array<mpq_class, 3>{1, 0, 0};
-      const Interval e = eb.burn_time(locator.locate(mesh_point(mesh, f, w)));
+      const Interval e = eb.burn_time(locator.locate(exact_mesh_point(mesh, as_mesh_point(f, w))));
       const double cgal = g.distance(as_mesh_point(f, w));
       CAPTURE(f, e.lo, e.hi, cgal);
       REQUIRE(std::isfinite(e.lo));

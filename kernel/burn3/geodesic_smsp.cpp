@@ -103,6 +103,15 @@ SmspGeodesics::SmspGeodesics(const TriangleMesh3& input) : impl_(std::make_uniqu
 
 SmspGeodesics::~SmspGeodesics() = default;
 
+ExactPoint3 exact_mesh_point(const TriangleMesh3& mesh, const MeshPoint& p) {
+  ExactPoint3 c{0, 0, 0};
+  for (int i = 0; i < 3; ++i) {
+    const auto& v = mesh.vertices[mesh.triangles[p.face][i]];
+    c = c + mpq_class(p.barycentric[i]) * ExactPoint3{mpq_class(v[0]), mpq_class(v[1]), mpq_class(v[2])};
+  }
+  return c;
+}
+
 MeshPoint SmspGeodesics::locate(const std::array<double, 3>& p) const {
   return impl_->from_cgal(impl_->locator->locate(Kernel::Point_3(p[0], p[1], p[2]), impl_->aabb));
 }

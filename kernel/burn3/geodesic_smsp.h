@@ -29,6 +29,7 @@
 #include <memory>
 #include <vector>
 
+#include "complex3/exact_predicates3.h"
 #include "complex3/triangle_mesh.h"
 
 namespace grassfire {
@@ -37,6 +38,11 @@ struct MeshPoint {
   std::uint32_t face = 0;
   std::array<double, 3> barycentric{};  // weights of mesh.triangles[face][0], [1], [2]
 };
+
+// The point of p.face at p's weights, exactly (every double is a rational; with dyadic
+// weights such as k/8 this is the point CGAL is given), to locate on the mesh's complex
+// (mesh_as_complex reads the coordinates exactly too).
+ExactPoint3 exact_mesh_point(const TriangleMesh3& mesh, const MeshPoint& p);
 
 class SmspGeodesics {
  public:
