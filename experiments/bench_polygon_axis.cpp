@@ -11,12 +11,15 @@
 // size; the exact axis (polygon_axis.h); the exact axis plus the extended grassfire
 // (extended_grassfire.h).
 // Output (stdout): CSV segments,shape,boost_s,cgal_sdg_s,axis_s,axis_plus_edf_s,
-// axis_ratio,ratio_to_boost,peak_mem_mb; shape is "symmetric" or "shifted";
-// axis_ratio = axis_s / boost_s, ratio_to_boost = axis_plus_edf_s / boost_s; an empty
-// cgal_sdg_s means skipped; peak_mem_mb is the process's peak resident size after the
-// row. Each time is the best of --repeat runs (default 1). stderr: the axis report (where
-// its time goes, contractions, Arb refinements), the engine's comparison counts and the
-// value classes.
+// axis_ratio,ratio_to_boost,boost_cpu_s,axis_plus_edf_cpu_s,cpu_ratio,uncertified,
+// peak_mem_mb; shape is "symmetric" or "shifted"; axis_ratio = axis_s / boost_s,
+// ratio_to_boost = axis_plus_edf_s / boost_s (wall clock), cpu_ratio the same in thread
+// CPU time (what to read on a loaded machine); uncertified = ties of the burning and
+// contractions of the axis that no stage could prove (zero is the goal, DESIGN.md 3); an
+// empty cgal_sdg_s means skipped; peak_mem_mb is the process's peak resident size after
+// the row. Each time is the best of --repeat runs (default 1). stderr: the axis report
+// (where its CPU time goes: Voronoi, values, value classes, burning; contractions, double-
+// double and Arb refinements), the engine's comparison counts and the value classes.
 // Usage: bench_polygon_axis [--sizes 1000,10000,100000] [--max-cgal N] [--repeat K]
 #include <CGAL/Segment_Delaunay_graph_2.h>
 #include <CGAL/Segment_Delaunay_graph_filtered_traits_2.h>
@@ -38,6 +41,7 @@
 #include <vector>
 
 #include "burn2/extended_grassfire.h"
+#include "medial2/cpu_clock.h"
 #include "medial2/polygon_axis.h"
 #include "medial2/polygon_axis_geometry.h"
 #include "medial2/polygon_axis_symmetry.h"
@@ -60,7 +64,11 @@ Shape2 wavy_circle(int n, double phase) {
   return s;
 }
 
-double bare_boost(const Shape2& s) {
+struct Times {
+  double wall, cpu;
+};
+
+Times bare_boost(const Shape2& s) {
   namespace bp = boost::polygon;
   const auto& p = s.rings[0].points;
   std::vector<bp::segment_data<int>> seg;
@@ -68,10 +76,10 @@ double bare_boost(const Shape2& s) {
     const Point2 a = p[i], b = p[(i + 1) % p.size()];
     seg.emplace_back(bp::point_data<int>(int(a.x), int(a.y)), bp::point_data<int>(int(b.x), int(b.y)));
   }
-  const double t0 = now();
+  const double t0 = now(), c0 = thread_seconds();
   bp::voronoi_diagram<double> vd;
   bp::construct_voronoi(seg.begin(), seg.end(), &vd);
-  return now() - t0;
+  return {now() - t0, thread_seconds() - c0};
 }
 
 double bare_cgal(const Shape2& s) {
@@ -97,17 +105,21 @@ double peak_mb() {
 
 struct Row {
   double boost_s = 1e300, cgal_s = 1e300, axis_s = 1e300, both_s = 1e300;
+  double boost_cpu = 1e300, both_cpu = 1e300, classes_cpu = 0, burn_cpu = 0;
 };
 
-void report_details(int n, const char* shape, const PolygonAxisReport& rep, const MedialGraph& g,
+void report_details(int n, const char* shape, const PolygonAxisReport& rep, const Row& row, const MedialGraph& g,
                     const GrassfireResult& r) {
   const NumberStats& st = r.stats();
   std::fprintf(stderr,
-               "n=%d %s: axis %.4f s (voronoi %.4f, values %.4f), %llu nodes, %llu contracted, %llu Arb "
-               "refinements; engine: filter %llu, x87 %llu, mpfr %llu, exact zero %llu (by class %llu), "
+               "n=%d %s: CPU boost %.4f s; axis %.4f s (voronoi %.4f, values %.4f), classes %.4f s, burning %.4f s; "
+               "%llu nodes, %llu contracted, %llu double-double and %llu Arb refinements, %llu uncertified "
+               "contractions; engine: filter %llu, x87 %llu, mpfr %llu, exact zero %llu (by class %llu), "
                "uncertified %llu, max bits %llu\n",
-               n, shape, rep.total_seconds, rep.voronoi_seconds, rep.values_seconds, (unsigned long long)rep.nodes,
-               (unsigned long long)rep.contracted_edges, (unsigned long long)rep.ball_refinements,
+               n, shape, row.boost_cpu, rep.total_seconds, rep.voronoi_seconds, rep.values_seconds, row.classes_cpu,
+               row.burn_cpu, (unsigned long long)rep.nodes, (unsigned long long)rep.contracted_edges,
+               (unsigned long long)rep.dd_refinements, (unsigned long long)rep.ball_refinements,
+               (unsigned long long)rep.uncertified_contractions,
                (unsigned long long)st.filter_decided, (unsigned long long)st.extended_decided,
                (unsigned long long)st.mpfr_decided, (unsigned long long)st.exact_zero,
                (unsigned long long)st.class_zero, (unsigned long long)st.uncertified_zero,
@@ -142,7 +154,8 @@ int main(int argc, char** argv) {
       return 2;
     }
   }
-  std::printf("segments,shape,boost_s,cgal_sdg_s,axis_s,axis_plus_edf_s,axis_ratio,ratio_to_boost,peak_mem_mb\n");
+  std::printf("segments,shape,boost_s,cgal_sdg_s,axis_s,axis_plus_edf_s,axis_ratio,ratio_to_boost,boost_cpu_s,"
+              "axis_plus_edf_cpu_s,cpu_ratio,uncertified,peak_mem_mb\n");
   for (int n : sizes) {
     for (const auto& [shape, phase] : {std::pair<const char*, double>{"symmetric", 0.0}, {"shifted", 0.3}}) {
       const Shape2 s = wavy_circle(n, phase);
@@ -151,7 +164,9 @@ int main(int argc, char** argv) {
       std::unique_ptr<MedialGraph> g;
       std::unique_ptr<GrassfireResult> r;
       for (int k = 0; k < repeat; ++k) {
-        row.boost_s = std::min(row.boost_s, bare_boost(s));
+        const Times b = bare_boost(s);
+        row.boost_s = std::min(row.boost_s, b.wall);
+        row.boost_cpu = std::min(row.boost_cpu, b.cpu);
         if (n <= max_cgal) row.cgal_s = std::min(row.cgal_s, bare_cgal(s));
         double t0 = now();
         g = std::make_unique<MedialGraph>(exact_polygon_axis(s, {}, &rep));
@@ -159,15 +174,27 @@ int main(int argc, char** argv) {
         g.reset();
         r.reset();
         t0 = now();
+        const double c0 = thread_seconds();
         g = std::make_unique<MedialGraph>(exact_polygon_axis(s, {}, &rep));
+        const double c1 = thread_seconds();
+        dynamic_cast<const PolygonAxisGeometry&>(g->geometry()).value_classes();
+        const double c2 = thread_seconds();
         r = std::make_unique<GrassfireResult>(extended_grassfire(*g));
+        const double c3 = thread_seconds();
         row.both_s = std::min(row.both_s, now() - t0);
+        if (c3 - c0 < row.both_cpu) {
+          row.both_cpu = c3 - c0;
+          row.classes_cpu = c2 - c1;
+          row.burn_cpu = c3 - c2;
+        }
       }
+      const std::uint64_t uncertified = r->stats().uncertified_zero + rep.uncertified_contractions;
       const std::string cgal = n <= max_cgal ? std::to_string(row.cgal_s) : "";
-      std::printf("%d,%s,%.4f,%s,%.4f,%.4f,%.3f,%.3f,%.1f\n", n, shape, row.boost_s, cgal.c_str(), row.axis_s,
-                  row.both_s, row.axis_s / row.boost_s, row.both_s / row.boost_s, peak_mb());
+      std::printf("%d,%s,%.4f,%s,%.4f,%.4f,%.3f,%.3f,%.4f,%.4f,%.3f,%llu,%.1f\n", n, shape, row.boost_s, cgal.c_str(),
+                  row.axis_s, row.both_s, row.axis_s / row.boost_s, row.both_s / row.boost_s, row.boost_cpu, row.both_cpu,
+                  row.both_cpu / row.boost_cpu, (unsigned long long)uncertified, peak_mb());
       std::fflush(stdout);
-      report_details(n, shape, rep, *g, *r);
+      report_details(n, shape, rep, row, *g, *r);
     }
   }
   return 0;

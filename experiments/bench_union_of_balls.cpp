@@ -6,14 +6,16 @@
 // of side 2 N^(1/3), radii in [0.8, 1.2)); time CGAL Regular_triangulation_3 alone on the
 // weighted points, then the whole axis (triangulation, exact alpha complex, boundary
 // vertices, Voronoi cells in the tetrahedra, assembly with rational output). Each N runs
-// in its own child process, so peak memory (VmHWM) is that configuration's. CSV on stdout:
+// in its own child process, so peak memory (VmHWM) is that configuration's. Times are
+// process CPU seconds. CSV on stdout:
 //   balls,regular_triangulation_s,axis_s,ratio,axis_vertices,axis_triangles,peak_mem_mb
-// and, as comment lines, the structure and the filter/exact counters of each run.
-#include <chrono>
+// and, as comment lines, the structure, the filter/exact counters and the profile (CPU
+// seconds per stage of the axis) of each run.
 #include <cstdio>
 #include <cstdlib>
 #include <vector>
 
+#include "complex3/builders/cpu_clock.h"
 #include "complex3/builders/union_of_balls_axis.h"
 #include "peak_memory.h"
 
@@ -21,20 +23,22 @@ using namespace grassfire;
 
 namespace {
 
-double seconds(std::chrono::steady_clock::time_point t) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
-}
+// The stages of UnionOfBallsAxis::stage_seconds, in order.
+const std::vector<const char*> kStages = {"regular triangulation", "alpha complex", "betti numbers", "boundary vertices",
+                                          "voronoi cells in tetrahedra", "assembly", "output values"};
+
 
 std::vector<double> measure(std::size_t n) {
   const BallSet balls = random_ball_set(n, 2024);
-  auto t = std::chrono::steady_clock::now();
+  // CPU seconds (cpu_clock.h): the machine is shared, and both sides are single-threaded.
+  double t = cpu_seconds();
   const std::size_t cells = cgal_regular_triangulation_cells(balls);
-  const double rt = seconds(t);
-  t = std::chrono::steady_clock::now();
+  const double rt = cpu_seconds() - t;
+  t = cpu_seconds();
   const UnionOfBallsAxis a = union_of_balls_axis(balls);
-  const double axis = seconds(t);
+  const double axis = cpu_seconds() - t;
   const ClipStats& s = a.stats;
-  return {rt,
+  std::vector<double> v = {rt,
           axis,
           double(a.complex.vertices.size()),
           double(a.complex.triangles.size()),
@@ -51,6 +55,8 @@ std::vector<double> measure(std::size_t n) {
           a.triangulation_seconds,
           double(a.tetrahedra_candidates),
           double(a.voronoi_cells)};
+  for (const auto& stage : a.stage_seconds) v.push_back(stage.second);  // the profile, CPU seconds
+  return v;
 }
 
 }  // namespace
@@ -67,6 +73,9 @@ int main(int argc, char** argv) {
                 "sign tests %.0f (filter %.0f, structural %.0f, exact %.0f), max coordinate error %.3g, "
                 "triangulation inside the axis %.3f s, candidates per tetrahedron %.1f, cells clipped per tetrahedron %.1f\n",
                 n, v[4], v[5], v[6], v[7], v[8], v[9], v[10], v[11], v[12], v[13], v[14], v[15] / v[5], v[16] / v[5]);
+    std::printf("# n=%zu profile (CPU s):", n);
+    for (std::size_t k = 0; k < kStages.size(); ++k) std::printf(" %s %.3f;", kStages[k], v[17 + k]);
+    std::printf("\n");
     std::fflush(stdout);
   }
   return 0;

@@ -1,4 +1,6 @@
-// grassfire complex / medial3d --complex / burn3d with JSON complexes, sources, queries, CSV.
+// grassfire complex / medial3d --complex / burn3d with JSON complexes, sources, queries, CSV;
+// burn3d --method exact: closed-form values with certified errors, the certification
+// counts, the discrete baseline as an upper bound, clean refusals.
 #include <catch2/catch.hpp>
 
 #include <cmath>
@@ -151,7 +153,7 @@ TEST_CASE("grassfire burn3d: bad sources, queries and complexes fail cleanly, wi
   check_fails("tetrahedron --sources " + sources + " --at " + at, sources + ":2: 3 fields where 'x,y,z,t0' has 4");
   write_text(sources, "");
   check_fails("tetrahedron --sources " + sources + " --at " + at, sources + ": no header line");
-  check_fails("tetrahedron --at " + at + " --method exact", "method 'exact' is not available yet");
+  check_fails("board-fin --at " + at + " --method exact", "board-fin: method 'exact' cannot burn this complex yet");
   check_fails(std::string(GF_TEST_DATA) + "/3d/bad_complex_index.json --at " + at,
               "bad_complex_index.json: triangles[0][2]: vertex index 7 is out of range");
   check_fails(std::string(GF_TEST_DATA) + "/3d/bad_complex_degenerate.json --at " + at, "bad_complex_degenerate.json");
@@ -164,5 +166,118 @@ TEST_CASE("grassfire burn3d: bad sources, queries and complexes fail cleanly, wi
   CHECK(unwritable.code == 1);
   CHECK_THAT(unwritable.output, Catch::Contains(missing_dir));
   CHECK_FALSE(exists(missing_dir + ".partial"));
+  for (const std::string& p : {sources, at}) std::remove(p.c_str());
+}
+
+TEST_CASE("grassfire burn3d --method exact --singular-walls: the board and fin with N as a wall", "[cli][exact3]") {
+  // Part 1's semantics: fire stops at the singular curve N (x = y, z = 0). Closed forms
+  // (4.2.1 before any junction rule): on the fin sqrt 2 (x - 1); on the back of the board
+  // y; on the front, past the corner c = (1, 1, 0), 1 + |p - c|.
+  const std::string at = temp_path("gf_walls_at.csv"), csv = temp_path("gf_walls.csv"),
+                    json = temp_path("gf_walls.json");
+  write_text(at, "x,y,z\n3,3,1\n4,2,0\n2,4,0\n");
+  const testing::CliRun r =
+      run_cli("burn3d board-fin --method exact --singular-walls --at " + at + " --csv " + csv + " --json " + json);
+  INFO(r.output);
+  REQUIRE(r.code == 0);
+  CHECK_THAT(r.output, Catch::Contains("singular edges burned as walls, not Definition 9"));
+  const auto rows = csv_rows(slurp(csv));
+  REQUIRE(rows.size() == 4);
+  const double expected[] = {2 * std::sqrt(2.0), 2.0, 1 + std::sqrt(10.0)};
+  for (int i = 0; i < 3; ++i) {
+    CAPTURE(i);
+    CHECK(std::fabs(std::stod(rows[i + 1][3]) - expected[i]) <= std::stod(rows[i + 1][4]) + 1e-15);
+    CHECK(std::stod(rows[i + 1][4]) < 1e-10);
+  }
+  const nlohmann::json j = nlohmann::json::parse(slurp(json));
+  CHECK(j["stats"]["uncertified"] == 0);
+  CHECK_THAT(j["stats"]["singular_edges"].get<std::string>(), Catch::Contains("walls"));
+  // Without the flag the same run is refused, and the flag needs the exact method.
+  const testing::CliRun refused = run_cli("burn3d board-fin --method exact");
+  CHECK(refused.code == 1);
+  CHECK_THAT(refused.output, Catch::Contains("--singular-walls"));
+  const testing::CliRun discrete = run_cli("burn3d board-fin --singular-walls");
+  CHECK(discrete.code == 1);
+  CHECK_THAT(discrete.output, Catch::Contains("--singular-walls needs --method exact"));
+  for (const std::string& p : {at, csv, json}) std::remove(p.c_str());
+}
+
+TEST_CASE("grassfire burn3d --method exact: the cube's geodesic distances, certified", "[cli][exact3]") {
+  const std::string sources = temp_path("gf_exact_sources.csv"), at = temp_path("gf_exact_at.csv"),
+                    csv = temp_path("gf_exact_bt.csv"), json = temp_path("gf_exact.json"),
+                    dcsv = temp_path("gf_exact_discrete.csv"), djson = temp_path("gf_exact_discrete.json");
+  // The cube [-1, 1]^3: the centre of the top face ignites at 0, the corner (1, 1, 1) at 1/2.
+  write_text(sources, "x,y,z,t0\n0,0,1,0\n1,1,1,0.5\n");
+  write_text(at, "x,y,z\n0,0,-1\n1,0,0\n0.5,0.5,1\n5,5,5\n");
+  const std::string args = std::string(GF_PROJECT_DATA) + "/meshes/cube.off" + " --mesh-is-complex --sources " + sources + " --at " + at;
+  testing::CliRun r = run_cli("burn3d " + args + " --method exact --csv " + csv + " --json " + json);
+  INFO(r.output);
+  REQUIRE(r.code == 0);
+  // Unfolded by hand: the bottom centre is sqrt(10) from the corner (over the face x = 1)
+  // and 4 from the top centre; (1, 0, 0) is 2 from the top centre, sqrt(2) from the corner.
+  const double expected[] = {0.5 + std::sqrt(10.0), 0.5 + std::sqrt(2.0), std::sqrt(0.5), 0.5};
+  const auto rows = csv_rows(slurp(csv));
+  REQUIRE(rows.size() == 5);
+  for (int i = 0; i < 4; ++i) {
+    INFO("query " << i);
+    const double bt = std::stod(rows[i + 1][3]), err = std::stod(rows[i + 1][4]);
+    CHECK(std::fabs(bt - expected[i]) <= err + 1e-15);
+    CHECK(err < 1e-12);
+  }
+  CHECK(rows[4][5] != "0");  // (5, 5, 5) snaps to the corner
+  const nlohmann::json j = nlohmann::json::parse(slurp(json));
+  CHECK(j["method"] == "exact");
+  CHECK(j["stats"]["uncertified"] == 0);
+  CHECK(j["stats"]["certification"]["filter"].get<long>() > 0);
+  for (const char* key : {"exact", "arb", "exact_equal", "structural_equal", "kept_undecided", "max_bits"})
+    CHECK(j["stats"]["certification"].contains(key));
+  const auto& bt = j["vertex_values"]["BT"];
+  const auto& err = j["vertex_values"]["BT_error"];
+  REQUIRE(bt.size() == 8);
+  REQUIRE(err.size() == 8);
+  // The discrete baseline is an upper bound of the exact BT at every vertex and query.
+  r = run_cli("burn3d " + args + " --spacing 0.05 --csv " + dcsv + " --json " + djson);
+  REQUIRE(r.code == 0);
+  const nlohmann::json d = nlohmann::json::parse(slurp(djson));
+  CHECK_FALSE(d["vertex_values"].contains("BT_error"));
+  for (std::size_t v = 0; v < 8; ++v) {
+    const double e = bt[v].get<double>(), de = err[v].get<double>(), dv = d["vertex_values"]["BT"][v].get<double>();
+    CHECK(dv >= e - de);
+    CHECK(dv <= e + 0.05);
+    if (v == 6) CHECK(std::fabs(e - 0.5) <= de);  // the corner source (1, 1, 1)
+  }
+  const auto drows = csv_rows(slurp(dcsv));
+  for (int i = 1; i <= 4; ++i) CHECK(std::stod(drows[i][3]) >= std::stod(rows[i][3]) - std::stod(rows[i][4]));
+  for (const std::string& p : {sources, at, csv, json, dcsv, djson}) std::remove(p.c_str());
+}
+
+TEST_CASE("grassfire burn3d --method exact: a hinge with a hair, and clean refusals", "[cli][exact3]") {
+  const std::string hinge = std::string(GF_TEST_DATA) + "/3d/hinge.json";
+  const std::string sources = temp_path("gf_exact_bad_sources.csv"), at = temp_path("gf_exact_hinge_at.csv"),
+                    csv = temp_path("gf_exact_hinge.csv"), json = temp_path("gf_exact_hinge.json");
+  // The hair [(2,0,0), (3,0,0)] burns from its free end (f = R = 0 there) and from the
+  // hinge's vertex (2,0,0), which burns at R = 1/2: BT(2.5, 0, 0) = 1/2 from both ends.
+  write_text(at, "x,y,z\n3,0,0\n2.5,0,0\n2.75,0,0\n");
+  testing::CliRun r = run_cli("burn3d " + hinge + " --method exact --at " + at + " --csv " + csv);
+  INFO(r.output);
+  REQUIRE(r.code == 0);
+  const auto rows = csv_rows(slurp(csv));
+  REQUIRE(rows.size() == 4);
+  const double expected[] = {0.0, 0.5, 0.25};
+  for (int i = 0; i < 3; ++i) CHECK(std::fabs(std::stod(rows[i + 1][3]) - expected[i]) <= std::stod(rows[i + 1][4]));
+  const auto check_fails = [&](const std::string& args, const std::string& message) {
+    std::remove(csv.c_str());
+    std::remove(json.c_str());
+    const testing::CliRun f = run_cli("burn3d " + args + " --method exact --at " + at + " --csv " + csv + " --json " + json);
+    INFO(f.output);
+    CHECK(f.code == 1);
+    CHECK_THAT(f.output, Catch::Contains(message));
+    CHECK_FALSE(exists(csv));
+    CHECK_FALSE(exists(json));
+  };
+  check_fails("board-fin", "board-fin: method 'exact' cannot burn this complex yet: it has 11 singular edges");
+  check_fails("double-cone", "double-cone: method 'exact' cannot burn this complex yet: it has 1 singular point where");
+  write_text(sources, "x,y,z,t0\n2.5,0,0,0\n");
+  check_fails(hinge + " --sources " + sources, "hinge.json: source 1: a point source inside a segment (edge 5)");
   for (const std::string& p : {sources, at}) std::remove(p.c_str());
 }

@@ -275,3 +275,40 @@ TEST_CASE("every shape of data/shapes2d: exact axis valid by definition, engine 
   }
   CHECK(shapes >= 100);
 }
+
+TEST_CASE("a strip with teeth off the decimal grid (CGAL path): a finite EMA equal to the decimal one", "[exact2d]") {
+  // Fig. 5.3's strip (length 4, half thickness 0.01, 20 teeth of height 0.1 on its left
+  // half), once with coordinates computed as j * 0.1 / 2 and 0.1 - 0.01 in doubles (not the
+  // doubles nearest to decimals: CGAL's segment Delaunay graph), once in thousandths (the
+  // decimal grid: Boost.Polygon). The EMA inside an edge had an offset of [-inf, inf] on
+  // the CGAL path (a NaN position); both must now give the same finite point.
+  auto strip = [](bool decimal) {
+    std::vector<Point2> ring;
+    auto x = [&](int j) { return decimal ? j * 50 / 1000.0 : j * 0.1 / 2; };
+    auto y = [&](int j, int side) { return decimal ? ((j % 2) * 100 + side * 10) / 1000.0 : (j % 2) * 0.1 + side * 0.01; };
+    for (int j = 0; j <= 40; ++j) ring.push_back({x(j), y(j, -1)});
+    ring.push_back({4, -0.01});
+    ring.push_back({4, 0.01});
+    for (int j = 40; j >= 0; --j) ring.push_back({x(j), y(j, 1)});
+    return polygon({ring}, decimal ? "teeth (decimal)" : "teeth (doubles)");
+  };
+  Point2 ema[2];
+  for (int decimal = 0; decimal < 2; ++decimal) {
+    PolygonAxisReport rep;
+    const MedialGraph g = exact_polygon_axis(strip(decimal), {}, &rep);
+    CHECK(rep.construction == (decimal ? AxisConstruction::BoostPolygon : AxisConstruction::CgalSdg));
+    const GrassfireResult r = extended_grassfire(g);
+    REQUIRE(r.ema.size() == 1);
+    const GraphPoint& p = r.ema[0].point;
+    if (!p.at_node) {
+      INFO("offset [" << p.offset.lo << ", " << p.offset.hi << "]");
+      CHECK(p.offset.hi - p.offset.lo < 1e-9);
+    }
+    ema[decimal] = position_of(g, p);
+    REQUIRE(std::isfinite(ema[decimal].x));
+    REQUIRE(std::isfinite(ema[decimal].y));
+  }
+  CHECK(std::hypot(ema[0].x - ema[1].x, ema[0].y - ema[1].y) < 1e-9);
+  CHECK(ema[0].x > 1.4);  // the teeth pull the EMA left of the strip's centre (x = 2)
+  CHECK(ema[0].x < 1.6);
+}

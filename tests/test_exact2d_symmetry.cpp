@@ -364,3 +364,27 @@ TEST_CASE("pieces of one bisector through a collinear vertex: joined lengths, en
   const GrassfireResult r = extended_grassfire(g);
   require_equal_to_definition(g, r, edf_by_definition(g));
 }
+
+TEST_CASE("no uncertified decision on wavy circles that had 45 or more (issue 11)", "[symmetry]") {
+  // The wavy circle of bench_polygon_axis, r(t) = 1000 (1 + 0.1 sin(7t + phase)) at 2000
+  // integer vertices: with phase 0 it is mirror-symmetric (thousands of ties proved by
+  // class), with phase 0.3 generic (ties between unrelated sums of radicals and arcs).
+  // Before exact PSS circles and proved equality of certified constants, each left 45-46
+  // ties uncertified.
+  for (double phase : {0.0, 0.3}) {
+    std::vector<Point2> ring;
+    for (int k = 0; k < 2000; ++k) {
+      const double t = 2 * M_PI * k / 2000, r = 1000 * (1 + 0.1 * std::sin(7 * t + phase));
+      ring.push_back({std::round(r * std::cos(t)), std::round(r * std::sin(t))});
+    }
+    PolygonAxisReport rep;
+    const MedialGraph g = exact_polygon_axis(polygon(ring, "wavy 2000"), {}, &rep);
+    const GrassfireResult r = extended_grassfire(g);
+    INFO("phase " << phase);
+    CHECK(rep.uncertified_contractions == 0);
+    CHECK(r.stats().uncertified_zero == 0);
+    // Thousands of exact ties, most proved by exact forms rather than by value classes.
+    CHECK(r.stats().exact_zero > 2 * r.stats().class_zero + 1000);
+    CHECK(r.times.uncertified_pairs().empty());
+  }
+}

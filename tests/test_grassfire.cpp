@@ -122,3 +122,67 @@ TEST_CASE("the engine equals the definition on random trees and graphs with cycl
   CHECK(with_cycles > 200);
   CHECK(edge_quenches > 300);
 }
+
+namespace {
+
+// g with edge e split into 1 + (e + seed) % 4 equal pieces by new degree-2 nodes (R = 1/2:
+// R at a degree-2 node never enters a burn time), so long chains with exact ties inside
+// them appear: the engine runs its queue over stops only (medial2/medial_chains.h).
+MedialGraph subdivided(const MedialGraph& g, std::uint64_t seed) {
+  std::vector<Point2> positions;
+  std::vector<ExactSum> radii;
+  for (std::uint32_t v = 0; v < g.node_count(); ++v) {
+    positions.push_back(g.node(v).position);
+    radii.push_back(g.geometry().exact_radius(v));
+  }
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> ends;
+  std::vector<ExactSum> lengths;
+  for (std::uint32_t e = 0; e < g.edge_count(); ++e) {
+    const std::uint32_t pieces = 1 + static_cast<std::uint32_t>((e + seed) % 4);
+    ExactSum piece = g.geometry().exact_length(e);
+    piece.scale(mpq_class(1, pieces));
+    std::uint32_t from = g.edge(e).u;
+    const Point2 a = g.node(g.edge(e).u).position, b = g.node(g.edge(e).v).position;
+    for (std::uint32_t k = 1; k <= pieces; ++k) {
+      std::uint32_t to = g.edge(e).v;
+      if (k < pieces) {
+        to = static_cast<std::uint32_t>(positions.size());
+        const double t = static_cast<double>(k) / pieces;
+        positions.push_back({a.x + t * (b.x - a.x), a.y + t * (b.y - a.y)});
+        radii.push_back(ExactSum::rational(mpq_class(1, 2)));
+      }
+      ends.emplace_back(from, to);
+      lengths.push_back(piece);
+      from = to;
+    }
+  }
+  return MedialGraph::from_exact(std::move(positions), std::move(radii), std::move(ends), std::move(lengths));
+}
+
+}  // namespace
+
+TEST_CASE("chains of degree-2 nodes: subdividing edges changes no EDF and engine = definition", "[grassfire][oracle]") {
+  int graphs = 0, chain_quenches = 0;
+  for (std::uint64_t seed = 0; seed < 400; ++seed) {
+    const SyntheticFamily family = seed % 2 ? SyntheticFamily::Geometric : SyntheticFamily::Integer;
+    const MedialGraph g = random_medial_graph(seed, 2 + static_cast<std::uint32_t>(seed % 23),
+                                              seed % 5 == 0 ? 1 : 0, family);
+    const MedialGraph h = subdivided(g, seed);
+    h.validate();
+    const GrassfireResult rg = extended_grassfire(g), rh = extended_grassfire(h);
+    INFO("seed " << seed);
+    require_equal_to_definition(h, rh, edf_by_definition(h));
+    for (std::uint32_t v = 0; v < g.node_count(); ++v) {
+      REQUIRE(rg.is_infinite(v) == rh.is_infinite(v));
+      if (!rg.is_infinite(v)) REQUIRE(sign(rg.times.exact(rg.burn[v]) - rh.times.exact(rh.burn[v])) == 0);
+    }
+    for (std::size_t k = 1; k < rh.events.size(); ++k)
+      REQUIRE(compare(event_time(rh, rh.events[k - 1]), event_time(rh, rh.events[k]), h) <= 0);
+    for (const ExtendedMedialAxis& e : rh.ema)
+      chain_quenches += e.kind == ExtendedMedialAxis::Kind::Point &&
+                        (e.point.at_node ? h.degree(e.point.node) == 2 : true);
+    ++graphs;
+  }
+  CHECK(graphs == 400);
+  CHECK(chain_quenches > 100);
+}

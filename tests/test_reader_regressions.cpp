@@ -128,3 +128,21 @@ TEST_CASE("regression: a ball coordinate beyond the range of doubles crashed the
   CHECK(error_of([] { parse_ball_list("0 0 0 1e309\n", "far.cin"); }) == "far.cin:1: '1e309' is beyond the range of doubles");
   CHECK(parse_ball_list("0 0 0 1.7976931348623157e308\n", "edge.cin").centers.size() == 1);
 }
+
+TEST_CASE("regression: half-spaces near the range of doubles gave an internal error in the convex axis", "[fuzz]") {
+  // Before: with an offset of 1e308 the double enclosures of the cell predicates overflowed to
+  // infinities and NaN, which the filter took as decided ("a facet cell reaches the bounding
+  // box"). Now such an enclosure decides nothing and the exact fallback does. A box that long
+  // has the combinatorics of any long box: compare with one of length 10^6.
+  const auto box = [](const std::string& far) {
+    return "1 0 0 1\n-1 0 0 1\n0 1 0 1\n0 -1 0 1\n0 0 1 " + far + "\n0 0 -1 1\n";
+  };
+  const ConvexAxis reference = convex_polyhedron_axis(parse_halfspaces(box("1e6"), "long.hs"));
+  for (const std::string far : {"1e300", "1e308", "1.7976931348623157e308"}) {
+    CAPTURE(far);
+    const ConvexAxis a = convex_polyhedron_axis(parse_halfspaces(box(far), "far.hs"));
+    CHECK(a.complex.vertices.size() == reference.complex.vertices.size());
+    CHECK(a.complex.triangles.size() == reference.complex.triangles.size());
+    CHECK(check_convex_axis(a).failures == 0);
+  }
+}

@@ -3,6 +3,7 @@
 
 #include "number/mpfr_bounds.h"
 
+#include <algorithm>
 #include <stdexcept>
 
 namespace grassfire {
@@ -85,6 +86,13 @@ TimeId BurnTimes::advance(TimeId from, std::uint32_t edge) {
   const Record next{r.value + graph_->edge(edge).length, from, edge, r.depth + 1};
   records_.push_back(next);
   return static_cast<TimeId>(records_.size() - 1);
+}
+
+TimeId BurnTimes::advance(TimeId from, std::uint32_t edge, const Interval& enclosure) {
+  const TimeId t = advance(from, edge);
+  Interval& v = records_[t].value;
+  v = {std::max(v.lo, enclosure.lo), std::min(v.hi, enclosure.hi)};
+  return t;
 }
 
 ExactSum BurnTimes::exact(TimeId t) const {
@@ -185,6 +193,7 @@ int BurnTimes::exact_sign(GraphSum d, TimeId a, TimeId b) const {
   } else {
     const std::uint64_t uncertified = stats_.uncertified_zero;
     s = sign(d.exact(*graph_), &stats_);
+    if (stats_.uncertified_zero != uncertified) uncertified_pairs_.emplace_back(a, b);
     if (s != 0 || stats_.uncertified_zero != uncertified) return s;
   }
   const std::uint32_t ca = value_class(a), cb = value_class(b);

@@ -34,6 +34,7 @@
 #include <cstdint>
 #include <memory>
 #include <unordered_map>
+#include <utility>
 #include <vector>
 
 #include "burn2/graph_sum.h"
@@ -54,6 +55,10 @@ class BurnTimes {
 
   TimeId ignition(std::uint32_t leaf);
   TimeId advance(TimeId from, std::uint32_t edge);
+  // The same record, with its enclosure intersected with `enclosure`, another certified
+  // enclosure of the same value (from a compensated sum along a chain of edges, which
+  // does not widen with the chain's length: number/compensated_sum.h).
+  TimeId advance(TimeId from, std::uint32_t edge, const Interval& enclosure);
 
   const Interval& approx(TimeId t) const { return records_[t].value; }
   // The exact value, as R(leaf) + the lengths of the edges on the chain.
@@ -70,8 +75,12 @@ class BurnTimes {
 
   std::size_t size() const { return records_.size(); }
   const NumberStats& stats() const { return stats_; }
+  // The pairs (a, b) whose comparison ended as an uncertified zero (reported, never hidden).
+  const std::vector<std::pair<TimeId, TimeId>>& uncertified_pairs() const { return uncertified_pairs_; }
   // Counts a comparison that the caller decided from the enclosures alone.
   void count_filter_decision() const { ++stats_.filter_decided; }
+  // Adds the counts of comparisons the caller made of sums of these times.
+  void count(const NumberStats& s) const { stats_.merge(s); }
   const MedialGraph& graph() const { return *graph_; }
 
  private:
@@ -99,6 +108,7 @@ class BurnTimes {
   const MedialGraph* graph_;
   std::vector<Record> records_;
   mutable NumberStats stats_;
+  mutable std::vector<std::pair<TimeId, TimeId>> uncertified_pairs_;
   mutable std::vector<std::unique_ptr<Refined>> refined_;  // by TimeId, filled on demand
   mutable std::vector<LongInterval> long_;                  // by TimeId, filled on demand
   mutable std::vector<std::uint8_t> has_long_;

@@ -1,5 +1,6 @@
-// extended_grassfire.cpp -- the arrival-ordered event simulation (Exact variant).
-// The Dissertation variant lives in dissertation_thinning.cpp.
+// extended_grassfire.cpp -- the arrival-ordered event simulation (Exact variant), over
+// the stops of the graph; the fronts inside chains are in chain_fronts.cpp, the
+// Dissertation variant in dissertation_thinning.cpp.
 #include "burn2/extended_grassfire.h"
 
 #include <algorithm>
@@ -7,7 +8,9 @@
 #include <stdexcept>
 #include <string>
 
+#include "burn2/chain_fronts.h"
 #include "burn2/ema.h"
+#include "medial2/medial_chains.h"
 
 namespace grassfire {
 
@@ -17,19 +20,26 @@ namespace {
 
 constexpr std::uint32_t kIgnition = 0xffffffffu;  // edge field of an ignition event
 
-// A front reaching `node` along `edge` at `time`, or the ignition of a leaf.
+// A front reaching stop `node` along chain end `end` (its edge `edge`) at `time`, or the
+// ignition of a leaf.
 struct Arrival {
   Interval value;
   TimeId time;
   std::uint32_t node;
   std::uint32_t edge;
+  std::uint32_t end;
 };
 
+// The event simulation runs over the stops (leaves, junctions, isolated nodes) and treats
+// every chain of degree-2 nodes as one edge (medial2/medial_chains.h): a degree-2 node
+// burns at its first arrival and passes the fire on, so nothing inside a chain changes
+// the order of events at stops; chain_fronts.h fills in the chains afterwards.
 class EventSimulation {
  public:
   explicit EventSimulation(const MedialGraph& g)
-      : g_(g), result_(g), queue_(Later{this}), arrived_(g.node_count(), 0), edge_arrived_(g.edge_count(), 0),
-        pending_(g.edge_count(), kNoTime) {
+      : g_(g), chains_(medial_chains(g)), result_(g), fronts_(g, chains_, result_), queue_(Later{this}),
+        arrived_(g.node_count(), 0), end_arrived_(2 * std::size_t{chains_.count()}, 0),
+        sent_(2 * std::size_t{chains_.count()}, kNoTime), sent_rank_(2 * std::size_t{chains_.count()}) {
     result_.variant = GrassfireVariant::Exact;
     result_.burn.assign(g.node_count(), kNoTime);
     result_.fire.assign(g.edge_count(), EdgeFire{});
@@ -37,10 +47,10 @@ class EventSimulation {
 
   GrassfireResult run() {
     for (std::uint32_t v = 0; v < g_.node_count(); ++v)
-      if (g_.degree(v) <= 1) push(result_.times.ignition(v), v, kIgnition);
+      if (g_.degree(v) <= 1) push(result_.times.ignition(v), v, kIgnition, 0);
     // Every pop retires one pushed event; at most one ignition per node and one
-    // arrival per edge end are ever pushed.
-    const std::uint64_t bound = std::uint64_t{g_.node_count()} + 2ull * g_.edge_count();
+    // arrival per chain end are ever pushed.
+    const std::uint64_t bound = std::uint64_t{g_.node_count()} + 2ull * chains_.count();
     std::uint64_t steps = 0;
     while (!queue_.empty()) {
       if (++steps > bound) throw std::logic_error("extended grassfire: event bound exceeded");
@@ -51,7 +61,9 @@ class EventSimulation {
       else
         arrive(a);
     }
-    place_edge_quenches_in_time_order();
+    for (std::uint32_t c = 0; c < chains_.count(); ++c)
+      fronts_.resolve(c, &sent_[2 * c], &sent_rank_[2 * c], quenches_, chain_quench_events_);
+    place_chain_quenches_in_time_order();
     assign_extended_medial_axis(g_, result_, quenches_);
     return std::move(result_);
   }
@@ -77,8 +89,8 @@ class EventSimulation {
     }
   };
 
-  void push(TimeId t, std::uint32_t node, std::uint32_t edge) {
-    queue_.push({result_.times.approx(t), t, node, edge});
+  void push(TimeId t, std::uint32_t node, std::uint32_t edge, std::uint32_t end) {
+    queue_.push({result_.times.approx(t), t, node, edge, end});
   }
 
   void ignite(const Arrival& a) {
@@ -92,87 +104,72 @@ class EventSimulation {
     }
     std::uint32_t edge = 0;
     g_.for_each_incident(z, [&](std::uint32_t e) { edge = e; });
-    fire_into(z, edge, a.time);
+    fire_into(chains_.end_at(z, edge), a.time, EventRank{true, z, kIgnition});
   }
 
   void arrive(const Arrival& a) {
-    const std::uint32_t j = a.node, e = a.edge;
-    if (sent_from(e, j) != kNoTime) return;  // j already sent fire into e: the fronts quenched
+    const std::uint32_t j = a.node;
+    if (sent_[a.end] != kNoTime) return;  // j already sent fire into this chain: the fronts quench in it
     if (g_.degree(j) == 1)
       throw std::logic_error("extended grassfire: a front reaches leaf " + std::to_string(j) +
-                             " before it ignites; R is not 1-Lipschitz along edge " + std::to_string(e));
-    edge_arrived_[e] |= (g_.edge(e).u == j) ? 1 : 2;
+                             " before it ignites; R is not 1-Lipschitz along edge " + std::to_string(a.edge));
+    end_arrived_[a.end] = 1;
     const std::uint32_t count = ++arrived_[j];
     if (count + 1 < g_.degree(j)) {
       result_.events.push_back({BurnEventType::Annihilate, a.value, node_point(j), a.time});
       return;
     }
     result_.burn[j] = a.time;
-    fire_into(j, remaining_edge(j), a.time);
+    fire_into(remaining_end(j), a.time, EventRank{false, j, a.edge});
   }
 
-  // The one incident edge of j along which no front has arrived.
-  std::uint32_t remaining_edge(std::uint32_t j) const {
+  // The one chain end at stop j along which no front has arrived.
+  std::uint32_t remaining_end(std::uint32_t j) const {
     std::uint32_t found = kIgnition;
     g_.for_each_incident(j, [&](std::uint32_t e) {
-      const std::uint8_t bit = (g_.edge(e).u == j) ? 1 : 2;
-      if (!(edge_arrived_[e] & bit)) found = e;
+      const std::uint32_t end = chains_.end_at(j, e);
+      if (!end_arrived_[end]) found = end;
     });
     if (found == kIgnition) throw std::logic_error("extended grassfire: node without a remaining edge");
     return found;
   }
 
-  TimeId& sent_from(std::uint32_t e, std::uint32_t v) {
-    return g_.edge(e).u == v ? result_.fire[e].from_u : result_.fire[e].from_v;
+  // Stop `end`'s node sends fire into its chain at t. The front runs to the other stop
+  // unless that stop already sent fire into the chain (then they quench inside it).
+  void fire_into(std::uint32_t end, TimeId t, EventRank rank) {
+    sent_[end] = t;
+    sent_rank_[end] = rank;
+    const std::uint32_t other = end ^ 1u;
+    if (sent_[other] != kNoTime) return;
+    const TimeId arrival = fronts_.run(end, t);
+    const std::uint32_t c = end >> 1;
+    const std::uint32_t last = other & 1 ? chains_.edge(c, chains_.length(c)) : chains_.edge(c, 1);
+    push(arrival, chains_.stop(other), last, other);
   }
 
-  void fire_into(std::uint32_t j, std::uint32_t e, TimeId t) {
-    sent_from(e, j) = t;
-    const std::uint32_t k = g_.other_end(e, j);
-    const TimeId from_k = sent_from(e, k);
-    if (from_k == kNoTime) {
-      pending_[e] = result_.times.advance(t, e);
-      push(pending_[e], k, e);
-      return;
-    }
-    quench_in_edge(e, k, from_k, j, t);
-  }
-
-  // Fronts from k (sent at tk) and j (sent at tj >= tk) meet on edge e, at distance
-  // (w + tj - tk) / 2 from k; exactly at j when tj equals the arrival tk + w.
-  void quench_in_edge(std::uint32_t e, std::uint32_t k, TimeId tk, std::uint32_t j, TimeId tj) {
-    const BurnTimes& times = result_.times;
-    const Interval w = g_.edge(e).length;
-    const Interval value = half(times.approx(tk) + times.approx(tj) + w);
-    GraphPoint place;
-    TimeId sent_from = kNoTime, sent_other = kNoTime;
-    if (times.compare(tj, pending_[e]) == 0) {
-      place = node_point(j);
-    } else {
-      sent_from = tk;
-      sent_other = tj;
-      place.at_node = false;
-      place.edge = e;
-      place.from = k;
-      place.offset = half(w + times.approx(tj) - times.approx(tk));
-    }
-    quenches_.push_back({place, value, sent_from, sent_other});
-    result_.events.push_back({BurnEventType::Quench, value, place, place.at_node ? tj : kNoTime});
-  }
-
-  // A quench inside an edge is logged when the second front enters the edge, but happens
-  // later, when the fronts meet: move it forward past every event that is not later
-  // (certified comparisons; at equal times the quench comes last).
-  void place_edge_quenches_in_time_order() {
+  // The quenches inside chains are found after the event loop: insert each into the log
+  // after every event that is not later (certified comparisons; the log is in time order).
+  void place_chain_quenches_in_time_order() {
     std::vector<BurnEvent>& ev = result_.events;
-    for (std::size_t i = ev.size(); i-- > 0;) {
-      if (ev[i].type != BurnEventType::Quench || ev[i].place.at_node) continue;
-      const GraphSum when = event_time(result_, ev[i]);
-      std::size_t k = i;
-      while (k + 1 < ev.size() && !(ev[i].time.hi < ev[k + 1].time.lo) &&
-             compare(event_time(result_, ev[k + 1]), when, g_) <= 0)
-        ++k;
-      std::rotate(ev.begin() + i, ev.begin() + i + 1, ev.begin() + k + 1);
+    for (const BurnEvent& q : chain_quench_events_) {
+      const GraphSum when = event_time(result_, q);
+      auto not_later = [&](const BurnEvent& e) {
+        if (e.time.hi < q.time.lo) return true;
+        if (q.time.hi < e.time.lo) return false;
+        NumberStats st;
+        const bool not_later = compare(event_time(result_, e), when, g_, &st) <= 0;
+        result_.times.count(st);
+        return not_later;
+      };
+      std::size_t lo = 0, hi = ev.size();
+      while (lo < hi) {
+        const std::size_t mid = lo + (hi - lo) / 2;
+        if (not_later(ev[mid]))
+          lo = mid + 1;
+        else
+          hi = mid;
+      }
+      ev.insert(ev.begin() + static_cast<std::ptrdiff_t>(lo), q);
     }
   }
 
@@ -183,12 +180,16 @@ class EventSimulation {
   }
 
   const MedialGraph& g_;
+  const MedialChains chains_;
   GrassfireResult result_;
+  ChainFronts fronts_;
   std::priority_queue<Arrival, std::vector<Arrival>, Later> queue_;
   std::vector<std::uint32_t> arrived_;
-  std::vector<std::uint8_t> edge_arrived_;  // bit 1: arrived at u, bit 2: arrived at v
-  std::vector<TimeId> pending_;             // time of the front travelling along each edge
+  std::vector<std::uint8_t> end_arrived_;  // per chain end: a front arrived at its stop
+  std::vector<TimeId> sent_;               // per chain end: when its stop sent fire into the chain
+  std::vector<EventRank> sent_rank_;       // the queue rank of the event that made it send
   std::vector<QuenchRecord> quenches_;
+  std::vector<BurnEvent> chain_quench_events_;
   mutable std::uint64_t ties_ = 0;
 
  public:

@@ -38,12 +38,15 @@ class GraphSum {
   void cancel(const MedialGraph& g);
   bool empty() const { return atoms_.empty(); }
 
- private:
   struct Atom {
     std::uint32_t id;
     bool is_edge;
     std::int64_t coef;
   };
+  const std::vector<Atom>& atoms() const { return atoms_; }
+  std::int64_t denominator() const { return denominator_; }
+
+ private:
   GraphSum& add(std::uint32_t id, bool is_edge, std::int64_t coef);
   void rescale_to(std::int64_t denominator);
 

@@ -44,30 +44,39 @@ std::optional<std::string> check_cells(const std::vector<std::array<std::uint32_
 
 }  // namespace
 
-std::optional<std::string> first_raw_violation(const RawComplex& raw) {
-  const std::size_t n = raw.vertices.size();
+std::optional<std::string> first_raw_violation(const FilteredPoints& points,
+                                               const std::function<const mpq_class&(std::size_t)>& radius_squared,
+                                               std::size_t radius_count,
+                                               const std::vector<std::array<std::uint32_t, 3>>& triangles,
+                                               const std::vector<std::array<std::uint32_t, 2>>& segments) {
+  const std::size_t n = points.size();
   if (n == 0) return std::string("empty complex (no vertices)");
-  if (raw.radius_squared.size() != n)
-    return "radius_squared has " + std::to_string(raw.radius_squared.size()) + " entries for " + std::to_string(n) +
-           " vertices";
+  if (radius_count != n)
+    return "radius_squared has " + std::to_string(radius_count) + " entries for " + std::to_string(n) + " vertices";
   for (std::size_t v = 0; v < n; ++v)
-    if (sgn(raw.radius_squared[v]) < 0) return "vertex " + std::to_string(v) + " has R^2 < 0";
-  if (auto p = check_cells(raw.triangles, n, "triangle")) return p;
-  if (auto p = check_cells(raw.segments, n, "segment")) return p;
-  std::vector<std::size_t> order(n);
-  std::iota(order.begin(), order.end(), std::size_t{0});
-  std::sort(order.begin(), order.end(),
-            [&](std::size_t a, std::size_t b) { return compare_lex(raw.vertices[a], raw.vertices[b]) < 0; });
+    if (sgn(radius_squared(v)) < 0) return "vertex " + std::to_string(v) + " has R^2 < 0";
+  if (auto p = check_cells(triangles, n, "triangle")) return p;
+  if (auto p = check_cells(segments, n, "segment")) return p;
+  std::vector<std::uint32_t> order(n);
+  std::iota(order.begin(), order.end(), 0u);
+  std::sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) { return points.compare_lex(a, b) < 0; });
   for (std::size_t i = 0; i + 1 < n; ++i)
-    if (compare_lex(raw.vertices[order[i]], raw.vertices[order[i + 1]]) == 0)
+    if (points.compare_lex(order[i], order[i + 1]) == 0)
       return "vertices " + std::to_string(std::min(order[i], order[i + 1])) + " and " +
-             std::to_string(std::max(order[i], order[i + 1])) + " coincide at " + point_text(raw.vertices[order[i]]);
-  for (std::size_t t = 0; t < raw.triangles.size(); ++t) {
-    const auto& tv = raw.triangles[t];
-    if (collinear(raw.vertices[tv[0]], raw.vertices[tv[1]], raw.vertices[tv[2]]))
+             std::to_string(std::max(order[i], order[i + 1])) + " coincide at " + point_text(points.exact(order[i]));
+  for (std::size_t t = 0; t < triangles.size(); ++t) {
+    const auto& tv = triangles[t];
+    if (points.collinear(tv[0], tv[1], tv[2]))
       return "triangle " + std::to_string(t) + " is degenerate (its vertices are collinear)";
   }
   return std::nullopt;
+}
+
+std::optional<std::string> first_raw_violation(const RawComplex& raw) {
+  const FilteredPoints points(raw.vertices);
+  return first_raw_violation(
+      points, [&](std::size_t v) -> const mpq_class& { return raw.radius_squared[v]; }, raw.radius_squared.size(),
+      raw.triangles, raw.segments);
 }
 
 }  // namespace grassfire

@@ -4,12 +4,12 @@
 #include <algorithm>
 #include <cmath>
 #include <numeric>
-#include <sstream>
 #include <stdexcept>
 #include <tuple>
 
 #include "complex3/complex_checks.h"
 #include "complex3/complex_intersections.h"
+#include "complex3/medial_complex_detail.h"
 
 namespace grassfire {
 
@@ -36,26 +36,9 @@ const char* to_string(VertexKind k) {
   return "?";
 }
 
-std::array<mpq_class, 2> PlanarFrame::local(const ExactPoint3& p) const {
-  const ExactPoint3 d = p - origin;
-  return {mpq_class(dot(d, e1) / e1_norm2), mpq_class(dot(d, e2) / e2_norm2)};
-}
-
-bool PlanarFrame::contains(const ExactPoint3& p) const { return sgn(dot(normal, p - origin)) == 0; }
-
-PlanarFrame frame_of_triangle(const ExactPoint3& a, const ExactPoint3& b, const ExactPoint3& c) {
-  PlanarFrame f;
-  f.origin = a;
-  f.e1 = b - a;
-  f.e2 = cross(cross(b - a, c - a), f.e1);
-  f.normal = cross(f.e1, f.e2);
-  f.e1_norm2 = dot(f.e1, f.e1);
-  f.e2_norm2 = dot(f.e2, f.e2);
-  return f;
-}
-
 MedialComplex::MedialComplex(const RawComplex& raw, bool check_embedding) : source_(raw.source) {
-  check_raw(raw);
+  const FilteredPoints points(raw.vertices);
+  check_raw(raw, points);
   vertices_.resize(raw.vertices.size());
   for (std::size_t i = 0; i < raw.vertices.size(); ++i) {
     ComplexVertex& v = vertices_[i];
@@ -64,78 +47,112 @@ MedialComplex::MedialComplex(const RawComplex& raw, bool check_embedding) : sour
     v.radius_squared = raw.radius_squared[i];
     v.radius = std::sqrt(v.radius_squared.get_d());
   }
-  build_edges(raw);
-  order_edge_triangles();
+  build_edges(raw, points);
+  build_incidences();
+  order_edge_triangles(points);
   if (check_embedding)
-    if (auto problem = first_improper_intersection(raw)) fail(*problem);
-  build_sheets();
+    if (auto problem = first_improper_intersection(raw, points)) fail(*problem);
+  build_sheets(points);
   build_sectors();
   classify_vertices();
   apply_ignition(raw);
+  filter_counts_ = points.counts();
 }
 
 void MedialComplex::fail(const std::string& what) const {
   throw std::invalid_argument((source_.empty() ? std::string("complex") : source_) + ": " + what);
 }
 
-void MedialComplex::check_raw(const RawComplex& raw) const {
-  if (auto problem = first_raw_violation(raw)) fail(*problem);
+void MedialComplex::check_raw(const RawComplex& raw, const FilteredPoints& points) const {
+  const auto radius = [&](std::size_t v) -> const mpq_class& { return raw.radius_squared[v]; };
+  if (auto problem = first_raw_violation(points, radius, raw.radius_squared.size(), raw.triangles, raw.segments))
+    fail(*problem);
 }
 
-void MedialComplex::build_edges(const RawComplex& raw) {
-  // (low, high, is_segment, cell id, corner): sorting groups the occurrences of each edge.
-  using Occurrence = std::tuple<std::uint32_t, std::uint32_t, int, std::uint32_t, int>;
-  std::vector<Occurrence> occ;
-  occ.reserve(3 * raw.triangles.size() + raw.segments.size());
+// The occurrences of the edges in the cells, bucketed by their lower vertex and sorted
+// within a bucket by (higher vertex, is segment, cell, corner): edges come out numbered in
+// (lower, higher) order and each edge's triangles in increasing id, in linear time plus
+// the sorts of the small buckets.
+void MedialComplex::build_edges(const RawComplex& raw, const FilteredPoints& points) {
+  struct Occurrence {
+    std::uint32_t high, cell;
+    std::uint8_t is_segment, corner;
+    bool operator<(const Occurrence& o) const {
+      return std::tie(high, is_segment, cell, corner) < std::tie(o.high, o.is_segment, o.cell, o.corner);
+    }
+  };
+  const std::size_t n = raw.vertices.size();
+  std::vector<std::uint32_t> start(n + 1, 0);
+  for (const auto& tv : raw.triangles)
+    for (int i = 0; i < 3; ++i) ++start[std::min(tv[(i + 1) % 3], tv[(i + 2) % 3]) + 1];
+  for (const auto& sv : raw.segments) ++start[std::min(sv[0], sv[1]) + 1];
+  for (std::size_t v = 0; v < n; ++v) start[v + 1] += start[v];
+  std::vector<Occurrence> occ(start[n]);
+  std::vector<std::uint32_t> fill(start.begin(), start.end() - 1);
   for (std::uint32_t t = 0; t < raw.triangles.size(); ++t) {
     const auto& tv = raw.triangles[t];
     for (int i = 0; i < 3; ++i) {
       const std::uint32_t a = tv[(i + 1) % 3], b = tv[(i + 2) % 3];
-      occ.emplace_back(std::min(a, b), std::max(a, b), 0, t, i);
+      occ[fill[std::min(a, b)]++] = {std::max(a, b), t, 0, static_cast<std::uint8_t>(i)};
     }
   }
   for (std::uint32_t s = 0; s < raw.segments.size(); ++s) {
     const auto& sv = raw.segments[s];
-    occ.emplace_back(std::min(sv[0], sv[1]), std::max(sv[0], sv[1]), 1, s, 0);
+    occ[fill[std::min(sv[0], sv[1])]++] = {std::max(sv[0], sv[1]), s, 1, 0};
   }
-  std::sort(occ.begin(), occ.end());
   triangles_.resize(raw.triangles.size());
   for (std::uint32_t t = 0; t < raw.triangles.size(); ++t) triangles_[t].v = raw.triangles[t];
-  for (std::size_t i = 0; i < occ.size();) {
-    std::size_t j = i;
-    const auto [a, b, seg0, id0, c0] = occ[i];
-    (void)seg0, (void)id0, (void)c0;
-    ComplexEdge e;
-    e.v = {a, b};
-    std::vector<std::uint32_t> tris;
-    int segments = 0;
-    std::uint32_t segment_id = 0;
-    for (; j < occ.size() && std::get<0>(occ[j]) == a && std::get<1>(occ[j]) == b; ++j) {
-      if (std::get<2>(occ[j]) == 1) {
-        ++segments;
-        segment_id = std::get<3>(occ[j]);
-      } else {
-        tris.push_back(std::get<3>(occ[j]));
-        triangles_[std::get<3>(occ[j])].e[std::get<4>(occ[j])] = static_cast<std::uint32_t>(edges_.size());
+  edges_.reserve(occ.size() / 2 + 1);
+  edge_triangles_.reserve(occ.size() / 2 + 1);
+  for (std::uint32_t a = 0; a < n; ++a) {
+    std::sort(occ.begin() + start[a], occ.begin() + start[a + 1]);
+    for (std::size_t i = start[a]; i < start[a + 1];) {
+      const std::uint32_t b = occ[i].high;
+      std::vector<std::uint32_t> tris;
+      int segments = 0;
+      std::uint32_t segment_id = 0;
+      for (; i < start[a + 1] && occ[i].high == b; ++i) {
+        if (occ[i].is_segment) {
+          ++segments;
+          segment_id = occ[i].cell;
+        } else {
+          tris.push_back(occ[i].cell);
+          triangles_[occ[i].cell].e[occ[i].corner] = static_cast<std::uint32_t>(edges_.size());
+        }
       }
+      add_edge(a, b, std::move(tris), segments, segment_id, points);
     }
-    std::ostringstream where;
-    where << "edge (" << a << ", " << b << ")";
-    if (segments > 1) fail("segment " + std::to_string(segment_id) + " repeats " + where.str());
-    if (segments == 1 && !tris.empty())
-      fail("segment " + std::to_string(segment_id) + " is also an edge of triangle " + std::to_string(tris[0]));
-    const std::size_t k = tris.size();
-    e.stratum = k == 0   ? EdgeStratum::Dangling
-                : k == 1 ? EdgeStratum::Border
-                : k == 2 ? EdgeStratum::Manifold
-                         : EdgeStratum::Singular;
-    e.length = std::sqrt(squared_distance(raw.vertices[a], raw.vertices[b]).get_d());
-    edges_.push_back(e);
-    edge_triangles_.push_back(std::move(tris));
-    i = j;
   }
+}
+
+void MedialComplex::add_edge(std::uint32_t a, std::uint32_t b, std::vector<std::uint32_t> tris, int segments,
+                             std::uint32_t segment_id, const FilteredPoints& points) {
+  const auto where = [&] { return "edge (" + std::to_string(a) + ", " + std::to_string(b) + ")"; };
+  if (segments > 1) fail("segment " + std::to_string(segment_id) + " repeats " + where());
+  if (segments == 1 && !tris.empty())
+    fail("segment " + std::to_string(segment_id) + " is also an edge of triangle " + std::to_string(tris[0]));
+  const std::size_t k = tris.size();
+  ComplexEdge e;
+  e.v = {a, b};
+  e.stratum = k == 0 ? EdgeStratum::Dangling : k == 1 ? EdgeStratum::Border : k == 2 ? EdgeStratum::Manifold : EdgeStratum::Singular;
+  e.length = points.distance(a, b);
+  edges_.push_back(e);
+  edge_triangles_.push_back(std::move(tris));
+}
+
+// vertex_edges (by edge id) and vertex_triangles (by triangle id), each list allocated once.
+void MedialComplex::build_incidences() {
+  std::vector<std::uint32_t> edge_degree(vertices_.size(), 0), triangle_degree(vertices_.size(), 0);
+  for (const ComplexEdge& e : edges_)
+    for (std::uint32_t v : e.v) ++edge_degree[v];
+  for (const ComplexTriangle& t : triangles_)
+    for (std::uint32_t v : t.v) ++triangle_degree[v];
   vertex_edges_.assign(vertices_.size(), {});
   vertex_triangles_.assign(vertices_.size(), {});
+  for (std::uint32_t v = 0; v < vertices_.size(); ++v) {
+    vertex_edges_[v].reserve(edge_degree[v]);
+    vertex_triangles_[v].reserve(triangle_degree[v]);
+  }
   for (std::uint32_t e = 0; e < edges_.size(); ++e)
     for (std::uint32_t v : edges_[e].v) vertex_edges_[v].push_back(e);
   for (std::uint32_t t = 0; t < triangles_.size(); ++t)
@@ -149,27 +166,38 @@ std::uint32_t MedialComplex::find_edge(std::uint32_t a, std::uint32_t b) const {
   return kNoIndex;
 }
 
-void MedialComplex::order_edge_triangles() {
+void MedialComplex::order_edge_triangles(const FilteredPoints& points) {
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> keyed;  // (third vertex, triangle)
   for (std::uint32_t e = 0; e < edges_.size(); ++e) {
     auto& tris = edge_triangles_[e];
     if (tris.size() < 2) continue;
-    const ExactPoint3& a = vertices_[edges_[e].v[0]].exact;
-    const ExactPoint3& b = vertices_[edges_[e].v[1]].exact;
-    const EdgeAngularOrder order(a, b);
-    std::vector<std::pair<ExactPoint3, std::uint32_t>> keyed;
-    for (std::uint32_t t : tris) keyed.emplace_back(order.direction(vertices_[third_vertex(triangles_[t], edges_[e].v)].exact), t);
-    const ExactPoint3 ref = keyed.front().first;
+    const FilteredEdgeOrder order(points, edges_[e].v[0], edges_[e].v[1]);
+    if (tris.size() == 2) {
+      // The sort below never moves the reference (angle 0 is the least), so two triangles
+      // keep their order, and they overlap iff the second has angle 0 too: det = 0 and the
+      // same direction (EdgeAngularOrder::compare(ref, ref, w) == 0).
+      const std::uint32_t ref = third_vertex(triangles_[tris[0]], edges_[e].v);
+      const std::uint32_t w = third_vertex(triangles_[tris[1]], edges_[e].v);
+      if (order.compare(ref, ref, w) == 0) fail_overlap(tris[0], tris[1], e);
+      continue;
+    }
+    keyed.clear();
+    for (std::uint32_t t : tris) keyed.emplace_back(third_vertex(triangles_[t], edges_[e].v), t);
+    const std::uint32_t ref = keyed.front().first;
     std::sort(keyed.begin(), keyed.end(),
               [&](const auto& p, const auto& q) { return order.compare(ref, p.first, q.first) < 0; });
     for (std::size_t i = 0; i + 1 < keyed.size(); ++i)
-      if (order.compare(ref, keyed[i].first, keyed[i + 1].first) == 0)
-        fail("triangles " + std::to_string(keyed[i].second) + " and " + std::to_string(keyed[i + 1].second) +
-             " overlap along edge (" + std::to_string(edges_[e].v[0]) + ", " + std::to_string(edges_[e].v[1]) + ")");
+      if (order.compare(ref, keyed[i].first, keyed[i + 1].first) == 0) fail_overlap(keyed[i].second, keyed[i + 1].second, e);
     for (std::size_t i = 0; i < keyed.size(); ++i) tris[i] = keyed[i].second;
   }
 }
 
-void MedialComplex::build_sheets() {
+void MedialComplex::fail_overlap(std::uint32_t t0, std::uint32_t t1, std::uint32_t e) const {
+  fail("triangles " + std::to_string(t0) + " and " + std::to_string(t1) + " overlap along edge (" +
+       std::to_string(edges_[e].v[0]) + ", " + std::to_string(edges_[e].v[1]) + ")");
+}
+
+void MedialComplex::build_sheets(const FilteredPoints& points) {
   std::vector<std::uint32_t> parent(triangles_.size());
   std::iota(parent.begin(), parent.end(), 0u);
   auto find = [&](std::uint32_t x) {
@@ -191,26 +219,23 @@ void MedialComplex::build_sheets() {
     triangles_[t].sheet = sheet_of_root[r];
     sheets_[sheet_of_root[r]].triangles.push_back(t);
   }
+  // Frames in the order the sheets come: one per planar sheet, one per triangle otherwise.
   triangle_frame_.assign(triangles_.size(), kNoIndex);
+  SheetPlanarity planarity(points, triangles_);
   for (Sheet& s : sheets_) {
-    const auto& t0 = triangles_[s.triangles.front()].v;
-    PlanarFrame f = frame_of_triangle(vertices_[t0[0]].exact, vertices_[t0[1]].exact, vertices_[t0[2]].exact);
-    s.planar = std::all_of(s.triangles.begin(), s.triangles.end(), [&](std::uint32_t t) {
-      const auto& tv = triangles_[t].v;
-      return std::all_of(tv.begin(), tv.end(), [&](std::uint32_t v) { return f.contains(vertices_[v].exact); });
-    });
+    s.planar = planarity.planar(s);
     if (s.planar) {
-      s.frame = static_cast<std::uint32_t>(frames_.size());
-      frames_.push_back(std::move(f));
+      s.frame = static_cast<std::uint32_t>(frame_triangle_.size());
+      frame_triangle_.push_back(s.triangles.front());
       for (std::uint32_t t : s.triangles) triangle_frame_[t] = s.frame;
       continue;
     }
     for (std::uint32_t t : s.triangles) {
-      const auto& tv = triangles_[t].v;
-      triangle_frame_[t] = static_cast<std::uint32_t>(frames_.size());
-      frames_.push_back(frame_of_triangle(vertices_[tv[0]].exact, vertices_[tv[1]].exact, vertices_[tv[2]].exact));
+      triangle_frame_[t] = static_cast<std::uint32_t>(frame_triangle_.size());
+      frame_triangle_.push_back(t);
     }
   }
+  frame_store_ = make_frame_store(frame_triangle_.size());
 }
 
 bool MedialComplex::is_pole(std::uint32_t e) const {

@@ -25,8 +25,11 @@
 //    link and is not a border point, as Fig. 4.4 requires.
 //
 // Exactness: every combinatorial decision (degeneracy, duplicates, angular order around an
-// edge, coplanarity of sheets) is an exact predicate on rational coordinates (gmpxx). The
-// double members are nearest approximations for drawing and for the approximate baseline.
+// edge, coplanarity of sheets) is an exact predicate on rational coordinates: an interval
+// filter first, the rationals (gmpxx) only where the filter cannot decide
+// (filtered_predicates3.h); the answers are those of the rational predicates of
+// exact_predicates3.h. The double members are nearest approximations for drawing and for
+// the approximate baseline.
 // Contract (the constructor throws std::invalid_argument naming raw.source and the first
 // violation): indices in range; no repeated vertex in a cell; distinct vertex positions;
 // no degenerate (collinear) triangle; no duplicate triangle or segment; no segment that is
@@ -34,8 +37,14 @@
 // half-plane (a local overlap); border rules name border edges; no two cells meet outside
 // their common faces (complex_intersections.h: CGAL box intersection and filtered exact
 // predicates; can be skipped by the caller that already knows the complex is embedded).
-// Complexity: construction O(n log n) exact comparisons (n = cells) plus O(k) filtered
-// predicates for k overlapping bounding boxes; validate() the same; accessors O(1).
+// Frames are exact and computed when first asked for (triangle_frame, frames): a curved
+// sheet has one per triangle, which most users never read.
+// Complexity: construction O(n log n) filtered predicates (n = cells; a sort of the
+// vertices, one per corner and per edge-triangle pair) plus O(k) filtered predicates for k
+// overlapping bounding boxes; rational arithmetic only for the decisions the filter leaves
+// (exact coplanarity in planar sheets, degenerate configurations); validate() the same
+// without the embedding; a frame O(1) rationals; accessors O(1).
+// Measured (bench_complex_build, Loop-refined closed meshes): see README.
 #pragma once
 
 #include <gmpxx.h>
@@ -46,7 +55,10 @@
 #include <string>
 #include <vector>
 
+#include <memory>
+
 #include "complex3/exact_predicates3.h"
+#include "complex3/filtered_predicates3.h"
 #include "complex3/raw_complex.h"
 
 namespace grassfire {
@@ -168,9 +180,14 @@ class MedialComplex {
   std::uint32_t find_edge(std::uint32_t a, std::uint32_t b) const;
 
   const std::vector<Sheet>& sheets() const { return sheets_; }
-  const std::vector<PlanarFrame>& frames() const { return frames_; }
-  // The sheet's frame when the sheet is planar, else the triangle's own frame.
-  const PlanarFrame& triangle_frame(std::uint32_t t) const { return frames_[triangle_frame_[t]]; }
+  // Every frame, indexed as Sheet::frame and triangle_frame_index (computes those not yet
+  // computed: one per planar sheet, one per triangle of every other sheet).
+  const std::vector<PlanarFrame>& frames() const;
+  // The sheet's frame when the sheet is planar, else the triangle's own frame (computed at
+  // the first call, then kept; safe to call from several threads).
+  const PlanarFrame& triangle_frame(std::uint32_t t) const;
+  std::uint32_t triangle_frame_index(std::uint32_t t) const { return triangle_frame_[t]; }
+  std::size_t frame_count() const { return frame_triangle_.size(); }
 
   const std::vector<Sector>& sectors() const { return sectors_; }
   // The link elements of vertex v: its poles (in vertex_edges order), then its sectors.
@@ -200,12 +217,21 @@ class MedialComplex {
 
   std::size_t count(EdgeStratum s) const;
   std::size_t count(VertexKind k) const;
+  // How the construction's predicates were decided: by the interval filter or exactly.
+  const FilterCounts& filter_counts() const { return filter_counts_; }
 
  private:
-  void check_raw(const RawComplex& raw) const;
-  void build_edges(const RawComplex& raw);
-  void order_edge_triangles();
-  void build_sheets();
+  struct FrameStore;  // frames computed on demand (medial_complex_frames.cpp)
+  void check_raw(const RawComplex& raw, const FilteredPoints& points) const;
+  void build_edges(const RawComplex& raw, const FilteredPoints& points);
+  void add_edge(std::uint32_t a, std::uint32_t b, std::vector<std::uint32_t> tris, int segments,
+                std::uint32_t segment_id, const FilteredPoints& points);
+  void build_incidences();
+  void order_edge_triangles(const FilteredPoints& points);
+  void build_sheets(const FilteredPoints& points);
+  static std::shared_ptr<FrameStore> make_frame_store(std::size_t frames);
+  const PlanarFrame& frame(std::uint32_t f) const;
+  void validate_frames() const;
   void build_sectors();
   void classify_vertices();
   VertexKind classify_link(std::uint32_t v) const;
@@ -213,6 +239,7 @@ class MedialComplex {
   bool is_pole(std::uint32_t e) const;
   void apply_ignition(const RawComplex& raw);
   [[noreturn]] void fail(const std::string& what) const;
+  [[noreturn]] void fail_overlap(std::uint32_t t0, std::uint32_t t1, std::uint32_t e) const;
 
   std::string source_;
   std::vector<ComplexVertex> vertices_;
@@ -222,8 +249,10 @@ class MedialComplex {
   std::vector<std::vector<std::uint32_t>> vertex_edges_;
   std::vector<std::vector<std::uint32_t>> vertex_triangles_;
   std::vector<Sheet> sheets_;
-  std::vector<PlanarFrame> frames_;
-  std::vector<std::uint32_t> triangle_frame_;
+  std::vector<std::uint32_t> triangle_frame_;  // frame index per triangle
+  std::vector<std::uint32_t> frame_triangle_;  // per frame, the triangle whose plane it spans
+  std::shared_ptr<FrameStore> frame_store_;
+  FilterCounts filter_counts_;
   std::vector<Sector> sectors_;
   std::vector<std::vector<LinkElement>> link_elements_;
   std::vector<std::uint32_t> corner_element_;

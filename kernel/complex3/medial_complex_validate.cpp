@@ -6,6 +6,7 @@
 
 #include "complex3/complex_checks.h"
 #include "complex3/medial_complex.h"
+#include "complex3/medial_complex_detail.h"
 
 namespace grassfire {
 namespace {
@@ -21,7 +22,7 @@ bool shares_manifold_edge_at(const MedialComplex& mc, std::uint32_t t0, std::uin
   return false;
 }
 
-void check_edges(const MedialComplex& mc) {
+void check_edges(const MedialComplex& mc, const FilteredPoints& points) {
   const std::string& src = mc.source();
   for (std::uint32_t e = 0; e < mc.edge_count(); ++e) {
     const ComplexEdge& ed = mc.edge(e);
@@ -43,11 +44,11 @@ void check_edges(const MedialComplex& mc) {
         violation(src, "triangle " + std::to_string(t) + " listed on edge " + std::to_string(e) + " wrongly");
     }
     if (k < 2) continue;
-    const EdgeAngularOrder order(mc.vertex(ed.v[0]).exact, mc.vertex(ed.v[1]).exact);
-    auto dir = [&](std::uint32_t t) { return order.direction(mc.vertex(third_vertex(mc.triangle(t), ed.v)).exact); };
-    const ExactPoint3 ref = dir(tris[0]);
+    const FilteredEdgeOrder order(points, ed.v[0], ed.v[1]);
+    auto third = [&](std::uint32_t t) { return third_vertex(mc.triangle(t), ed.v); };
+    const std::uint32_t ref = third(tris[0]);
     for (std::size_t i = 0; i + 1 < k; ++i)
-      if (order.compare(ref, dir(tris[i]), dir(tris[i + 1])) >= 0)
+      if (order.compare(ref, third(tris[i]), third(tris[i + 1])) >= 0)
         violation(src, "triangles around edge " + std::to_string(e) + " are not in strict angular order");
   }
   for (std::uint32_t t = 0; t < mc.triangle_count(); ++t)
@@ -60,8 +61,9 @@ void check_edges(const MedialComplex& mc) {
     }
 }
 
-void check_sheets(const MedialComplex& mc) {
+void check_sheets(const MedialComplex& mc, const FilteredPoints& points) {
   const std::string& src = mc.source();
+  SheetPlanarity planarity(points, mc.triangles());
   std::vector<int> seen(mc.triangle_count(), 0);
   for (std::uint32_t s = 0; s < mc.sheets().size(); ++s) {
     const Sheet& sh = mc.sheets()[s];
@@ -71,19 +73,7 @@ void check_sheets(const MedialComplex& mc) {
       if (mc.triangle(t).sheet != s) violation(src, "triangle " + std::to_string(t) + " has the wrong sheet id");
     }
     // Planarity against the plane of the sheet's first triangle, recomputed.
-    const auto& t0 = mc.triangle(sh.triangles.front()).v;
-    const PlanarFrame plane =
-        frame_of_triangle(mc.vertex(t0[0]).exact, mc.vertex(t0[1]).exact, mc.vertex(t0[2]).exact);
-    bool planar = true;
-    for (std::uint32_t t : sh.triangles) {
-      const PlanarFrame& f = mc.triangle_frame(t);
-      if (sgn(dot(f.e1, f.e2)) != 0 || !(f.normal == cross(f.e1, f.e2)))
-        violation(src, "frame of triangle " + std::to_string(t) + " is not orthogonal");
-      for (std::uint32_t v : mc.triangle(t).v) {
-        if (!f.contains(mc.vertex(v).exact)) violation(src, "frame of triangle " + std::to_string(t) + " misses it");
-        planar = planar && plane.contains(mc.vertex(v).exact);
-      }
-    }
+    const bool planar = planarity.planar(sh);
     if (planar != sh.planar) violation(src, "sheet " + std::to_string(s) + " planarity flag is wrong");
   }
   for (std::uint32_t t = 0; t < mc.triangle_count(); ++t)
@@ -163,20 +153,22 @@ void check_links(const MedialComplex& mc) {
 }  // namespace
 
 void MedialComplex::validate() const {
-  RawComplex raw;
-  raw.source = source_;
-  for (const ComplexVertex& v : vertices_) {
-    raw.vertices.push_back(v.exact);
-    raw.radius_squared.push_back(v.radius_squared);
+  const FilteredPoints points(vertices_.size(), [&](std::size_t v) -> const ExactPoint3& { return vertices_[v].exact; });
+  for (const ComplexVertex& v : vertices_)
     if (v.approx != to_double(v.exact)) violation(source_, "a vertex approximation is stale");
-  }
-  for (const ComplexTriangle& t : triangles_) raw.triangles.push_back(t.v);
+  std::vector<std::array<std::uint32_t, 3>> triangles;
+  triangles.reserve(triangles_.size());
+  for (const ComplexTriangle& t : triangles_) triangles.push_back(t.v);
+  std::vector<std::array<std::uint32_t, 2>> segments;
   for (std::uint32_t e = 0; e < edges_.size(); ++e)
-    if (edges_[e].stratum == EdgeStratum::Dangling) raw.segments.push_back(edges_[e].v);
-  if (auto problem = first_raw_violation(raw)) violation(source_, *problem);
-  check_edges(*this);
-  check_sheets(*this);
+    if (edges_[e].stratum == EdgeStratum::Dangling) segments.push_back(edges_[e].v);
+  const auto radius = [&](std::size_t v) -> const mpq_class& { return vertices_[v].radius_squared; };
+  if (auto problem = first_raw_violation(points, radius, vertices_.size(), triangles, segments))
+    violation(source_, *problem);
+  check_edges(*this, points);
+  check_sheets(*this, points);
   check_links(*this);
+  validate_frames();
 }
 
 }  // namespace grassfire

@@ -6,23 +6,26 @@
 #include <limits>
 #include <stdexcept>
 
+#include "complex3/closest_point3.h"
+#include "complex3/filtered_predicates3.h"
+
 namespace grassfire {
 namespace {
 
+// A certified enclosure of q: the point itself when q is a double, else its neighbourhood;
+// the whole line beyond the filter's range (such cells are never pruned).
 Interval enclosure(const mpq_class& q) {
-  const double d = q.get_d();  // within one ulp of q (mpq get_d truncates)
-  if (!std::isfinite(d)) return {-std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity()};
-  return {round_down(d), round_up(d)};
+  const CoordinateEnclosure e = enclose_coordinate(q);
+  if (!e.usable) return {-std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity()};
+  return e.value;
 }
 
 std::array<Interval, 3> enclosure(const ExactPoint3& p) { return {enclosure(p.x), enclosure(p.y), enclosure(p.z)}; }
 
-std::array<Interval, 3> box_of(const std::vector<const ExactPoint3*>& points) {
-  std::array<Interval, 3> box = enclosure(*points[0]);
-  for (const ExactPoint3* p : points) {
-    const std::array<Interval, 3> e = enclosure(*p);
-    for (int i = 0; i < 3; ++i) box[i] = hull(box[i], e[i]);
-  }
+std::array<Interval, 3> box_of(const std::vector<IntervalPoint3>& points, std::initializer_list<std::uint32_t> ids) {
+  std::array<Interval, 3> box = points[*ids.begin()];
+  for (std::uint32_t v : ids)
+    for (int i = 0; i < 3; ++i) box[i] = hull(box[i], points[v][i]);
   return box;
 }
 
@@ -36,41 +39,8 @@ double box_lower_bound(const std::array<Interval, 3>& qi, const std::array<Inter
   return sum.lo;
 }
 
-double point_upper_bound(const std::array<Interval, 3>& qi, const ExactPoint3& p) {
-  const std::array<Interval, 3> pi = enclosure(p);
+double point_upper_bound(const std::array<Interval, 3>& qi, const IntervalPoint3& pi) {
   return (square(pi[0] - qi[0]) + square(pi[1] - qi[1]) + square(pi[2] - qi[2])).hi;
-}
-
-// Closest point of triangle abc to p as barycentric weights (Ericson 5.1.5, exact).
-std::array<mpq_class, 3> closest_weights(const ExactPoint3& a, const ExactPoint3& b, const ExactPoint3& c,
-                                         const ExactPoint3& p) {
-  const ExactPoint3 ab = b - a, ac = c - a, ap = p - a;
-  const mpq_class d1 = dot(ab, ap), d2 = dot(ac, ap);
-  if (sgn(d1) <= 0 && sgn(d2) <= 0) return {1, 0, 0};
-  const ExactPoint3 bp = p - b;
-  const mpq_class d3 = dot(ab, bp), d4 = dot(ac, bp);
-  if (sgn(d3) >= 0 && d4 <= d3) return {0, 1, 0};
-  const mpq_class vc = d1 * d4 - d3 * d2;
-  if (sgn(vc) <= 0 && sgn(d1) >= 0 && sgn(d3) <= 0) {
-    const mpq_class v = d1 / (d1 - d3);
-    return {1 - v, v, 0};
-  }
-  const ExactPoint3 cp = p - c;
-  const mpq_class d5 = dot(ab, cp), d6 = dot(ac, cp);
-  if (sgn(d6) >= 0 && d5 <= d6) return {0, 0, 1};
-  const mpq_class vb = d5 * d2 - d1 * d6;
-  if (sgn(vb) <= 0 && sgn(d2) >= 0 && sgn(d6) <= 0) {
-    const mpq_class w = d2 / (d2 - d6);
-    return {1 - w, 0, w};
-  }
-  const mpq_class va = d3 * d6 - d5 * d4;
-  if (sgn(va) <= 0 && sgn(d4 - d3) >= 0 && sgn(d5 - d6) >= 0) {
-    const mpq_class w = (d4 - d3) / ((d4 - d3) + (d5 - d6));
-    return {0, 1 - w, w};
-  }
-  const mpq_class denom = va + vb + vc;
-  const mpq_class v = vb / denom, w = vc / denom;
-  return {1 - v - w, v, w};
 }
 
 }  // namespace
@@ -131,17 +101,43 @@ std::vector<std::uint32_t> triangles_containing(const MedialComplex& mc, const C
 
 ComplexLocator::ComplexLocator(const MedialComplex& mc) : mc_(mc) {
   if (mc.vertex_count() == 0) throw std::invalid_argument(mc.source() + ": cannot locate points on an empty complex");
+  vertex_box_.reserve(mc.vertex_count());
+  for (const ComplexVertex& v : mc.vertices()) vertex_box_.push_back(enclosure(v.exact));
   for (std::uint32_t t = 0; t < mc.triangle_count(); ++t) {
     const ComplexTriangle& tr = mc.triangle(t);
-    cells_.push_back({2, t, box_of({&mc.vertex(tr.v[0]).exact, &mc.vertex(tr.v[1]).exact, &mc.vertex(tr.v[2]).exact})});
+    cells_.push_back({2, t, box_of(vertex_box_, {tr.v[0], tr.v[1], tr.v[2]})});
   }
   for (std::uint32_t e = 0; e < mc.edge_count(); ++e)
     if (mc.edge(e).stratum == EdgeStratum::Dangling) {
       const ComplexEdge& edge = mc.edge(e);
-      cells_.push_back({1, e, box_of({&mc.vertex(edge.v[0]).exact, &mc.vertex(edge.v[1]).exact})});
+      cells_.push_back({1, e, box_of(vertex_box_, {edge.v[0], edge.v[1]})});
     }
   for (std::uint32_t v = 0; v < mc.vertex_count(); ++v)
-    if (mc.vertex_edges(v).empty()) cells_.push_back({0, v, box_of({&mc.vertex(v).exact})});
+    if (mc.vertex_edges(v).empty()) cells_.push_back({0, v, box_of(vertex_box_, {v})});
+  std::vector<BoxTree3::Box> boxes;
+  boxes.reserve(cells_.size());
+  for (const Cell& c : cells_) boxes.push_back(c.box);
+  tree_ = std::make_unique<BoxTree3>(boxes);
+}
+
+ComplexLocator::~ComplexLocator() = default;
+
+std::uint32_t ComplexLocator::corner(const Cell& c) const {
+  return c.dimension == 2 ? mc_.triangle(c.id).v[0] : c.dimension == 1 ? mc_.edge(c.id).v[0] : c.id;
+}
+
+Interval ComplexLocator::enclosed_distance(const Cell& c, const IntervalPoint3& qi, double box_lower) const {
+  std::optional<Interval> d;
+  if (c.dimension == 2) {
+    const auto& v = mc_.triangle(c.id).v;
+    d = closest_squared_distance(vertex_box_[v[0]], vertex_box_[v[1]], vertex_box_[v[2]], qi);
+  } else if (c.dimension == 1) {
+    const auto& v = mc_.edge(c.id).v;
+    d = closest_squared_distance(vertex_box_[v[0]], vertex_box_[v[1]], qi);
+  }
+  Interval out(box_lower, point_upper_bound(qi, vertex_box_[corner(c)]));
+  if (d) out = {std::max(out.lo, d->lo), std::min(out.hi, d->hi)};
+  return out;
 }
 
 ComplexPoint ComplexLocator::closest_in(const Cell& c, const ExactPoint3& q) const {
@@ -165,20 +161,9 @@ ComplexPoint ComplexLocator::closest_in(const Cell& c, const ExactPoint3& q) con
   return x;
 }
 
-ComplexPoint ComplexLocator::locate(const ExactPoint3& q) const {
-  const std::array<Interval, 3> qi = enclosure(q);
-  double best_upper = std::numeric_limits<double>::infinity();
-  std::vector<std::pair<double, std::size_t>> order;  // (lower bound, cell), cells in their order
-  order.reserve(cells_.size());
-  for (std::size_t i = 0; i < cells_.size(); ++i) {
-    const Cell& c = cells_[i];
-    const std::uint32_t corner = c.dimension == 2 ? mc_.triangle(c.id).v[0] : c.dimension == 1 ? mc_.edge(c.id).v[0] : c.id;
-    best_upper = std::min(best_upper, point_upper_bound(qi, mc_.vertex(corner).exact));
-    order.emplace_back(box_lower_bound(qi, c.box), i);
-  }
-  // Certified exclusion: a cell whose lower bound exceeds some cell's upper bound is farther.
-  order.erase(std::remove_if(order.begin(), order.end(), [&](const auto& o) { return o.first > best_upper; }),
-              order.end());
+// The nearest cell under exact comparison, ties to the lower cell index, among the
+// candidates whose certified lower bound does not exceed every exact distance found.
+ComplexPoint ComplexLocator::nearest_of(std::vector<std::pair<double, std::size_t>>& order, const ExactPoint3& q) const {
   std::stable_sort(order.begin(), order.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
   ComplexPoint best;
   std::size_t best_cell = cells_.size();
@@ -189,6 +174,39 @@ ComplexPoint ComplexLocator::locate(const ExactPoint3& q) const {
     if (c < 0 || (c == 0 && i < best_cell)) best = std::move(x), best_cell = i;
   }
   return best;
+}
+
+ComplexPoint ComplexLocator::locate(const ExactPoint3& q) const {
+  const IntervalPoint3 qi = enclosure(q);
+  double best_upper = std::numeric_limits<double>::infinity();
+  std::vector<std::pair<double, std::size_t>> order;  // (certified lower bound, cell)
+  tree_->best_first([&](const BoxTree3::Box& box) { return box_lower_bound(qi, box); },
+                    [&](std::uint32_t i) {
+                      const double box_lower = box_lower_bound(qi, cells_[i].box);
+                      if (box_lower > best_upper) return;
+                      const Interval d = enclosed_distance(cells_[i], qi, box_lower);
+                      best_upper = std::min(best_upper, d.hi);
+                      if (d.lo <= best_upper) order.emplace_back(d.lo, i);
+                    },
+                    [&] { return best_upper; });
+  // Certified exclusion: a cell whose lower bound exceeds some cell's upper bound is farther.
+  order.erase(std::remove_if(order.begin(), order.end(), [&](const auto& o) { return o.first > best_upper; }),
+              order.end());
+  return nearest_of(order, q);
+}
+
+ComplexPoint ComplexLocator::locate_by_scan(const ExactPoint3& q) const {
+  const IntervalPoint3 qi = enclosure(q);
+  double best_upper = std::numeric_limits<double>::infinity();
+  std::vector<std::pair<double, std::size_t>> order;  // (lower bound, cell), cells in their order
+  order.reserve(cells_.size());
+  for (std::size_t i = 0; i < cells_.size(); ++i) {
+    best_upper = std::min(best_upper, point_upper_bound(qi, vertex_box_[corner(cells_[i])]));
+    order.emplace_back(box_lower_bound(qi, cells_[i].box), i);
+  }
+  order.erase(std::remove_if(order.begin(), order.end(), [&](const auto& o) { return o.first > best_upper; }),
+              order.end());
+  return nearest_of(order, q);
 }
 
 }  // namespace grassfire

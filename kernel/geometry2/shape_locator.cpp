@@ -40,6 +40,9 @@ ShapeLocator::ShapeLocator(const Shape2& shape, std::size_t expected_queries) {
   y0_ = ymin - dy_;
   register_edges();
   compute_reference_points();
+  empty_status_.resize(reference_inside_.size());
+  for (std::size_t c = 0; c < empty_status_.size(); ++c)
+    empty_status_[c] = cell_start_[c] == cell_start_[c + 1] ? static_cast<std::uint8_t>(1 + reference_inside_[c]) : 0;
 }
 
 ShapeLocator::Cell ShapeLocator::cell_of(double x, double y) const {
@@ -180,6 +183,31 @@ BoundedSide ShapeLocator::locate(const LazyPoint& p) const {
     if (crosses(p, ref, e)) parity ^= 1;
   }
   return parity ? BoundedSide::Inside : BoundedSide::Outside;
+}
+
+std::optional<BoundedSide> ShapeLocator::locate_in_empty_cell(const IntervalPoint2& box) const {
+  const Cell cell = cell_of(box.x.mid(), box.y.mid());
+  const double mx = dx_ * kMargin, my = dy_ * kMargin;
+  const double cx0 = x0_ + cell.ix * dx_ - mx, cy0 = y0_ + cell.iy * dy_ - my;
+  if (box.x.lo < cx0 || box.x.hi > cx0 + dx_ + 2 * mx || box.y.lo < cy0 || box.y.hi > cy0 + dy_ + 2 * my)
+    return std::nullopt;
+  const std::uint8_t status = empty_status_[cell_index(cell.ix, cell.iy)];
+  if (status == 0) return std::nullopt;
+  return status == 2 ? BoundedSide::Inside : BoundedSide::Outside;
+}
+
+std::optional<bool> ShapeLocator::segment_meets_boundary_in_empty_cells(const IntervalPoint2& p,
+                                                                        const IntervalPoint2& q) const {
+  const double mx = dx_ * kMargin, my = dy_ * kMargin;
+  const Interval xs = hull(p.x, q.x), ys = hull(p.y, q.y);
+  const Cell c0 = cell_of(xs.lo - mx, ys.lo - my), c1 = cell_of(xs.hi + mx, ys.hi + my);
+  // Cells are clamped to the grid: a hull reaching beyond it is not decided here.
+  if (xs.lo - mx < x0_ || ys.lo - my < y0_ || xs.hi + mx >= x0_ + nx_ * dx_ || ys.hi + my >= y0_ + ny_ * dy_)
+    return std::nullopt;
+  for (int iy = c0.iy; iy <= c1.iy; ++iy)
+    for (int ix = c0.ix; ix <= c1.ix; ++ix)
+      if (empty_status_[cell_index(ix, iy)] == 0) return std::nullopt;
+  return false;
 }
 
 bool ShapeLocator::segment_meets_edge(const LazyPoint& p, const LazyPoint& q, const Edge& e) const {

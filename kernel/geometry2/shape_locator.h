@@ -18,6 +18,7 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 #include "geometry2/lazy_point.h"
@@ -34,6 +35,14 @@ class ShapeLocator {
   BoundedSide locate(const LazyPoint& p) const;
   // True when the closed segment pq meets the shape boundary.
   bool segment_meets_boundary(const LazyPoint& p, const LazyPoint& q) const;
+  // Fast paths from enclosures alone: the status of every point of `box` when the box
+  // lies in one cell that no boundary edge comes near (then the whole widened cell is on
+  // one side of the boundary, that of its reference point); nullopt otherwise (use
+  // locate). Likewise, false when the hull of two boxes lies in such cells only, which
+  // proves that no segment between points of the boxes meets the boundary; nullopt
+  // otherwise. O(1) and O(cells covered) with no exact arithmetic.
+  std::optional<BoundedSide> locate_in_empty_cell(const IntervalPoint2& box) const;
+  std::optional<bool> segment_meets_boundary_in_empty_cells(const IntervalPoint2& p, const IntervalPoint2& q) const;
 
   const OrientationStats& counters() const { return counters_; }
   std::size_t edge_count() const { return edges_.size(); }
@@ -60,6 +69,9 @@ class ShapeLocator {
   std::vector<std::uint32_t> cell_edges_;
   std::vector<Point2> reference_;          // per cell
   std::vector<std::uint8_t> reference_inside_;
+  // Per cell: 0 when a boundary edge is registered in it, else 1 + reference_inside_
+  // (one byte per cell: the fast paths touch nothing else, which keeps them in cache).
+  std::vector<std::uint8_t> empty_status_;
   mutable OrientationStats counters_;
 };
 

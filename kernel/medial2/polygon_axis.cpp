@@ -3,7 +3,6 @@
 
 #include <algorithm>
 #include <array>
-#include <chrono>
 #include <cmath>
 #include <numeric>
 #include <optional>
@@ -11,6 +10,7 @@
 #include <string>
 
 #include "geometry2/predicates2.h"
+#include "medial2/cpu_clock.h"
 #include "medial2/polygon_axis_geometry.h"
 #include "medial2/polygon_axis_symmetry.h"
 #include "medial2/segment_voronoi.h"
@@ -24,9 +24,7 @@ namespace {
 // An enclosure is re-evaluated in Arb when it has fewer than this many relative bits.
 constexpr int kTightBits = 40;
 
-double seconds_since(std::chrono::steady_clock::time_point t0) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-}
+double seconds_since(double t0) { return thread_seconds() - t0; }
 
 bool is_tight(const Interval& a) {
   const double m = std::fmax(std::fabs(a.lo), std::fabs(a.hi));
@@ -105,12 +103,26 @@ class Builder {
       circles_[i] = classify_circle(*sites_, topo_.vertices[i]);
       ++report_.circles_by_kind[static_cast<int>(circles_[i].kind)];
       values_[i] = solve_interval(*sites_, circles_[i]);
-      if (!is_tight(values_[i].x) || !is_tight(values_[i].y) || !is_tight(values_[i].r)) {
+      if (!tight(values_[i])) {
+        ++report_.dd_refinements;
+        const CircleValue<DDBall>& d = dd(i);
+        values_[i] = {d.x.to_interval(), d.y.to_interval(), d.r.to_interval()};
+      }
+      if (!tight(values_[i])) {
         ++report_.ball_refinements;
         const CircleValue<Ball>& b = ball(i);
         values_[i] = {b.x.to_interval(), b.y.to_interval(), b.r.to_interval()};
       }
     }
+  }
+
+  static bool tight(const CircleValue<Interval>& v) { return is_tight(v.x) && is_tight(v.y) && is_tight(v.r); }
+
+  // The circle of vertex i in double-double, computed once.
+  const CircleValue<DDBall>& dd(std::uint32_t i) {
+    if (dds_.size() < circles_.size()) dds_.resize(circles_.size());
+    if (!dds_[i]) dds_[i] = solve_dd(*sites_, circles_[i]);
+    return *dds_[i];
   }
 
   // The circle of vertex i in Arb (default precision), computed once.
@@ -236,6 +248,10 @@ class Builder {
       AxisEdgeData a{node_of[ed.u], node_of[ed.v], ed.site_a, ed.site_b, is_parabolic(ed.site_a, ed.site_b)};
       Interval len = edge_length(*sites_, a, values_[group_[ed.u]], values_[group_[ed.v]]);
       if (!is_tight(len)) {
+        ++report_.dd_refinements;
+        len = edge_length(*sites_, a, dd(group_[ed.u]), dd(group_[ed.v]));
+      }
+      if (!is_tight(len)) {
         ++report_.ball_refinements;
         len = edge_length(*sites_, a, ball(group_[ed.u]), ball(group_[ed.v])).to_interval();
       }
@@ -270,6 +286,7 @@ class Builder {
   std::vector<std::uint32_t> group_;
   std::vector<bool> aliasable_;  // by group root
   std::vector<std::optional<CircleValue<Ball>>> balls_;
+  std::vector<std::optional<CircleValue<DDBall>>> dds_;
   std::vector<std::uint32_t> conditions_;  // by site: conditions_of_sites
 };
 
@@ -302,7 +319,7 @@ int decimal_digits(double x, int max_digits, long long* m) {
 }
 
 MedialGraph exact_polygon_axis(const Shape2& shape, const PolygonAxisOptions& options, PolygonAxisReport* report) {
-  const auto t0 = std::chrono::steady_clock::now();
+  const double t0 = thread_seconds();
   PolygonAxisReport local;
   PolygonAxisReport& rep = report ? *report : local;
   rep = PolygonAxisReport{};
@@ -318,7 +335,7 @@ MedialGraph exact_polygon_axis(const Shape2& shape, const PolygonAxisOptions& op
                                                                                 : cgal_segment_voronoi(frame.sites);
   rep.voronoi_vertices = topo.vertices.size();
   rep.voronoi_seconds = seconds_since(t0);
-  const auto t1 = std::chrono::steady_clock::now();
+  const double t1 = thread_seconds();
   MedialGraph g = Builder(frame, std::move(topo), rep).run();
   rep.values_seconds = seconds_since(t1);
   rep.total_seconds = seconds_since(t0);

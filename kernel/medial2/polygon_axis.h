@@ -19,8 +19,9 @@
 // in Arb at any precision. Straight edge lengths are exact square roots when the ends are
 // (a rational square root when the squared length is rational); parabolic arc lengths
 // are certified constants (closed form with asinh, Arb). The graph's double enclosures
-// of R and lengths are rigorous and tight: double interval formulas, re-evaluated in Arb
-// at 128 bits when wider than kTightBits relative bits; exact values are built lazily,
+// of R and lengths are rigorous and tight: double interval formulas, re-evaluated in
+// double-double (number/dd_ball.h) and then in Arb when wider than kTightBits relative
+// bits; exact values are built lazily,
 // only when the burning engine's filter cannot decide.
 // Input policy (which construction runs): a coordinate that is the double nearest to a
 // decimal with at most 9 fractional digits is taken as that decimal (the smallest such
@@ -61,9 +62,10 @@ struct PolygonAxisReport {
   std::uint64_t contracted_edges = 0;       // zero-length edges, proved zero exactly
   std::uint64_t contracted_by_conditions = 0;  // of those: same conditions, one solution (no exact forms)
   std::uint64_t uncertified_contractions = 0;  // zero to 1024 bits, no exact form
-  std::uint64_t ball_refinements = 0;      // enclosures re-evaluated in Arb
+  std::uint64_t dd_refinements = 0;        // enclosures re-evaluated in double-double
+  std::uint64_t ball_refinements = 0;      // of those, still too wide: re-evaluated in Arb
   std::uint64_t circles_by_kind[7] = {};   // indexed by CircleKind
-  double voronoi_seconds = 0, values_seconds = 0, total_seconds = 0;
+  double voronoi_seconds = 0, values_seconds = 0, total_seconds = 0;  // thread CPU (medial2/cpu_clock.h)
 };
 
 MedialGraph exact_polygon_axis(const Shape2& shape, const PolygonAxisOptions& options = {},

@@ -56,7 +56,19 @@ std::int64_t gcd64(std::int64_t a, std::int64_t b) {
   return a;
 }
 
-Obj transform_site(const PolygonSites& s, std::uint32_t site, const int* a) {
+// The gcd of every segment site's direction (invariant under the signed permutations),
+// computed once: transform_site runs 8 times per site and circle.
+std::vector<std::int64_t> direction_gcds(const PolygonSites& s) {
+  std::vector<std::int64_t> g(s.vertex_count());
+  for (std::uint32_t i = 0; i < s.vertex_count(); ++i) {
+    const Point2 p = s.vertex[i], q = s.vertex[s.next[i]];
+    g[i] = gcd64(static_cast<std::int64_t>(q.x) - static_cast<std::int64_t>(p.x),
+                 static_cast<std::int64_t>(q.y) - static_cast<std::int64_t>(p.y));
+  }
+  return g;
+}
+
+Obj transform_site(const PolygonSites& s, const std::vector<std::int64_t>& gcds, std::uint32_t site, const int* a) {
   Obj o;
   auto at = [&](std::uint32_t v, std::int64_t* out) {
     apply(a, static_cast<std::int64_t>(s.vertex[v].x), static_cast<std::int64_t>(s.vertex[v].y), out);
@@ -74,7 +86,7 @@ Obj transform_site(const PolygonSites& s, std::uint32_t site, const int* a) {
   const bool reverses = a[0] * a[3] - a[1] * a[2] < 0;
   at(reverses ? s.seg_end(site) : s.seg_start(site), p);
   at(reverses ? s.seg_start(site) : s.seg_end(site), q);
-  const std::int64_t dx = q[0] - p[0], dy = q[1] - p[1], g = gcd64(dx, dy);
+  const std::int64_t dx = q[0] - p[0], dy = q[1] - p[1], g = gcds[s.seg_start(site)];
   o.a = {dx / g, dy / g};
   o.k = static_cast<__int128>(o.a[0]) * p[1] - static_cast<__int128>(o.a[1]) * p[0];
   o.px = p[0], o.py = p[1], o.qx = q[0], o.qy = q[1];
@@ -86,10 +98,11 @@ Obj transform_site(const PolygonSites& s, std::uint32_t site, const int* a) {
 // When at most one circle satisfies c's conditions (voronoi_circle.h), the root is no
 // part of its value (the two roots coincide), so it is dropped and the symmetric roles
 // are sorted.
-Image transform_circle(const PolygonSites& s, const VoronoiCircle& c, const int* a, bool unique) {
+Image transform_circle(const PolygonSites& s, const std::vector<std::int64_t>& gcds, const VoronoiCircle& c,
+                       const int* a, bool unique) {
   Image im;
   im.count = c.kind == CircleKind::Apex ? 1 : 3;
-  for (int i = 0; i < im.count; ++i) im.obj[i] = transform_site(s, c.sites[i], a);
+  for (int i = 0; i < im.count; ++i) im.obj[i] = transform_site(s, gcds, c.sites[i], a);
   if (a[0] * a[3] - a[1] * a[2] < 0) reflect_roles(c.kind, im.obj);
   const int root = canonical_roles(c.kind, c.root, im.obj, unique);
   im.code = static_cast<std::int64_t>(c.kind) * 4 + root + 1;
@@ -112,7 +125,9 @@ struct KeyBuilder {
     bool operator<(const Key& o) const {
       return std::lexicographical_compare(v.begin(), v.begin() + size, o.v.begin(), o.v.begin() + o.size);
     }
-    std::vector<std::int64_t> vec() const { return {v.begin(), v.begin() + size}; }
+    bool operator==(const Key& o) const {
+      return size == o.size && std::equal(v.begin(), v.begin() + size, o.v.begin());
+    }
   };
   // Translated so that the least point site is the origin (the least segment end when
   // there is no point site).
@@ -155,10 +170,10 @@ struct KeyBuilder {
 };
 
 struct KeyHash {
-  std::size_t operator()(const std::vector<std::int64_t>& v) const {
+  std::size_t operator()(const KeyBuilder::Key& k) const {
     std::uint64_t h = 1469598103934665603ull;
-    for (std::int64_t x : v) h = (h ^ static_cast<std::uint64_t>(x)) * 1099511628211ull;
-    return static_cast<std::size_t>(h);
+    for (int i = 0; i < k.size; ++i) h = (h ^ static_cast<std::uint64_t>(k.v[i])) * 1099511628211ull;
+    return static_cast<std::size_t>(h ^ (h >> 29));
   }
 };
 
@@ -249,6 +264,7 @@ void unite_congruent_atoms(const PolygonSites& s, const std::vector<AxisNodeData
                            const std::vector<AxisEdgeData>& edges, const std::vector<JoinedEdges>& joined,
                            UnionFind& node_uf, UnionFind& edge_uf) {
   if (!is_integer_frame(s)) return;
+  const std::vector<std::int64_t> gcds = direction_gcds(s);
   const auto n = static_cast<std::uint32_t>(nodes.size());
   const auto m = static_cast<std::uint32_t>(edges.size());
   // Every apex has R = 0.
@@ -258,28 +274,35 @@ void unite_congruent_atoms(const PolygonSites& s, const std::vector<AxisNodeData
       if (first_apex == n) first_apex = i;
       node_uf.unite(i, first_apex);
     }
-  // The eight images of a node's circles, computed once per node that needs them.
-  std::vector<std::vector<Image>> images(n);
+  // The eight images of a node's circles, in a direct-mapped cache of kSlots nodes: kept
+  // for every node they cost ~2 KiB each (350 MB at 10^5 segments, and the page faults
+  // and cache misses made this stage superlinear); nodes of nearby edges share slots.
+  constexpr std::uint32_t kSlots = 4096;
+  std::vector<std::vector<Image>> images(std::min(n, kSlots));
+  std::vector<std::uint32_t> image_owner(images.size(), n);
+  auto slot_of = [&](std::uint32_t i) { return i % kSlots; };
   auto images_of = [&](std::uint32_t i) -> const std::vector<Image>& {
-    if (images[i].empty()) {
-      std::array<bool, 8> unique{};
-      std::size_t count = 0;
+    std::vector<Image>& out = images[slot_of(i)];
+    if (image_owner[slot_of(i)] == i) return out;
+    image_owner[slot_of(i)] = i;
+    out.clear();
+    std::array<bool, 8> unique{};
+    std::size_t count = 0;
+    for_each_circle(nodes[i], [&](const VoronoiCircle& c) {
+      if (count < unique.size()) unique[count] = at_most_one_circle(s, c);
+      ++count;
+    });
+    out.reserve(8 * count);
+    for (const auto& a : kLinear) {
+      std::size_t j = 0;
       for_each_circle(nodes[i], [&](const VoronoiCircle& c) {
-        if (count < unique.size()) unique[count] = at_most_one_circle(s, c);
-        ++count;
+        out.push_back(transform_circle(s, gcds, c, a, j < unique.size() && unique[j]));
+        ++j;
       });
-      images[i].reserve(8 * count);
-      for (const auto& a : kLinear) {
-        std::size_t j = 0;
-        for_each_circle(nodes[i], [&](const VoronoiCircle& c) {
-          images[i].push_back(transform_circle(s, c, a, j < unique.size() && unique[j]));
-          ++j;
-        });
-      }
     }
-    return images[i];
+    return out;
   };
-  std::unordered_map<std::vector<std::int64_t>, std::uint32_t, KeyHash> seen;
+  std::unordered_map<KeyBuilder::Key, std::uint32_t, KeyHash> seen;
   const std::vector<bool> node_candidates = candidates(n, [&](std::uint32_t i) -> const Interval& { return nodes[i].radius; }, node_uf);
   for (std::uint32_t i = 0; i < n; ++i) {
     if (!node_candidates[i] || nodes[i].circle.kind == CircleKind::Apex) continue;
@@ -290,7 +313,7 @@ void unite_congruent_atoms(const PolygonSites& s, const std::vector<AxisNodeData
       const KeyBuilder::Key key = k.build();
       if (best.size == 0 || key < best) best = key;
     }
-    const auto [it, fresh] = seen.emplace(best.vec(), i);
+    const auto [it, fresh] = seen.emplace(best, i);
     if (!fresh) node_uf.unite(i, it->second);
   }
   seen.clear();
@@ -310,15 +333,22 @@ void unite_congruent_atoms(const PolygonSites& s, const std::vector<AxisNodeData
     if (!edge_candidates[e]) continue;
     const AxisEdgeData& d = items[e];
     KeyBuilder::Key best;
-    // images_of(i) holds, for each of the eight maps in turn, one image per circle.
-    const std::vector<Image>& iu = images_of(d.u);
+    // images_of(i) holds, for each of the eight maps in turn, one image per circle; u's
+    // are copied when v's would evict them from the shared slot.
+    std::vector<Image> u_copy;
+    const std::vector<Image>* u_images = &images_of(d.u);
+    if (slot_of(d.u) == slot_of(d.v) && d.u != d.v) {
+      u_copy = *u_images;
+      u_images = &u_copy;
+    }
+    const std::vector<Image>& iu = *u_images;
     const std::vector<Image>& iv = images_of(d.v);
     const std::size_t cu = iu.size() / 8, cv = iv.size() / 8;
     for (int a = 0; a < 8; ++a) {
       Obj focus, line;
       if (d.parabolic) {
-        focus = transform_site(s, s.is_point(d.site_a) ? d.site_a : d.site_b, kLinear[a]);
-        line = transform_site(s, s.is_point(d.site_a) ? d.site_b : d.site_a, kLinear[a]);
+        focus = transform_site(s, gcds, s.is_point(d.site_a) ? d.site_a : d.site_b, kLinear[a]);
+        line = transform_site(s, gcds, s.is_point(d.site_a) ? d.site_b : d.site_a, kLinear[a]);
       }
       for (int order = 0; order < 2; ++order)
         for (std::size_t x = 0; x < cu; ++x)
@@ -335,7 +365,7 @@ void unite_congruent_atoms(const PolygonSites& s, const std::vector<AxisNodeData
             if (best.size == 0 || key < best) best = key;
           }
     }
-    const auto [it, fresh] = seen.emplace(best.vec(), e);
+    const auto [it, fresh] = seen.emplace(best, e);
     if (!fresh) edge_uf.unite(e, it->second);
   }
 }

@@ -24,23 +24,34 @@ Ball abs_of(const Ball& a) {
   return r;
 }
 
+// A parabolic edge in its focus frame: the focal parameter p (the distance from the focus
+// to the directrix, left side positive) and the abscissae of the ends along the directrix.
 template <class T>
-T length_of(const PolygonSites& s, const AxisEdgeData& e, const CircleValue<T>& a, const CircleValue<T>& b) {
-  if (!e.parabolic) {
-    const T dx = a.x - b.x, dy = a.y - b.y;
-    return sqrt(dx * dx + dy * dy);
-  }
+struct ParabolaFrame {
+  T p, xa, xb;
+};
+
+template <class T>
+ParabolaFrame<T> parabola_frame(const PolygonSites& s, const AxisEdgeData& e, const CircleValue<T>& a,
+                                const CircleValue<T>& b) {
   const std::uint32_t focus = s.is_point(e.site_a) ? e.site_a : e.site_b;
   const std::uint32_t line = s.is_point(e.site_a) ? e.site_b : e.site_a;
   const Point2 f = s.vertex[focus], la = s.vertex[s.seg_start(line)], lb = s.vertex[s.seg_end(line)];
   const T fx(f.x), fy(f.y);
   const T dx = T(lb.x) - T(la.x), dy = T(lb.y) - T(la.y);
   const T len = sqrt(dx * dx + dy * dy);
-  // Focal parameter: the distance from the focus to the directrix (left side positive).
-  const T p = (dx * (fy - T(la.y)) - dy * (fx - T(la.x))) / len;
-  const T xa = (dx * (a.x - fx) + dy * (a.y - fy)) / len;
-  const T xb = (dx * (b.x - fx) + dy * (b.y - fy)) / len;
-  return abs_of(parabola_arc_primitive(xb, p) - parabola_arc_primitive(xa, p));
+  return {(dx * (fy - T(la.y)) - dy * (fx - T(la.x))) / len, (dx * (a.x - fx) + dy * (a.y - fy)) / len,
+          (dx * (b.x - fx) + dy * (b.y - fy)) / len};
+}
+
+template <class T>
+T length_of(const PolygonSites& s, const AxisEdgeData& e, const CircleValue<T>& a, const CircleValue<T>& b) {
+  if (!e.parabolic) {
+    const T dx = a.x - b.x, dy = a.y - b.y;
+    return sqrt(dx * dx + dy * dy);
+  }
+  const ParabolaFrame<T> q = parabola_frame(s, e, a, b);
+  return abs_of(parabola_arc_primitive(q.xb, q.p) - parabola_arc_primitive(q.xa, q.p));
 }
 
 // Evaluates f() in Arb at increasing precision until it is accurate to `bits` bits; the
@@ -80,39 +91,34 @@ class CircleRadius : public CertifiedConstant {
 
 class EdgeLength : public CertifiedConstant {
  public:
-  EdgeLength(std::shared_ptr<const PolygonSites> s, AxisEdgeData e, VoronoiCircle a, VoronoiCircle b, std::string id)
-      : sites_(std::move(s)), edge_(e), a_(a), b_(b), id_(std::move(id)) {}
+  EdgeLength(std::shared_ptr<const PolygonSites> s, AxisEdgeData e, VoronoiCircle a, VoronoiCircle b, std::string id,
+             std::optional<ArcForm> form = std::nullopt)
+      : sites_(std::move(s)), edge_(e), a_(a), b_(b), id_(std::move(id)), form_(std::move(form)) {}
   void enclose(mpfr_ptr lo, mpfr_ptr hi) const override {
     enclose_with_ball(mpfr_get_prec(lo), lo, hi, cache_, [&] {
       return length_of(*sites_, edge_, solve_ball(*sites_, a_), solve_ball(*sites_, b_));
     });
   }
   std::string identity() const override { return id_; }
+  // Two arcs with exactly equal focal parameters and abscissas (as normalised by
+  // arc_form) have equal lengths; anything else is left undecided.
+  std::optional<bool> equals(const CertifiedConstant& other) const override {
+    const auto* o = dynamic_cast<const EdgeLength*>(&other);
+    if (!o || !form_ || !o->form_) return std::nullopt;
+    auto same = [](const ExactSum& x, const ExactSum& y) { return is_zero_sqrt_part(x - y); };
+    const ArcForm &a = *form_, &b = *o->form_;
+    if (same(a.p, b.p) && ((same(a.xu, b.xu) && same(a.xv, b.xv)) || (same(a.xu, b.xv) && same(a.xv, b.xu))))
+      return true;
+    return std::nullopt;
+  }
 
  private:
   std::shared_ptr<const PolygonSites> sites_;
   AxisEdgeData edge_;
   VoronoiCircle a_, b_;
   std::string id_;
+  std::optional<ArcForm> form_;
   mutable BallCache cache_;
-};
-
-// sqrt(x) for an exact sum x >= 0 that does not denest.
-class SqrtOfSum : public CertifiedConstant {
- public:
-  // The identity is built once: ExactSum::simplify asks for it on every merge.
-  explicit SqrtOfSum(ExactSum x) : x_(std::move(x)), id_("sqrt[" + to_string(x_) + "]") {}
-  void enclose(mpfr_ptr lo, mpfr_ptr hi) const override {
-    x_.enclose(lo, hi);
-    if (mpfr_sgn(lo) < 0) mpfr_set_zero(lo, 1);
-    mpfr_sqrt(lo, lo, MPFR_RNDD);
-    mpfr_sqrt(hi, hi, MPFR_RNDU);
-  }
-  std::string identity() const override { return id_; }
-
- private:
-  ExactSum x_;
-  std::string id_;
 };
 
 }  // namespace
@@ -126,6 +132,27 @@ Ball edge_length(const PolygonSites& s, const AxisEdgeData& e, const CircleValue
   return length_of(s, e, a, b);
 }
 
+// The algebraic parts in double-double, which absorbs the cancellation of S(xi_v) -
+// S(xi_u) on short arcs far from the focus; the transcendental part as one asinh,
+// asinh(zv) - asinh(zu) = asinh(zv sqrt(1 + zu^2) - zu sqrt(1 + zv^2)) (sinh of a
+// difference), whose argument is formed in double-double too. Both parts have the sign
+// of xi_v - xi_u, so their sum does not cancel.
+Interval edge_length(const PolygonSites& s, const AxisEdgeData& e, const CircleValue<DDBall>& a,
+                     const CircleValue<DDBall>& b) {
+  using T = DDBall;
+  if (!e.parabolic) {
+    const T dx = a.x - b.x, dy = a.y - b.y;
+    return sqrt(dx * dx + dy * dy).to_interval();
+  }
+  const ParabolaFrame<T> q = parabola_frame(s, e, a, b);
+  const T &p = q.p, &xa = q.xa, &xb = q.xb;
+  const T za = xa / p, zb = xb / p;
+  const T ca = sqrt(T(1.0) + za * za), cb = sqrt(T(1.0) + zb * zb);
+  const Interval algebraic = (xb * cb - xa * ca).to_interval();
+  const Interval transcendental = asinh_enclosure((zb * ca - za * cb).to_interval());
+  return abs_of(half(algebraic) + half(p.to_interval() * transcendental));
+}
+
 PolygonAxisGeometry::PolygonAxisGeometry(std::shared_ptr<const PolygonSites> sites, mpq_class to_input,
                                          std::vector<AxisNodeData> nodes, std::vector<AxisEdgeData> edges)
     : sites_(std::move(sites)),
@@ -135,7 +162,8 @@ PolygonAxisGeometry::PolygonAxisGeometry(std::shared_ptr<const PolygonSites> sit
       circle_done_(nodes_.size(), 0),
       circles_(nodes_.size()),
       lengths_(edges_.size()),
-      ball_circles_(nodes_.size()) {}
+      ball_circles_(nodes_.size()),
+      dd_circles_(nodes_.size()) {}
 
 const AxisValueClasses& PolygonAxisGeometry::value_classes() const {
   if (!classes_) classes_ = std::make_shared<const AxisValueClasses>(axis_value_classes(*sites_, nodes_, edges_));
@@ -180,13 +208,34 @@ void PolygonAxisGeometry::enclose_length(std::uint32_t edge, mpfr_ptr lo, mpfr_p
   scaled_to_input(ball_length(edge), lo, hi);
 }
 
+const CircleValue<DDBall>& PolygonAxisGeometry::dd_circle(std::uint32_t i) const {
+  if (!dd_circles_[i]) dd_circles_[i] = solve_dd(*sites_, nodes_[i].circle);
+  return *dd_circles_[i];
+}
+
+DDBall PolygonAxisGeometry::scaled_to_input(const DDBall& frame_value) const {
+  // to_input = num / den; exact when both integers fit a double's 53 bits (10^K, 1, ...).
+  const mpz_class &num = to_input_.get_num(), &den = to_input_.get_den();
+  if (mpz_sizeinbase(num.get_mpz_t(), 2) > 53 || mpz_sizeinbase(den.get_mpz_t(), 2) > 53) return DDBall::whole();
+  return frame_value * DDBall(to_input_.get_num().get_d()) / DDBall(to_input_.get_den().get_d());
+}
+
 LongInterval PolygonAxisGeometry::enclose_radius_long(std::uint32_t node) const {
+  const DDBall r = scaled_to_input(dd_circle(node).r);
+  if (r.accurate_to(70)) return r.to_long_interval();
   MpfrBounds b(80);
   enclose_radius(node, b.lo, b.hi);
   return {mpfr_get_ld(b.lo, MPFR_RNDD), mpfr_get_ld(b.hi, MPFR_RNDU)};
 }
 
 LongInterval PolygonAxisGeometry::enclose_length_long(std::uint32_t edge) const {
+  const AxisEdgeData& e = edges_[edge];
+  if (!e.parabolic) {
+    const CircleValue<DDBall>&a = dd_circle(e.u), &b = dd_circle(e.v);
+    const DDBall dx = a.x - b.x, dy = a.y - b.y;
+    const DDBall len = scaled_to_input(sqrt(dx * dx + dy * dy));
+    if (len.accurate_to(70)) return len.to_long_interval();
+  }
   MpfrBounds b(80);
   enclose_length(edge, b.lo, b.hi);
   return {mpfr_get_ld(b.lo, MPFR_RNDD), mpfr_get_ld(b.hi, MPFR_RNDU)};
@@ -220,7 +269,7 @@ ExactSum PolygonAxisGeometry::exact_radius(std::uint32_t node) const {
 // abscissas; S is odd, so (p, {xi_u, xi_v}) up to a common sign names the value. Equal
 // arcs (mirror-symmetric shapes) then share one identity and cancel exactly; without
 // exact end circles the identity falls back to the sites.
-std::string PolygonAxisGeometry::arc_identity(const AxisEdgeData& e, const std::string& ends) const {
+std::optional<ArcForm> PolygonAxisGeometry::arc_form(const AxisEdgeData& e) const {
   const auto& a = exact_circle(e.u);
   const auto& b = exact_circle(e.v);
   if (a && b) {
@@ -239,11 +288,19 @@ std::string PolygonAxisGeometry::arc_identity(const AxisEdgeData& e, const std::
         xu = -xu;
         xv = -xv;
       }
-      std::string su = to_string(xu.v), sv = to_string(xv.v);
-      if (sv < su) std::swap(su, sv);
-      return "arc[" + to_string(p.v) + ";" + su + ";" + sv + "]";
+      return ArcForm{p.v, xu.v, xv.v};
     } catch (const NestedRadical&) {
     }
+  }
+  return std::nullopt;
+}
+
+std::string PolygonAxisGeometry::arc_identity(const AxisEdgeData& e, const std::string& ends,
+                                              const std::optional<ArcForm>& form) const {
+  if (form) {
+    std::string su = to_string(form->xu), sv = to_string(form->xv);
+    if (sv < su) std::swap(su, sv);
+    return "arc[" + to_string(form->p) + ";" + su + ";" + sv + "]";
   }
   return "arc(" + std::to_string(e.site_a) + "," + std::to_string(e.site_b) + ";" + ends + ")";
 }
@@ -253,20 +310,92 @@ ExactSum PolygonAxisGeometry::frame_length(std::uint32_t edge) const {
   const std::string iu = node_identity(e.u), iv = node_identity(e.v);
   const std::string ends = iu < iv ? iu + ";" + iv : iv + ";" + iu;
   if (e.parabolic) {
-    const std::string id = arc_identity(e, ends);
+    std::optional<ArcForm> form = arc_form(e);
+    const std::string id = arc_identity(e, ends, form);
     return ExactSum::constant(
-        std::make_shared<EdgeLength>(sites_, e, nodes_[e.u].circle, nodes_[e.v].circle, id));
+        std::make_shared<EdgeLength>(sites_, e, nodes_[e.u].circle, nodes_[e.v].circle, id, std::move(form)));
   }
   const auto& a = exact_circle(e.u);
   const auto& b = exact_circle(e.v);
   if (!a || !b)
     return ExactSum::constant(
         std::make_shared<EdgeLength>(sites_, e, nodes_[e.u].circle, nodes_[e.v].circle, "segment(" + ends + ")"));
+  if (std::optional<ExactSum> projected = straight_length(e, *a, *b)) return *projected;
   const ExactSum dx = a->x - b->x, dy = a->y - b->y;
   ExactSum squared = multiply(dx, dx) + multiply(dy, dy);
   squared.simplify();
-  if (std::optional<ExactSum> root = sqrt_of_sum(squared)) return *root;
-  return ExactSum::constant(std::make_shared<SqrtOfSum>(squared));
+  return sqrt_term(squared);
+}
+
+// A straight edge lies on the bisector of its two sites, whose direction w is exact:
+// rot90(Q - P) for two points, the normal n for a point on a segment's line, and
+// rot90(u1 - u2) for two lines with unit inward normals u1, u2 (equal signed distances).
+// Its length is |(X_u - X_v) . w| / |w|. The numerator is a sum of square roots; so is
+// 1 / |w| for the first two and for anti-parallel lines (|w| = 2), and then the length
+// is an ExactSum. For two crossing lines 1 / |w|^2 = q is a sum of square roots, and
+// the length sum_i c_i sqrt(r_i) sqrt(q) = sum_i c_i sqrt(r_i q) is written with square
+// roots of sums (number/sqrt_field.h): pieces of one bisector then telescope, and pieces
+// of bisectors of congruent line pairs share the radicand q, so burn times along
+// differently split bisectors cancel exactly (exact equality of radicands).
+std::optional<ExactSum> PolygonAxisGeometry::straight_length(const AxisEdgeData& e, const CircleValue<ExactSum>& a,
+                                                             const CircleValue<ExactSum>& b) const {
+  const PolygonSites& s = *sites_;
+  try {
+    RootSum wx, wy;
+    if (s.is_point(e.site_a) && s.is_point(e.site_b)) {
+      const Point2 p = s.vertex[e.site_a], q = s.vertex[e.site_b];
+      wx = RootSum(p.y) - RootSum(q.y);
+      wy = RootSum(q.x) - RootSum(p.x);
+    } else {
+      auto normal = [&](std::uint32_t site, RootSum& nx, RootSum& ny) {
+        const Point2 p = s.vertex[s.seg_start(site)], q = s.vertex[s.seg_end(site)];
+        nx = RootSum(p.y) - RootSum(q.y);
+        ny = RootSum(q.x) - RootSum(p.x);
+      };
+      RootSum n1x, n1y;
+      normal(s.is_point(e.site_a) ? e.site_b : e.site_a, n1x, n1y);
+      if (s.is_point(e.site_a) || s.is_point(e.site_b)) {
+        wx = n1x;
+        wy = n1y;
+      } else {
+        RootSum n2x, n2y;
+        normal(e.site_b, n2x, n2y);
+        const RootSum l1 = sqrt(n1x * n1x + n1y * n1y), l2 = sqrt(n2x * n2x + n2y * n2y);
+        const RootSum ux = n1x / l1 - n2x / l2, uy = n1y / l1 - n2y / l2;
+        wx = -uy;
+        wy = ux;
+        // Two segments of one line (a collinear vertex): the bisector is its normal there.
+        if (exact_sign((wx * wx + wy * wy).v) == 0) {
+          wx = n1x;
+          wy = n1y;
+        }
+      }
+    }
+    RootSum along = (RootSum(a.x) - RootSum(b.x)) * wx + (RootSum(a.y) - RootSum(b.y)) * wy;
+    const RootSum ww = wx * wx + wy * wy;
+    const int sa = exact_sign(along.v), sw = exact_sign(ww.v);
+    if (sa == 0 || sw <= 0) return std::nullopt;
+    if (sa < 0) along = -along;
+    const RootSum q = RootSum(1.0) / ww;
+    if (std::optional<mpq_class> root = q.v.sqrt_terms().empty() ? rational_sqrt(q.v.rational_part()) : std::nullopt)
+      return (along * RootSum(ExactSum::rational(*root))).v;
+    if (q.v.sqrt_terms().empty()) return (along * RootSum(ExactSum::sqrt_of(q.v.rational_part()))).v;
+    // sum_i c_i sqrt(r_i q), each root denested when it can be.
+    ExactSum out;
+    auto add_root = [&](const mpq_class& c, const mpq_class& r) {
+      ExactSum radicand = q.v;
+      radicand.scale(r);
+      ExactSum term = sqrt_term(radicand);
+      term.scale(c);
+      out += term;
+    };
+    if (sgn(along.v.rational_part()) != 0) add_root(along.v.rational_part(), 1);
+    for (const SqrtTerm& t : along.v.sqrt_terms()) add_root(t.coef, t.radicand);
+    out.simplify();
+    return out;
+  } catch (const NestedRadical&) {
+    return std::nullopt;
+  }
 }
 
 ExactSum PolygonAxisGeometry::exact_length(std::uint32_t edge) const {

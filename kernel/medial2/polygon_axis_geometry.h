@@ -46,11 +46,21 @@ struct AxisEdgeData {
   Interval length;                   // encloses the length in the frame
 };
 
+// A parabolic arc's length |S(xv) - S(xu)| (number/parabolic_arc.h) is a function of
+// these three exact numbers.
+struct ArcForm {
+  ExactSum p, xu, xv;
+};
+
 // Length of an edge from its end circles, in the frame (T = Interval or Ball).
 Interval edge_length(const PolygonSites& s, const AxisEdgeData& e, const CircleValue<Interval>& a,
                      const CircleValue<Interval>& b);
 Ball edge_length(const PolygonSites& s, const AxisEdgeData& e, const CircleValue<Ball>& a,
                  const CircleValue<Ball>& b);
+// From double-double circles (number/dd_ball.h): as tight as double endpoints allow
+// when the circles are accurate, without Arb.
+Interval edge_length(const PolygonSites& s, const AxisEdgeData& e, const CircleValue<DDBall>& a,
+                     const CircleValue<DDBall>& b);
 
 class PolygonAxisGeometry : public MedialGeometry {
  public:
@@ -60,9 +70,10 @@ class PolygonAxisGeometry : public MedialGeometry {
   ExactSum exact_radius(std::uint32_t node) const override;
   ExactSum exact_length(std::uint32_t edge) const override;
   // The burning engine's extended-precision and 128-bit stages (burn2/burn_times.h):
-  // enclosures from the node circles evaluated once in Arb at kBallBits, not from the exact
-  // forms (which are built only when a comparison reaches the exact stage). Requests above
-  // 128 bits go to the exact forms.
+  // enclosures from the node circles evaluated once in double-double (R and straight
+  // lengths at 80 bits) or in Arb at kBallBits, not from the exact forms (which are built
+  // only when a comparison reaches the exact stage). Requests above 128 bits go to the
+  // exact forms.
   void enclose_radius(std::uint32_t node, mpfr_ptr lo, mpfr_ptr hi) const override;
   void enclose_length(std::uint32_t edge, mpfr_ptr lo, mpfr_ptr hi) const override;
   LongInterval enclose_radius_long(std::uint32_t node) const override;
@@ -87,9 +98,16 @@ class PolygonAxisGeometry : public MedialGeometry {
 
  private:
   ExactSum frame_length(std::uint32_t edge) const;
-  std::string arc_identity(const AxisEdgeData& e, const std::string& ends) const;
+  std::optional<ExactSum> straight_length(const AxisEdgeData& e, const CircleValue<ExactSum>& a,
+                                          const CircleValue<ExactSum>& b) const;
+  // The arc's focal parameter and its ends' abscissas, exactly, up to a common sign (S is
+  // odd), or nullopt when an end circle is a nested radical.
+  std::optional<ArcForm> arc_form(const AxisEdgeData& e) const;
+  std::string arc_identity(const AxisEdgeData& e, const std::string& ends, const std::optional<ArcForm>& form) const;
   static constexpr long kBallBits = 192;
   const CircleValue<Ball>& ball_circle(std::uint32_t i) const;  // kBallBits, memoised
+  const CircleValue<DDBall>& dd_circle(std::uint32_t i) const;   // memoised
+  DDBall scaled_to_input(const DDBall& frame_value) const;
   Ball ball_length(std::uint32_t edge) const;
   // lo <= frame_value * to_input <= hi, rounded outwards at the precision of lo and hi.
   void scaled_to_input(const Ball& frame_value, mpfr_ptr lo, mpfr_ptr hi) const;
@@ -102,6 +120,7 @@ class PolygonAxisGeometry : public MedialGeometry {
   mutable std::vector<std::optional<CircleValue<ExactSum>>> circles_;
   mutable std::vector<std::optional<ExactSum>> lengths_;
   mutable std::vector<std::optional<CircleValue<Ball>>> ball_circles_;
+  mutable std::vector<std::optional<CircleValue<DDBall>>> dd_circles_;
   mutable std::shared_ptr<const AxisValueClasses> classes_;
 };
 

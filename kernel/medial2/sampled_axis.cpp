@@ -6,12 +6,14 @@
 #include <CGAL/Triangulation_face_base_with_info_2.h>
 #include <CGAL/Triangulation_vertex_base_with_info_2.h>
 
-#include <chrono>
+#include <memory>
 #include <numeric>
+#include <optional>
 #include <stdexcept>
 #include <string>
 
 #include "geometry2/shape_locator.h"
+#include "medial2/cpu_clock.h"
 #include "medial2/sampled_geometry.h"
 #include "medial2/union_find.h"
 
@@ -21,11 +23,23 @@ namespace {
 
 using K = CGAL::Exact_predicates_inexact_constructions_kernel;
 using Vb = CGAL::Triangulation_vertex_base_with_info_2<std::uint32_t, K>;
-using Fb = CGAL::Triangulation_face_base_with_info_2<std::uint32_t, K>;
+constexpr std::uint32_t kNone = 0xffffffffu;       // a face whose circumcentre is not inside
+constexpr std::uint32_t kUnvisited = 0xfffffffeu;  // a face the pass has not reached yet
+
+// Face info: the candidate id of a face, born unvisited (CGAL constructs every face).
+struct FaceTag {
+  std::uint32_t id = kUnvisited;
+};
+using Fb = CGAL::Triangulation_face_base_with_info_2<FaceTag, K>;
 using Tds = CGAL::Triangulation_data_structure_2<Vb, Fb>;
 using Delaunay = CGAL::Delaunay_triangulation_2<K, Tds>;
-constexpr std::uint32_t kNone = 0xffffffffu;
 
+// Two adjacent candidates a < b, and whether their shared Delaunay edge joins
+// consecutive samples of one ring (rule (a) of the header).
+struct Adjacency {
+  std::uint32_t a, b;
+  bool boundary_dual;
+};
 
 bool overlaps(const IntervalPoint2& a, const IntervalPoint2& b) {
   return !(a.x.hi < b.x.lo || b.x.hi < a.x.lo || a.y.hi < b.y.lo || b.y.hi < a.y.lo);
@@ -49,18 +63,23 @@ class SampledAxisBuilder {
   }
 
   MedialGraph build(SampledAxisReport& report) {
-    const auto t0 = std::chrono::steady_clock::now();
+    report.samples = points_.size();  // before assemble() moves the points into the geometry
+    const double t0 = thread_seconds();
     triangulate();
-    const auto t1 = std::chrono::steady_clock::now();
-    number_faces();
+    const double t1 = thread_seconds();
+    locate_circumcentres(report);
+    dt_.clear();
+    const double t2 = thread_seconds();
     merge_cocircular(report);
+    collect_edges(report);
+    const double t3 = thread_seconds();
     MedialGraph g = assemble(report);
-
-    const auto t2 = std::chrono::steady_clock::now();
-    report.samples = points_.size();
-    report.delaunay_triangles = faces_.size();
-    report.delaunay_seconds = std::chrono::duration<double>(t1 - t0).count();
-    report.axis_seconds = std::chrono::duration<double>(t2 - t1).count();
+    const double t4 = thread_seconds();
+    report.delaunay_seconds = t1 - t0;
+    report.locate_seconds = t2 - t1;
+    report.edges_seconds = t3 - t2;
+    report.graph_seconds = t4 - t3;
+    report.axis_seconds = t4 - t1;
     return g;
   }
 
@@ -76,54 +95,73 @@ class SampledAxisBuilder {
     if (dt_.dimension() < 2) throw std::invalid_argument(shape_.name + ": boundary samples are collinear");
   }
 
-  // Copies the triangulation into flat arrays (triangles, neighbours, circumcircles) and
-  // releases it: everything after this reads only the arrays.
-  void number_faces() {
-    std::uint32_t count = 0;
-    for (auto f = dt_.all_faces_begin(); f != dt_.all_faces_end(); ++f)
-      f->info() = dt_.is_infinite(f) ? kNone : count++;
-    faces_.reserve(count);
-    neighbours_.reserve(count);
-    centers_.reserve(count);
-    radii_.reserve(count);
-    for (auto f = dt_.finite_faces_begin(); f != dt_.finite_faces_end(); ++f) {
-      const std::array<std::uint32_t, 3> t{f->vertex(0)->info(), f->vertex(1)->info(), f->vertex(2)->info()};
-      faces_.push_back(t);
-      neighbours_.push_back({f->neighbor(0)->info(), f->neighbor(1)->info(), f->neighbor(2)->info()});
-      const Circle circle = interval_circle(points_[t[0]], points_[t[1]], points_[t[2]]);
-      centers_.push_back(circle.center);
-      radii_.push_back(circle.radius);
-    }
-    dt_.clear();
-  }
-
-  // Calls f(face, neighbour, i) once for every pair of adjacent finite triangles; i is the
-  // index in `face` of the vertex opposite the shared edge.
-  template <class F>
-  void for_each_adjacent_pair(F&& f) const {
-    for (std::uint32_t a = 0; a < faces_.size(); ++a)
-      for (int i = 0; i < 3; ++i) {
-        const std::uint32_t b = neighbours_[a][i];
-        if (b != kNone && a < b) f(a, b, i);
+  // One pass over the finite triangles, in the triangulation's own storage (no copy):
+  // the circumcircle's enclosure, then the centre's side of the shape boundary, from the
+  // locator's empty cells where possible (no exact arithmetic), exactly otherwise.
+  // Triangles with the centre strictly inside become candidates, numbered in storage
+  // order (face info); the others get kNone. A candidate's neighbours that the pass has
+  // already numbered are its adjacent candidates with smaller ids: every adjacent pair is
+  // found once, with the neighbour's info read once (the memory traffic of this stage),
+  // and pairs with overlapping centres get CGAL's exact in-circle test for cocircularity.
+  void locate_circumcentres(SampledAxisReport& report) {
+    locator_ = std::make_unique<ShapeLocator>(shape_, dt_.number_of_faces());
+    const ShapeLocator& locator = *locator_;
+    const auto in_circle = K().side_of_oriented_circle_2_object();
+    auto infinite = dt_.incident_faces(dt_.infinite_vertex()), done = infinite;
+    do {
+      infinite->info().id = kNone;
+    } while (++infinite != done);
+    // The faces are visited in storage order; their vertices and neighbours are scattered
+    // in memory, so those of the face kAhead places further are prefetched.
+    constexpr int kAhead = 8;
+    auto ahead = dt_.all_faces_begin();
+    for (int k = 0; k < kAhead && ahead != dt_.all_faces_end(); ++k) ++ahead;
+    for (auto f = dt_.all_faces_begin(); f != dt_.all_faces_end(); ++f) {
+      if (ahead != dt_.all_faces_end()) {
+        for (int i = 0; i < 3; ++i) {
+          __builtin_prefetch(&*ahead->vertex(i));
+          __builtin_prefetch(&*ahead->neighbor(i));
+        }
+        ++ahead;
       }
+      if (dt_.is_infinite(f)) continue;
+      ++report.delaunay_triangles;
+      const std::array<std::uint32_t, 3> t{f->vertex(0)->info(), f->vertex(1)->info(), f->vertex(2)->info()};
+      const std::array<Point2, 3> x{point_of(f->vertex(0)), point_of(f->vertex(1)), point_of(f->vertex(2))};
+      const Circle circle = interval_circle(x[0], x[1], x[2]);
+      std::optional<BoundedSide> side = locator.locate_in_empty_cell(circle.center);
+      if (!side) {
+        side = locator.locate(LazyPoint::circumcenter(x[0], x[1], x[2], circle.center));
+        ++report.exact_locations;
+      }
+      if (*side != BoundedSide::Inside) {
+        f->info().id = kNone;
+        continue;
+      }
+      const std::uint32_t b = static_cast<std::uint32_t>(triangles_.size());
+      f->info().id = b;
+      triangles_.push_back(t);
+      circles_.push_back(circle);
+      for (int i = 0; i < 3; ++i) {
+        const std::uint32_t a = f->neighbor(i)->info().id;
+        if (a >= kUnvisited) continue;
+        adjacent_.push_back({a, b, consecutive_samples(t[Delaunay::ccw(i)], t[Delaunay::cw(i)])});
+        if (overlaps(circles_[a].center, circle.center) &&
+            in_circle(f->vertex(0)->point(), f->vertex(1)->point(), f->vertex(2)->point(),
+                      dt_.mirror_vertex(f, i)->point()) == CGAL::ON_ORIENTED_BOUNDARY)
+          cocircular_.emplace_back(a, b);
+      }
+    }
   }
 
   // Adjacent triangles with cocircular vertices share their circumcentre: one node.
   void merge_cocircular(SampledAxisReport& report) {
-    groups_ = UnionFind(faces_.size());
-    const auto in_circle = K().side_of_oriented_circle_2_object();
-    const auto point = [&](std::uint32_t sample) { return K::Point_2(points_[sample].x, points_[sample].y); };
-    for_each_adjacent_pair([&](std::uint32_t a, std::uint32_t b, int) {
-      if (!overlaps(centers_[a], centers_[b])) return;
-      int j = 0;
-      while (neighbours_[b][j] != a) ++j;
-      const auto& t = faces_[a];
-      if (in_circle(point(t[0]), point(t[1]), point(t[2]), point(faces_[b][j])) == CGAL::ON_ORIENTED_BOUNDARY) {
-        groups_.unite(a, b);
-        ++report.merged_triangles;
-      }
-    });
+    groups_ = UnionFind(triangles_.size());
+    for (const auto& [a, b] : cocircular_) groups_.unite(a, b);
+    report.merged_triangles = cocircular_.size();
   }
+
+  static Point2 point_of(Delaunay::Vertex_handle v) { return {v->point().x(), v->point().y()}; }
 
   bool consecutive_samples(std::uint32_t a, std::uint32_t b) const {
     if (ring_of_[a] != ring_of_[b]) return false;
@@ -132,45 +170,56 @@ class SampledAxisBuilder {
     return (i + 1) % n == j || (j + 1) % n == i;
   }
 
-  LazyPoint center_of(std::uint32_t face) const {
-    const auto& t = faces_[face];
-    return LazyPoint::circumcenter(points_[t[0]], points_[t[1]], points_[t[2]], centers_[face]);
+  LazyPoint center_of(std::uint32_t candidate) const {
+    const auto& t = triangles_[candidate];
+    return LazyPoint::circumcenter(points_[t[0]], points_[t[1]], points_[t[2]], circles_[candidate].center);
   }
 
+  // The Voronoi edges between candidates of different groups, by the rules of the header.
+  void collect_edges(SampledAxisReport& report) {
+    for (const Adjacency& p : adjacent_) {
+      const std::uint32_t ra = groups_.find(p.a), rb = groups_.find(p.b);
+      if (ra == rb) continue;
+      if (p.boundary_dual) {
+        ++report.boundary_dual_edges;
+        continue;
+      }
+      std::optional<bool> meets = locator_->segment_meets_boundary_in_empty_cells(circles_[ra].center, circles_[rb].center);
+      if (!meets) meets = locator_->segment_meets_boundary(center_of(ra), center_of(rb));
+      if (*meets) {
+        ++report.crossing_edges;
+        continue;
+      }
+      ends_.emplace_back(ra, rb);
+    }
+    adjacent_ = {};
+    report.predicates = locator_->counters();
+  }
+
+  // Nodes are the group representatives (the smallest candidate of each group), in
+  // candidate order; then the largest component (see keep_largest_component).
   MedialGraph assemble(SampledAxisReport& report) {
-    ShapeLocator locator(shape_, faces_.size());
-    std::vector<std::uint32_t> node_of(faces_.size(), kNone);
+    std::vector<std::uint32_t> node_of(triangles_.size(), kNone);
     std::vector<MedialNode> nodes;
     std::vector<std::array<std::uint32_t, 3>> node_triangle;
-    for (std::uint32_t f = 0; f < faces_.size(); ++f) {
-      if (groups_.find(f) != f) continue;
-      if (locator.locate(center_of(f)) != BoundedSide::Inside) continue;
-      node_of[f] = static_cast<std::uint32_t>(nodes.size());
-      const IntervalPoint2& c = centers_[f];
-      nodes.push_back({Point2{c.x.mid(), c.y.mid()}, radii_[f], std::max(c.x.radius(), c.y.radius())});
-      node_triangle.push_back(faces_[f]);
+    for (std::uint32_t a = 0; a < triangles_.size(); ++a) {
+      if (groups_.find(a) != a) continue;
+      node_of[a] = static_cast<std::uint32_t>(nodes.size());
+      const IntervalPoint2& c = circles_[a].center;
+      nodes.push_back({Point2{c.x.mid(), c.y.mid()}, circles_[a].radius, std::max(c.x.radius(), c.y.radius())});
+      node_triangle.push_back(triangles_[a]);
     }
     std::vector<MedialEdge> edges;
-    std::vector<std::pair<std::uint32_t, std::uint32_t>> ends;
-    for_each_adjacent_pair([&](std::uint32_t a, std::uint32_t b, int i) {
-      const std::uint32_t ra = groups_.find(a), rb = groups_.find(b);
-      if (ra == rb || node_of[ra] == kNone || node_of[rb] == kNone) return;
-      if (consecutive_samples(faces_[a][(i + 1) % 3], faces_[a][(i + 2) % 3])) {
-        ++report.boundary_dual_edges;
-        return;
-      }
-      if (locator.segment_meets_boundary(center_of(ra), center_of(rb))) {
-        ++report.crossing_edges;
-        return;
-      }
-      ends.emplace_back(node_of[ra], node_of[rb]);
-      edges.push_back({node_of[ra], node_of[rb], EdgeKind::Segment, interval_distance(centers_[ra], centers_[rb])});
-    });
+    edges.reserve(ends_.size());
+    for (auto& [a, b] : ends_) {
+      edges.push_back({node_of[a], node_of[b], EdgeKind::Segment, interval_distance(circles_[a].center, circles_[b].center)});
+      a = node_of[a];
+      b = node_of[b];
+    }
     report.inside_nodes = nodes.size();
-    report.predicates = locator.counters();
-    keep_largest_component(nodes, node_triangle, edges, ends, report);
+    keep_largest_component(nodes, node_triangle, edges, ends_, report);
     report.edges = edges.size();
-    auto geometry = std::make_shared<SampledVoronoiGeometry>(points_, std::move(node_triangle), std::move(ends));
+    auto geometry = std::make_shared<SampledVoronoiGeometry>(std::move(points_), std::move(node_triangle), std::move(ends_));
     return MedialGraph(std::move(nodes), std::move(edges), std::move(geometry));
   }
 
@@ -219,10 +268,11 @@ class SampledAxisBuilder {
   std::vector<Point2> points_;
   std::vector<std::uint32_t> ring_of_, ring_start_;
   Delaunay dt_;
-  std::vector<std::array<std::uint32_t, 3>> faces_;       // sample ids per finite triangle
-  std::vector<std::array<std::uint32_t, 3>> neighbours_;  // triangle across the edge opposite vertex i
-  std::vector<IntervalPoint2> centers_;
-  std::vector<Interval> radii_;
+  std::unique_ptr<ShapeLocator> locator_;
+  std::vector<std::array<std::uint32_t, 3>> triangles_;  // per candidate: its sample ids
+  std::vector<Circle> circles_;                          // per candidate: its circumcircle
+  std::vector<Adjacency> adjacent_;
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> cocircular_, ends_;
   UnionFind groups_;
 };
 

@@ -40,8 +40,13 @@ struct SampledAxisReport {
   std::uint64_t edges = 0;
   std::uint64_t components = 0;           // of the Voronoi graph, before fragments are dropped
   std::uint64_t fragment_nodes = 0;       // nodes in the dropped components
+  std::uint64_t exact_locations = 0;       // centres located exactly (not in an empty locator cell)
   OrientationStats predicates;            // orientation filter successes and exact fallbacks
+  // Thread CPU seconds (they do not count time the CPU spent on other processes).
   double delaunay_seconds = 0;
+  double locate_seconds = 0;               // circumcircles, inside tests, adjacency, freeing the triangulation
+  double edges_seconds = 0;                // cocircular merging and the Voronoi edges
+  double graph_seconds = 0;                // the largest component and the medial graph
   double axis_seconds = 0;                 // everything after the triangulation
 };
 

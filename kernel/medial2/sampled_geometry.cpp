@@ -86,12 +86,12 @@ SampledVoronoiGeometry::SampledVoronoiGeometry(std::vector<Point2> samples,
     : samples_(std::move(samples)), triangles_(std::move(node_triangles)), ends_(std::move(edge_ends)) {}
 
 const IntegerCircumcenter& SampledVoronoiGeometry::center(std::uint32_t node) const {
-  if (centers_.size() < triangles_.size()) centers_.resize(triangles_.size());
-  if (!centers_[node]) {
+  auto it = centers_.find(node);
+  if (it == centers_.end()) {
     const auto& t = triangles_[node];
-    centers_[node] = std::make_unique<IntegerCircumcenter>(integer_circumcenter(samples_[t[0]], samples_[t[1]], samples_[t[2]]));
+    it = centers_.emplace(node, integer_circumcenter(samples_[t[0]], samples_[t[1]], samples_[t[2]])).first;
   }
-  return *centers_[node];
+  return it->second;
 }
 
 SampledVoronoiGeometry::SquaredLength SampledVoronoiGeometry::squared_radius(std::uint32_t node) const {
@@ -130,7 +130,6 @@ void SampledVoronoiGeometry::enclose_length(std::uint32_t edge, mpfr_ptr lo, mpf
 }
 
 const SampledVoronoiGeometry::LongCircle& SampledVoronoiGeometry::long_circle_of(std::uint32_t node) const {
-  if (long_circles_.size() < triangles_.size()) long_circles_.resize(triangles_.size());
   LongCircle& c = long_circles_[node];
   if (c.state == 0) {
     const auto& t = triangles_[node];

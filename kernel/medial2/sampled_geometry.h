@@ -16,6 +16,7 @@
 #include <array>
 #include <cstdint>
 #include <memory>
+#include <unordered_map>
 #include <vector>
 
 #include "medial2/medial_graph.h"
@@ -65,8 +66,9 @@ class SampledVoronoiGeometry : public MedialGeometry {
   };
   const LongCircle& long_circle_of(std::uint32_t node) const;
 
-  mutable std::vector<std::unique_ptr<IntegerCircumcenter>> centers_;  // by node, on demand
-  mutable std::vector<LongCircle> long_circles_;                        // by node, on demand
+  // By node, on demand: the burning engine asks for few of them (near-ties only).
+  mutable std::unordered_map<std::uint32_t, IntegerCircumcenter> centers_;
+  mutable std::unordered_map<std::uint32_t, LongCircle> long_circles_;
 };
 
 }  // namespace grassfire

@@ -2,6 +2,7 @@
 #include "medial2/voronoi_circle.h"
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 #include <stdexcept>
 
@@ -17,6 +18,8 @@ using Exact = RootSum;
 bool surely_nonzero(const Interval& a) { return a.lo > 0 || a.hi < 0; }
 bool surely_nonzero(const Ball& a) { return a.sign() == 1 || a.sign() == -1; }
 bool surely_nonzero(const Exact& a) { return exact_sign(a.v) != 0; }
+bool surely_nonzero(const DDBall& a) { return a.sign() == 1 || a.sign() == -1; }
+DDBall combine(const DDBall& a, const DDBall& b) { return intersect(a, b); }
 Interval combine(const Interval& a, const Interval& b) { return intersect(a, b); }
 Ball combine(const Ball& a, const Ball& b) { return intersect(a, b); }
 Exact combine(const Exact& a, const Exact&) { return a; }
@@ -32,6 +35,10 @@ Ball whole<Ball>() {
   Ball b;
   arb_indeterminate(b.get());
   return b;
+}
+template <>
+DDBall whole<DDBall>() {
+  return DDBall::whole();
 }
 template <>
 Exact whole<Exact>() {
@@ -121,6 +128,19 @@ CircleValue<T> solve_pss(const Pt<T>& p, const Line<T>& l1, const Line<T>& l2, i
   return {x0 + r * wx, y0 + r * wy, r};
 }
 
+// Circle through P tangent to Li and Lj, with P on Li: it touches Li at P, so its centre
+// is P + R ni / |ni|, and the tangency to Lj, (nj . X + cj) / |nj| = R, is linear in R:
+// R = gj |ni| / (|ni| |nj| - ni . nj) with gj = nj . P + cj.
+template <class T>
+CircleValue<T> solve_pss_tangent(const Pt<T>& p, const Line<T>& li, const Line<T>& lj) {
+  const T si = sqrt(li.N), sij = sqrt(li.N * lj.N);
+  const T m = li.nx * lj.nx + li.ny * lj.ny;
+  const T g = lj.nx * p.x + lj.ny * p.y + lj.c;
+  const T r = g * si / (sij - m);
+  const T k = r / si;
+  return {p.x + k * li.nx, p.y + k * li.ny, r};
+}
+
 // Circle through P tangent to two anti-parallel lines (a strip): R is half the width,
 // the centre on the mid-line at sqrt(d1 d2) from P's foot, on the side that makes the
 // tangency points run L1, L2, P counter-clockwise.
@@ -163,7 +183,10 @@ CircleValue<T> solve(const PolygonSites& s, const VoronoiCircle& c) {
     case CircleKind::PPSLinear:
       return solve_pps(point_of<T>(s, id[0]), point_of<T>(s, id[1]), line_of<T>(s, id[2]),
                        c.kind == CircleKind::PPSLinear, c.root);
-    case CircleKind::PSS: return solve_pss(point_of<T>(s, id[0]), line_of<T>(s, id[1]), line_of<T>(s, id[2]), c.root);
+    case CircleKind::PSS:
+      if (c.tangent)
+        return solve_pss_tangent(point_of<T>(s, id[0]), line_of<T>(s, id[c.tangent]), line_of<T>(s, id[3 - c.tangent]));
+      return solve_pss(point_of<T>(s, id[0]), line_of<T>(s, id[1]), line_of<T>(s, id[2]), c.root);
     case CircleKind::PSSParallel:
       return solve_pss_parallel(point_of<T>(s, id[0]), line_of<T>(s, id[1]), line_of<T>(s, id[2]));
     case CircleKind::SSS: return solve_sss(line_of<T>(s, id[0]), line_of<T>(s, id[1]), line_of<T>(s, id[2]));
@@ -173,10 +196,40 @@ CircleValue<T> solve(const PolygonSites& s, const VoronoiCircle& c) {
 
 mpq_class q(double d) { return mpq_class(d); }
 
-// Exact sign of rhs - beta w for the PPS root choice (see classify_circle).
+// The PPS root choice (see classify_circle): the exact sign of rhs - beta w, with
+// linear (a = 0) and double-root (delta = 0) cases. First in double-double balls, which
+// decide every case whose quantities they separate from zero; exactly otherwise.
+template <class T>
+struct PpsTest {
+  T aa, delta, test;
+};
+
+template <class T>
+PpsTest<T> pps_test(const Point2& p, const Point2& qq, const Point2& a, const Point2& b) {
+  const T nx = T(a.y) - T(b.y), ny = T(b.x) - T(a.x);
+  const T c = -(nx * T(a.x) + ny * T(a.y)), N = nx * nx + ny * ny;
+  const T mx = (T(p.x) + T(qq.x)) * T(0.5), my = (T(p.y) + T(qq.y)) * T(0.5);
+  const T dx = T(p.y) - T(qq.y), dy = T(qq.x) - T(p.x);
+  const T g0 = nx * mx + ny * my + c, g1 = nx * dx + ny * dy;
+  const T h2 = dx * dx + dy * dy, h0 = h2 * T(0.25);
+  const T aa = g1 * g1 - N * h2;
+  const T delta = g0 * g0 * h2 + aa * h0;
+  // orient(P, Q, foot) > 0  <=>  (alpha + sigma beta) w - g0 k a < 0, with a < 0.
+  const T k = (T(qq.x) - T(p.x)) * ny - (T(qq.y) - T(p.y)) * nx;
+  const T w = N * h2 - g1 * k, alpha = -(g0 * g1);
+  const T rhs = g0 * k * aa - alpha * w;
+  return {aa, delta, rhs - sqrt(N * delta) * w};
+}
+
 int pps_root(const PolygonSites& s, std::uint32_t ps, std::uint32_t qs, std::uint32_t ls, bool* linear) {
   const Point2 p = s.vertex[ps], qq = s.vertex[qs];
   const Point2 a = s.vertex[s.seg_start(ls)], b = s.vertex[s.seg_end(ls)];
+  const PpsTest<DDBall> f = pps_test<DDBall>(p, qq, a, b);
+  const int fa = f.aa.sign(), fd = f.delta.sign(), ft = f.test.sign();
+  if ((fa == 1 || fa == -1) && fd == 1 && (ft == 1 || ft == -1)) {
+    *linear = false;
+    return ft;
+  }
   const mpq_class nx = q(a.y) - q(b.y), ny = q(b.x) - q(a.x);
   const mpq_class c = -(nx * q(a.x) + ny * q(a.y)), N = nx * nx + ny * ny;
   const mpq_class mx = (q(p.x) + q(qq.x)) / 2, my = (q(p.y) + q(qq.y)) / 2;
@@ -188,7 +241,6 @@ int pps_root(const PolygonSites& s, std::uint32_t ps, std::uint32_t qs, std::uin
   if (*linear) return 1;
   const mpq_class delta = g0 * g0 * h2 + aa * h0;
   if (sgn(delta) == 0) return 1;
-  // orient(P, Q, foot) > 0  <=>  (alpha + sigma beta) w - g0 k a < 0, with a < 0.
   const mpq_class k = (q(qq.x) - q(p.x)) * ny - (q(qq.y) - q(p.y)) * nx;
   const mpq_class w = N * h2 - g1 * k, alpha = -g0 * g1;
   const mpq_class rhs = g0 * k * aa - alpha * w;
@@ -202,7 +254,17 @@ int pps_root(const PolygonSites& s, std::uint32_t ps, std::uint32_t qs, std::uin
 int cross_sign(const PolygonSites& s, std::uint32_t l1, std::uint32_t l2) {
   const Point2 a1 = s.vertex[s.seg_start(l1)], b1 = s.vertex[s.seg_end(l1)];
   const Point2 a2 = s.vertex[s.seg_start(l2)], b2 = s.vertex[s.seg_end(l2)];
-  // cross(n1, n2) = cross(d1, d2) for the left normals n = rot90(d).
+  // cross(n1, n2) = cross(d1, d2) for the left normals n = rot90(d). Integer frames
+  // (|x| < 2^31, the Boost path) fit 128-bit integers exactly.
+  auto small = [](const Point2& v) {
+    return std::fabs(v.x) < 0x1p31 && std::fabs(v.y) < 0x1p31 && v.x == std::floor(v.x) && v.y == std::floor(v.y);
+  };
+  if (small(a1) && small(b1) && small(a2) && small(b2)) {
+    const auto i = [](double x) { return static_cast<std::int64_t>(x); };
+    const __int128 c = static_cast<__int128>(i(b1.x) - i(a1.x)) * (i(b2.y) - i(a2.y)) -
+                       static_cast<__int128>(i(b1.y) - i(a1.y)) * (i(b2.x) - i(a2.x));
+    return c > 0 ? 1 : c < 0 ? -1 : 0;
+  }
   const mpq_class d1x = q(b1.x) - q(a1.x), d1y = q(b1.y) - q(a1.y);
   const mpq_class d2x = q(b2.x) - q(a2.x), d2y = q(b2.y) - q(a2.y);
   return sgn(mpq_class(d1x * d2y - d1y * d2x));
@@ -246,6 +308,11 @@ VoronoiCircle classify_circle(const PolygonSites& s, const VoronoiTopology::Vert
       const int cs = cross_sign(s, c.sites[1], c.sites[2]);
       c.kind = cs == 0 ? CircleKind::PSSParallel : CircleKind::PSS;
       c.root = static_cast<std::int8_t>(cs > 0 ? -1 : 1);
+      if (c.kind == CircleKind::PSS)
+        for (std::uint8_t i = 1; i <= 2 && !c.tangent; ++i) {
+          const Point2 a = s.vertex[s.seg_start(c.sites[i])], b = s.vertex[s.seg_end(c.sites[i])];
+          if (orientation(a, b, s.vertex[c.sites[0]]) == 0) c.tangent = i;
+        }
       break;
     }
     default: c.kind = CircleKind::SSS; break;
@@ -282,6 +349,7 @@ bool at_most_one_circle(const PolygonSites& s, const VoronoiCircle& c) {
 
 CircleValue<Interval> solve_interval(const PolygonSites& s, const VoronoiCircle& c) { return solve<Interval>(s, c); }
 CircleValue<Ball> solve_ball(const PolygonSites& s, const VoronoiCircle& c) { return solve<Ball>(s, c); }
+CircleValue<DDBall> solve_dd(const PolygonSites& s, const VoronoiCircle& c) { return solve<DDBall>(s, c); }
 
 std::optional<CircleValue<ExactSum>> solve_exact(const PolygonSites& s, const VoronoiCircle& c) {
   try {

@@ -8,11 +8,13 @@
 // bisector of two lines: in general a nested radical), PSS with parallel lines (a strip),
 // SSS (incircle of three lines: a multiquadratic number). Where two circles fit the
 // sites (PPS, PSS), the one whose tangency points run counter-clockwise in the sites'
-// order is chosen, by exact signs of rationals (PPS) or of one cross product (PSS):
+// order is chosen, by exact signs of rationals (PPS) or of one cross product (PSS)
+// (a PSS circle whose point lies on one of its lines is unique and has a linear formula):
 // for PSS with lines L1, L2 after the point, the smaller circle is the right one exactly
 // when cross(n1, n2) > 0 (the tangency points then run L1, L2, P counter-clockwise).
-// One formula, three number types: double intervals (fast filter), Arb balls (any
-// precision), and exact sums of square roots (nullopt where the value is a nested
+// One formula, four number types: double intervals (fast filter), double-double balls
+// (when the intervals lose too much to cancellation), Arb balls (any precision), and
+// exact sums of square roots (nullopt where the value is a nested
 // radical that does not denest; it is then a certified constant, polygon_axis.h).
 // Contract: the sites come from a validated polygon and define a Voronoi vertex.
 // Complexity: O(1) arithmetic per circle.
@@ -25,6 +27,7 @@
 
 #include "medial2/segment_voronoi.h"
 #include "number/ball.h"
+#include "number/dd_ball.h"
 #include "number/exact_sum.h"
 #include "number/interval.h"
 
@@ -38,6 +41,10 @@ struct VoronoiCircle {
   // Roles: Apex (p); PPP (P1, P2, P3); PPS (P, Q, L); PSS (P, L1, L2); SSS (L1, L2, L3).
   std::array<std::uint32_t, 3> sites{};
   std::int8_t root = 1;  // PPS: sign of the root term; PSS: -1 smaller, +1 larger circle
+  // PSS whose point lies on the line of L1 (1) or L2 (2), e.g. a reflex vertex and one of
+  // its own segments: the circle touches that line at P, so R is linear (solve_pss_tangent
+  // in voronoi_circle.cpp) and the circle lies in Q(sqrt N1, sqrt N2), never nested.
+  std::uint8_t tangent = 0;
 };
 
 VoronoiCircle classify_circle(const PolygonSites& sites, const VoronoiTopology::Vertex& vertex);
@@ -59,6 +66,8 @@ bool at_most_one_circle(const PolygonSites& sites, const VoronoiCircle& c);
 
 CircleValue<Interval> solve_interval(const PolygonSites& sites, const VoronoiCircle& c);
 CircleValue<Ball> solve_ball(const PolygonSites& sites, const VoronoiCircle& c);
+// In double-double balls (number/dd_ball.h): the stage between intervals and Arb.
+CircleValue<DDBall> solve_dd(const PolygonSites& sites, const VoronoiCircle& c);
 std::optional<CircleValue<ExactSum>> solve_exact(const PolygonSites& sites, const VoronoiCircle& c);
 
 }  // namespace grassfire

@@ -177,6 +177,26 @@ void ExactSum::simplify() {
     if (sgn(t.coef) != 0) constants_.push_back(std::move(t));
 }
 
+void ExactSum::merge_equal_constants() {
+  for (std::size_t i = 0; i < constants_.size(); ++i) {
+    if (sgn(constants_[i].coef) == 0) continue;
+    const Interval a = constants_[i].value->approx();
+    for (std::size_t j = i + 1; j < constants_.size(); ++j) {
+      if (sgn(constants_[j].coef) == 0) continue;
+      const Interval b = constants_[j].value->approx();
+      if (a.hi < b.lo || b.hi < a.lo) continue;
+      if (constants_[i].value->equals(*constants_[j].value).value_or(false)) {
+        constants_[i].coef += constants_[j].coef;
+        constants_[j].coef = 0;
+      }
+    }
+  }
+  std::vector<ConstantTerm> kept;
+  for (ConstantTerm& t : constants_)
+    if (sgn(t.coef) != 0) kept.push_back(std::move(t));
+  constants_ = std::move(kept);
+}
+
 Interval ExactSum::approx() const {
   Interval sum = grassfire::enclose(rational_);
   for (const SqrtTerm& t : sqrt_) sum += grassfire::enclose(t.coef) * sqrt(grassfire::enclose(t.radicand));
@@ -271,6 +291,7 @@ int sign(const ExactSum& input, NumberStats* stats) {
       return s;
     }
   }
+  if (!x.constant_terms().empty()) x.merge_equal_constants();
   if (x.constant_terms().empty() && is_zero_sqrt_part(x)) {
     ++st.exact_zero;
     return 0;

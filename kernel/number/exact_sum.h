@@ -10,8 +10,10 @@
 // terms by square class the sum is zero iff every class coefficient is zero. A nonzero
 // sum is then separated from zero by raising the precision, which terminates.
 // Certified constants (transcendental values such as parabolic arc lengths, issue 4)
-// cancel only by identity; a sum with uncancelled constants that no precision up to
-// kMaxBits separates from zero is reported as zero and counted as an uncertified tie.
+// cancel by identity, or, when no precision up to 512 bits separates the sum from zero,
+// by exact equality of pairs (CertifiedConstant::equals) among those whose enclosures
+// overlap; a sum with uncancelled constants that no precision up to kMaxBits separates
+// from zero is reported as zero and counted as an uncertified tie.
 // Complexity: O(k log k) for k terms plus the MPFR work; the zero test does pairwise
 // perfect-square tests only inside buckets of equal Legendre-symbol fingerprints.
 #pragma once
@@ -21,6 +23,7 @@
 
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -36,6 +39,13 @@ class CertifiedConstant {
   virtual void enclose(mpfr_ptr lo, mpfr_ptr hi) const = 0;
   // Constants with equal identity strings are equal; distinct strings say nothing.
   virtual std::string identity() const = 0;
+  // Exact equality with another constant when this pair can be decided exactly (for
+  // example two square roots of sums of square roots, equal exactly when the sums are:
+  // number/sqrt_field.h); nullopt when it cannot. Never decided from enclosures alone.
+  virtual std::optional<bool> equals(const CertifiedConstant& other) const {
+    (void)other;
+    return std::nullopt;
+  }
   // The 53-bit enclosure, computed once (sign() of a sum asks for it on every filter pass).
   const Interval& approx() const;
 
@@ -75,6 +85,9 @@ class ExactSum {
   // Merges equal radicands and equal constants, moves square radicands into the
   // rational part and drops zero coefficients. The value does not change.
   void simplify();
+  // Merges constants proved equal by CertifiedConstant::equals (pairs whose double
+  // enclosures overlap). The value does not change. O(k^2) pairs for k constants.
+  void merge_equal_constants();
 
   Interval approx() const;                       // certified double enclosure
   void enclose(mpfr_ptr lo, mpfr_ptr hi) const;  // at the precision of lo and hi

@@ -11,23 +11,6 @@ namespace grassfire {
 
 namespace {
 
-// sqrt(x) for an exact sum x >= 0 that does not denest; equal texts, equal values.
-class RootOfSum : public CertifiedConstant {
- public:
-  explicit RootOfSum(ExactSum x) : x_(std::move(x)), id_("sqrt[" + to_string(x_) + "]") {}
-  void enclose(mpfr_ptr lo, mpfr_ptr hi) const override {
-    x_.enclose(lo, hi);
-    if (mpfr_sgn(lo) < 0) mpfr_set_zero(lo, 1);
-    mpfr_sqrt(lo, lo, MPFR_RNDD);
-    mpfr_sqrt(hi, hi, MPFR_RNDU);
-  }
-  std::string identity() const override { return id_; }
-
- private:
-  ExactSum x_;
-  std::string id_;
-};
-
 // The primes below 1000, for stripping square factors from radicands.
 const std::vector<unsigned long>& small_primes() {
   static const std::vector<unsigned long> primes = [] {
@@ -173,7 +156,7 @@ ExactSum Multiquadratic::to_exact_sum() const {
 ExactSum root_of_sum(const ExactSum& x) {
   ExactSum s = canonical_roots(x);
   if (std::optional<ExactSum> r = sqrt_of_sum(s)) return *r;
-  return ExactSum::constant(std::make_shared<RootOfSum>(std::move(s)));
+  return ExactSum::constant(sqrt_constant(std::move(s)));
 }
 
 }  // namespace grassfire

@@ -21,7 +21,91 @@ ExactSum root_term(const mpq_class& q, const mpq_class& r) {
   return s;
 }
 
+class SqrtOfSum : public CertifiedConstant {
+ public:
+  // The identity is built once: ExactSum::simplify asks for it on every merge.
+  explicit SqrtOfSum(ExactSum x) : x_(std::move(x)), id_("sqrt[" + to_string(x_) + "]") {}
+  void enclose(mpfr_ptr lo, mpfr_ptr hi) const override {
+    x_.enclose(lo, hi);
+    if (mpfr_sgn(lo) < 0) mpfr_set_zero(lo, 1);
+    mpfr_sqrt(lo, lo, MPFR_RNDD);
+    mpfr_sqrt(hi, hi, MPFR_RNDU);
+  }
+  std::string identity() const override { return id_; }
+  std::optional<bool> equals(const CertifiedConstant& other) const override {
+    const auto* o = dynamic_cast<const SqrtOfSum*>(&other);
+    if (!o) return std::nullopt;
+    return is_zero_sqrt_part(x_ - o->x_);
+  }
+
+ private:
+  ExactSum x_;
+  std::string id_;
+};
+
 }  // namespace
+
+namespace {
+
+constexpr unsigned kSmallPrimes[] = {2, 3, 5, 7, 11, 13, 17, 19, 23, 29, 31, 37, 41, 43, 47, 53, 59, 61, 67, 71, 73, 79, 83, 89, 97};
+
+// Divides squares of small primes out of m; returns the product of their roots.
+mpz_class take_small_squares(mpz_class& m) {
+  mpz_class root = 1;
+  for (unsigned p : kSmallPrimes) {
+    const unsigned long p2 = static_cast<unsigned long>(p) * p;
+    while (m != 0 && mpz_divisible_ui_p(m.get_mpz_t(), p2)) {
+      mpz_divexact_ui(m.get_mpz_t(), m.get_mpz_t(), p2);
+      root *= p;
+    }
+  }
+  return root;
+}
+
+// c sqrt(n / d) = (c s / d) sqrt(m) with n d = s^2 m, m freed of small squares.
+ExactSum normalised_roots(const ExactSum& x) {
+  ExactSum out = ExactSum::rational(x.rational_part());
+  for (const SqrtTerm& t : x.sqrt_terms()) {
+    mpz_class m = t.radicand.get_num() * t.radicand.get_den();
+    const mpz_class root = take_small_squares(m);
+    ExactSum term = ExactSum::sqrt_of(mpq_class(m));
+    term.scale(t.coef * make_rational(root, t.radicand.get_den()));
+    out += term;
+  }
+  out.simplify();
+  return out;
+}
+
+}  // namespace
+
+ExactSum sqrt_term(const ExactSum& input) {
+  require_no_constants(input);
+  ExactSum x = normalised_roots(input);
+  if (std::optional<ExactSum> r = sqrt_of_sum(x)) return *r;
+  // x = g x' with x' of coprime integer coefficients and g = a / b; sqrt(g) = sqrt(a b) / b.
+  mpz_class num = 0, den = 1;
+  auto visit = [&](const mpq_class& c) {
+    mpz_gcd(num.get_mpz_t(), num.get_mpz_t(), c.get_num().get_mpz_t());
+    mpz_lcm(den.get_mpz_t(), den.get_mpz_t(), c.get_den().get_mpz_t());
+  };
+  visit(x.rational_part());
+  for (const SqrtTerm& t : x.sqrt_terms()) visit(t.coef);
+  if (num == 0) return ExactSum();
+  const mpq_class g = make_rational(num, den);
+  x.scale(1 / g);
+  mpz_class m = g.get_num() * g.get_den();
+  const mpz_class root = take_small_squares(m);
+  x.scale(mpq_class(m));
+  ExactSum out = ExactSum::constant(sqrt_constant(std::move(x)));
+  out.scale(make_rational(root, g.get_den()));
+  return out;
+}
+
+std::shared_ptr<const CertifiedConstant> sqrt_constant(ExactSum x) {
+  require_no_constants(x);
+  x.simplify();
+  return std::make_shared<SqrtOfSum>(std::move(x));
+}
 
 ExactSum multiply(const ExactSum& a, const ExactSum& b) {
   require_no_constants(a);

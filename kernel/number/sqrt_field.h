@@ -11,6 +11,7 @@
 // at most kMaxConjugations rounds, each a product.
 #pragma once
 
+#include <memory>
 #include <optional>
 
 #include "number/exact_sum.h"
@@ -26,6 +27,15 @@ std::optional<mpq_class> rational_sqrt(const mpq_class& q);
 // sqrt(x) as an ExactSum for x >= 0 rational or x = u + v sqrt(m) denestable; nullopt
 // otherwise.
 std::optional<ExactSum> sqrt_of_sum(const ExactSum& x);
+// sqrt(x) for an exact sum x >= 0 without constants, as a certified constant (for when it
+// does not denest): identity "sqrt[x]", and equality with another such root decided
+// exactly (equal exactly when the radicands are: Besicovitch's test, is_zero_sqrt_part).
+std::shared_ptr<const CertifiedConstant> sqrt_constant(ExactSum x);
+// sqrt(x) as an ExactSum: denested when sqrt_of_sum can, otherwise rho * sqrt(x') with
+// x = rho^2 x', rho rational and x' normalised (every radicand and the coefficients'
+// common factor freed of squares of primes below 100), so that roots of sums that differ
+// by such a square factor share one radicand and cancel or merge.
+ExactSum sqrt_term(const ExactSum& x);
 // Exact sign of a sum without constants (never uncertified).
 int exact_sign(const ExactSum& x, NumberStats* stats = nullptr);
 

@@ -79,6 +79,7 @@ nlohmann::json report(const Burn3dSetup& setup, const Burn3dRun& run) {
     x.push_back(v.approx[0]), y.push_back(v.approx[1]), z.push_back(v.approx[2]), r.push_back(v.radius);
   j["vertex_values"] = {{"x", x}, {"y", y}, {"z", z}, {"R", r}, {"BT", finite_or_null(bt)},
                         {"ET", finite_or_null(run.et)}};
+  if (!run.outcome.vertex_bt_error.empty()) j["vertex_values"]["BT_error"] = finite_or_null(run.outcome.vertex_bt_error);
   return j;
 }
 
@@ -115,7 +116,8 @@ Burn3dRun burn3d(const Burn3dSetup& setup) {
     }
   }
   BurnRequest request{mc, std::move(run.sources), std::move(run.queries), run.spacing, setup.max_points,
-                      [&](const std::string& stage, double done) { progress.fraction(stage, done); }};
+                      [&](const std::string& stage, double done) { progress.fraction(stage, done); }, setup.input,
+                      setup.singular_walls};
   run.outcome = method(request);
   progress.done();
   run.sources = std::move(request.sources);

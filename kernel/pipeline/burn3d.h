@@ -11,8 +11,9 @@
 //   {"input", "method", "spacing" (discrete only), "complex": {vertices, edges, triangles,
 //    segments, border_edges, singular_edges, singular_points, sheets}, "sources", "queries"
 //    (counts), "stats": {the method's counters}, "summary": {burned_vertices,
-//    unburned_vertices, max_bt, max_et}, "vertex_values": {"x", "y", "z", "R", "BT", "ET"}}
-// with null for BT and ET where nothing burns.
+//    unburned_vertices, max_bt, max_et}, "vertex_values": {"x", "y", "z", "R", "BT", "ET",
+//    "BT_error" (methods with a certified two-sided bound: exact)}}
+// with null for BT, ET and BT_error where nothing burns.
 // Order of the checks (the program's messages depend on it): the method name, the
 // complex, the spacing, the sources, the queries. Progress on stderr follows io/progress.h.
 // Contract: errors are exceptions whose message names the input and the problem
@@ -49,6 +50,7 @@ struct Burn3dSetup {
   std::string method = "discrete";  // burn_method's name
   bool mesh_is_complex = false;     // burn a mesh itself (R = 0)
   bool no_border_ignition = false;  // every border rule Never: only the sources burn
+  bool singular_walls = false;      // exact: singular edges as walls (BurnRequest)
   std::optional<double> spacing;    // discrete: Steiner spacing h; none: default_burn_spacing
   std::uint64_t max_points = 50'000'000;
   BurnPoints sources;               // x,y,z,t0

@@ -9,7 +9,7 @@
 // Contract for a method: vertex_bt has one value per vertex and query_values one per
 // query (same order); +infinity where the point never burns; bt_error is a bound on
 // |bt - BT| (+infinity when the method certifies no two-sided bound: the discrete
-// baseline is an upper bound only). report holds the method's own counters (timings,
+// baseline is an upper bound only); vertex_bt_error likewise per vertex. report holds the method's own counters (timings,
 // event counts, certification counts); summary is one line for stdout.
 // Complexity: that of the method. Section: ch. 4 (Definitions 9-10), DESIGN.md 5.
 #pragma once
@@ -35,6 +35,11 @@ struct BurnRequest {
   std::uint64_t max_points = 0;    // discrete: graph point budget
   // Reports progress: a stage name and the fraction done in [0, 1].
   std::function<void(const std::string&, double)> progress;
+  std::string input;               // names the input in a method's messages
+  // exact: burn a complex with singular edges or singular points anyway, with every
+  // singular edge a wall (fire stops there; issue 8, part 1). That is not Definition 9's
+  // BT (which needs the junction rule, issue 9): the report says so.
+  bool singular_walls = false;
 };
 
 struct BurnValue {
@@ -44,6 +49,9 @@ struct BurnValue {
 
 struct BurnOutcome {
   std::vector<double> vertex_bt;
+  // Per vertex, a bound on |vertex_bt - BT|; empty when the method certifies none (the
+  // discrete baseline). The --json report lists it as vertex_values.BT_error.
+  std::vector<double> vertex_bt_error;
   std::vector<BurnValue> query_values;
   nlohmann::json report;
   std::string summary;

@@ -1,20 +1,19 @@
 // edf2d.cpp -- see edf2d.h.
 #include "pipeline/edf2d.h"
 
-#include <chrono>
 #include <stdexcept>
+
+#include "medial2/cpu_clock.h"
 
 namespace grassfire {
 
 namespace {
-double seconds_since(std::chrono::steady_clock::time_point t) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
-}
+double seconds_since(double t) { return thread_seconds() - t; }
 }  // namespace
 
 Edf2dResult compute_edf2d(const Shape2& shape, const Edf2dOptions& options) {
   Edf2dResult r;
-  auto t = std::chrono::steady_clock::now();
+  double t = thread_seconds();
   if (options.axis == AxisMethod::ExactPolygon) {
     r.graph = std::make_unique<MedialGraph>(exact_polygon_axis(shape, {}, &r.polygon_report));
     r.timings.axis = seconds_since(t);
@@ -30,10 +29,10 @@ Edf2dResult compute_edf2d(const Shape2& shape, const Edf2dOptions& options) {
     r.timings.delaunay = r.axis_report.delaunay_seconds;
     r.timings.axis = r.axis_report.axis_seconds;
   }
-  t = std::chrono::steady_clock::now();
+  t = thread_seconds();
   r.burning = std::make_unique<GrassfireResult>(extended_grassfire(*r.graph, options.variant));
   r.timings.burn = seconds_since(t);
-  t = std::chrono::steady_clock::now();
+  t = thread_seconds();
   r.measures = node_measures(*r.graph, *r.burning);
   r.timings.measures = seconds_since(t);
   return r;

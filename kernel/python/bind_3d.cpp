@@ -101,13 +101,14 @@ BurnPoints points_of(const py::object& x, const std::string& name, py::ssize_t c
 
 py::dict burn3d(const py::object& input, const std::string& method, const py::object& sources, const py::object& at,
                 std::optional<double> spacing, bool mesh_is_complex, bool no_border_ignition,
-                std::uint64_t max_points) {
+                std::uint64_t max_points, bool singular_walls) {
   Burn3dSetup setup;
   setup.input = is_path(input) ? path_text(input) : input.cast<std::string>();
   setup.method = method;
   setup.spacing = spacing;
   setup.mesh_is_complex = mesh_is_complex;
   setup.no_border_ignition = no_border_ignition;
+  setup.singular_walls = singular_walls;
   setup.max_points = max_points;
   setup.sources = points_of(sources, "sources", 4);
   setup.queries = points_of(at, "at", 3);
@@ -120,6 +121,7 @@ py::dict burn3d(const py::object& input, const std::string& method, const py::ob
   add_complex(out, *run->mc);
   out["BT"] = float_array(run->outcome.vertex_bt);
   out["ET"] = float_array(run->et);
+  if (!run->outcome.vertex_bt_error.empty()) out["BT_error"] = float_array(run->outcome.vertex_bt_error);
   add_report(out, run->report, "vertex_values");
   if (!at.is_none()) {
     std::vector<double> bt, bt_error, snap;
@@ -155,13 +157,14 @@ Returns {"vertices": (n, 3), "triangles": (m, 3), "segments": (k, 2), "R": (n,)}
 arrays, and the members of the program's --json report ("axis", "shape", timings, ...).)doc");
   m.def("burn3d", &burn3d, py::arg("input"), py::arg("method") = "discrete", py::arg("sources") = py::none(),
         py::arg("at") = py::none(), py::arg("spacing") = py::none(), py::arg("mesh_is_complex") = false,
-        py::arg("no_border_ignition") = false, py::arg("max_points") = 50'000'000,
+        py::arg("no_border_ignition") = false, py::arg("max_points") = 50'000'000, py::arg("singular_walls") = false,
         R"doc(Burning time BT and ET = BT - R on the medial axis of a 3D shape (grassfire burn3d).
 
 input               a complex (.json grassfire-complex, .ma), a shape (as medial3d) or a
                     synthetic complex name (board-fin, book:3, ...)
-method              "discrete" (the baseline) or "exact" (raises RuntimeError with the
-                    program's message until the exact engine is built)
+method              "discrete" (the baseline) or "exact" (certified window propagation;
+                    raises RuntimeError with the program's message on a complex with
+                    singular edges unless singular_walls)
 sources             point sources: a CSV path (x,y,z,t0, exact decimals, as --sources) or
                     an (n, 4) array of x, y, z, t0 (each float at its exact value); every
                     source must lie on the complex exactly
@@ -171,6 +174,7 @@ spacing             Steiner spacing h (default: 1/100 of the bounding box diagon
 mesh_is_complex     burn a mesh itself as a 2-complex (R = 0)
 no_border_ignition  the border never ignites: only the sources burn
 max_points          refuse to place more graph points than this
+singular_walls      exact: burn complexes with singular edges, each a wall (not Definition 9)
 
 Returns "vertices", "triangles", "segments", "R", "BT", "ET" as numpy arrays (inf where
 nothing burns), the program's --json report members ("complex", "stats", "summary", ...)

@@ -11,7 +11,7 @@
 // --csv OUT: header `x,y,z,bt,bt_error,snap`, one row per query in query order; x,y,z
 // are the query's own text; bt is the burning time at the located point (`inf` where it
 // never burns); bt_error bounds |bt - BT| (`inf` for the discrete method, whose bt is an
-// upper bound only); snap is the distance from the query to the point located (0 when the
+// upper bound only; the exact method's certified bound); snap is the distance from the query to the point located (0 when the
 // query lies on the complex; nearest double).
 #include <cmath>
 #include <iostream>
@@ -48,11 +48,13 @@ int run_burn3d(int argc, char** argv) {
   Options opt("burn3d", "Burning time BT (Definitions 9-10) and ET = BT - R on the medial axis of a 3D shape.");
   opt.positional("INPUT", complex_input_help())
       .option("method", "NAME", "discrete (Dijkstra over vertices and Steiner points with the link rule) or exact "
-                                "(the window-propagation engine, when built)", "discrete")
+                                "(certified window propagation; complexes without singular edges/points)", "discrete")
       .option("spacing", "H", "discrete: Steiner point spacing h (default: 1/100 of the bounding box diagonal)")
       .option("max-points", "N", "discrete: refuse to place more than N graph points", "50000000")
       .flag("mesh-is-complex", "burn a mesh itself as a 2-complex (R = 0) instead of its medial axis")
       .flag("no-border-ignition", "the border never ignites (every border rule set to never): only --sources burn")
+      .flag("singular-walls", "exact: burn complexes with singular edges, each edge a wall where fronts stop\n"
+                              "(not Definition 9's junction rule; the report says so)")
       .option("sources", "FILE", "CSV `x,y,z,t0`: points of the complex that ignite at time t0 (exact decimals)")
       .option("at", "FILE", "CSV `x,y,z`: query points, each located exactly on the complex, else at its nearest point")
       .option("csv", "OUT", "with --at: one row per query `x,y,z,bt,bt_error,snap` (inf where it never burns)")
@@ -61,9 +63,12 @@ int run_burn3d(int argc, char** argv) {
       .option("json", "OUT", "write a JSON report (counts, timings, per-vertex x y z R BT ET; null = never burns)")
       .epilog("The discrete method over-estimates BT by O(h) (kernel/burn3/discrete_burning.h); at --at points its\n"
               "bt is an upper bound from the graph points of the point's triangles (kernel/burn3/discrete_query.h).\n"
+              "The exact method returns certified enclosures: |bt - BT| <= bt_error at every query and vertex\n"
+              "(--json: vertex_values.BT_error, stats.certification per stage, stats.uncertified).\n"
               "Every output is written to a temporary file and renamed when complete.\n"
               "Example: grassfire burn3d board-fin --spacing 0.1 --vtk board_fin.vtk\n"
-              "         grassfire burn3d data/meshes/cube.off --mesh-is-complex --sources s.csv --at q.csv --csv bt.csv");
+              "         grassfire burn3d data/meshes/cube.off --mesh-is-complex --sources s.csv --at q.csv --csv bt.csv\n"
+              "         grassfire burn3d data/meshes/cube.off --mesh-is-complex --method exact --sources s.csv --json r.json");
   if (!opt.parse(argc, argv)) return opt.exit_code();
   Burn3dSetup setup;
   setup.input = opt.arg("INPUT");
@@ -72,6 +77,8 @@ int run_burn3d(int argc, char** argv) {
   if (opt.has("csv") && !opt.has("at")) throw std::runtime_error("--csv needs --at (the query points)");
   setup.mesh_is_complex = opt.has("mesh-is-complex");
   setup.no_border_ignition = opt.has("no-border-ignition");
+  setup.singular_walls = opt.has("singular-walls");
+  if (setup.singular_walls && setup.method != "exact") throw std::runtime_error("--singular-walls needs --method exact");
   if (opt.has("spacing")) setup.spacing = opt.get_double("spacing");
   setup.max_points = static_cast<std::uint64_t>(opt.get_long("max-points", 1, 2'000'000'000L));
   if (opt.has("sources")) setup.sources.file = opt.get("sources");

@@ -124,6 +124,11 @@ class Burn3dEqualsProgram(unittest.TestCase):
         self.check("book:3", 0.25)
         self.check(os.path.join(PROJECT_DATA, "ma", "box_4_3_1.ma"), 0.2)
         self.check(os.path.join(PROJECT_DATA, "meshes", "cube.off"), 0.1, "--mesh-is-complex")
+        # The exact method through the same table: a closed surface without sources never burns.
+        exact = self.check(os.path.join(PROJECT_DATA, "meshes", "cube.off"), 0.1, "--mesh-is-complex", "--method", "exact")
+        self.assertTrue(np.all(np.isinf(exact["BT"])))
+        self.assertEqual(len(exact["BT_error"]), len(exact["BT"]))
+        self.assertEqual(exact["stats"]["uncertified"], 0)
 
     def test_tetrahedron_surface_never_burns(self):
         # A closed surface has no border: nothing ignites, BT is infinite everywhere (Prop 7).

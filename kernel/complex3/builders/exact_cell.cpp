@@ -2,6 +2,7 @@
 #include "complex3/builders/exact_cell.h"
 
 #include <algorithm>
+#include <cmath>
 #include <map>
 #include <stdexcept>
 
@@ -35,7 +36,10 @@ std::array<T, 4> cramer(const std::array<const std::array<T, 4>*, 3>& p) {
   return out;
 }
 
+// Plane coefficients and vertices are finite, but their double enclosures may overflow
+// (coordinates near 1e308): an enclosure with an infinite or NaN end decides nothing.
 int certified(const Interval& x) {
+  if (!std::isfinite(x.lo) || !std::isfinite(x.hi)) return 2;
   if (x.lo > 0) return 1;
   if (x.hi < 0) return -1;
   return 2;  // undecided

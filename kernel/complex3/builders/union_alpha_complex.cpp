@@ -327,7 +327,43 @@ std::array<ExactPoint3, 3> boundary_vertex_key(const BoundaryVertex& v) {
   return {v.z, {v.s * dot(v.n, v.n), 0, 0}, mpq_class(v.side / abs(lead)) * v.n};
 }
 
-std::vector<BoundaryVertex> boundary_vertices(const BallSet& b, const AlphaComplex& k, RadicalTable* table) {
+namespace {
+
+// Whether the interval filter certifies that the point z + side sqrt(s) n of triangle t
+// (three spheres meeting) lies in the open ball of an extra vertex j of a coface:
+// pow_j - pow_t = (pow_j(z) - w) + side 2 n . (c_0 - c_j) sqrt(s) < 0. False when unsure.
+bool certainly_off_dual_edge(const AlphaComplex& k, const PowerSimplex& p, int side) {
+  std::array<Interval, 3> c0 = k.approx_ball(p.balls[0]), e1, e2;
+  for (int m = 0; m < 3; ++m) {
+    e1[m] = k.approx_ball(p.balls[1])[m] - c0[m];
+    e2[m] = k.approx_ball(p.balls[2])[m] - c0[m];
+  }
+  const std::array<Interval, 3> n{e1[1] * e2[2] - e1[2] * e2[1], e1[2] * e2[0] - e1[0] * e2[2], e1[0] * e2[1] - e1[1] * e2[0]};
+  const Interval nn = square(n[0]) + square(n[1]) + square(n[2]);
+  if (nn.lo <= 0) return false;
+  const Interval root = sqrt(-p.approx_power / nn);
+  for (std::uint32_t c : p.cofaces) {
+    const PowerSimplex& q = k.simplices()[c];
+    for (int m = 0; m < 4; ++m) {
+      const std::uint32_t j = q.balls[m];
+      if (std::find(p.balls.begin(), p.balls.begin() + 3, j) != p.balls.begin() + 3) continue;
+      const auto& cj = k.approx_ball(j);
+      Interval a = -k.approx_weight(j) - p.approx_power, bn(0.0);
+      for (int x = 0; x < 3; ++x) {
+        a += square(p.approx_centre[x] - cj[x]);
+        bn += n[x] * (c0[x] - cj[x]);
+      }
+      const Interval v = a + Interval(2.0 * side) * bn * root;
+      if (v.hi < 0) return true;
+    }
+  }
+  return false;
+}
+
+}  // namespace
+
+std::vector<BoundaryVertex> boundary_vertices(const BallSet& b, const AlphaComplex& k, RadicalTable* table,
+                                              bool filtered) {
   std::vector<BoundaryVertex> out;
   // A point on four or more spheres comes from several triangles.
   auto key_less = [](const std::array<ExactPoint3, 3>& x, const std::array<ExactPoint3, 3>& y) {
@@ -338,6 +374,8 @@ std::vector<BoundaryVertex> boundary_vertices(const BallSet& b, const AlphaCompl
   std::map<std::array<ExactPoint3, 3>, bool, decltype(key_less)> seen(key_less);
   for (std::uint32_t t : k.of_dimension(2)) {
     if (k.power_sign(t) > 0) continue;  // the three spheres do not meet
+    if (filtered && certainly_off_dual_edge(k, k.simplices()[t], 1) && certainly_off_dual_edge(k, k.simplices()[t], -1))
+      continue;
     const PowerSimplex& p = k.exact(t);
     BoundaryVertex v;
     std::copy(p.balls.begin(), p.balls.begin() + 3, v.balls.begin());

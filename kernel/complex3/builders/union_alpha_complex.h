@@ -88,6 +88,9 @@ class AlphaComplex {
   bool in_closed_complex(std::uint32_t s) const { return rho_sign_[s] <= 0; }
   int power_sign(std::uint32_t s) const;  // exact sign of w
   std::size_t exact_simplices() const { return exact_count_; }  // filter failures
+  // Certified enclosures of ball i's centre and squared radius.
+  const std::array<Interval, 3>& approx_ball(std::uint32_t i) const { return approx_ball_[i]; }
+  const Interval& approx_weight(std::uint32_t i) const { return approx_weight_[i]; }
   // In K, dimension < 3 and no coface in K: a maximal lower-dimensional simplex.
   bool is_singular(std::uint32_t s) const;
   // The simplex with these sorted balls (dim + 1 of them), or UINT32_MAX.
@@ -143,7 +146,12 @@ struct BoundaryVertex {
 // the point is z + sqrt(s |n|^2) times the unit direction of side n.
 std::array<ExactPoint3, 3> boundary_vertex_key(const BoundaryVertex& v);
 
-std::vector<BoundaryVertex> boundary_vertices(const BallSet& b, const AlphaComplex& k, RadicalTable* table);
+// With `filtered`, a triangle both of whose points an interval filter certainly places
+// inside the ball of a coface's extra vertex (off the dual edge) is skipped before any
+// exact construction; the exact tests decide every other case, so the output is the same
+// as without the filter (the definition-level path, kept for the tests).
+std::vector<BoundaryVertex> boundary_vertices(const BallSet& b, const AlphaComplex& k, RadicalTable* table,
+                                              bool filtered = true);
 
 // Exact sign of a + sign * b * sqrt(s) for rationals (s >= 0).
 int sign_with_root(const mpq_class& a, int side, const mpq_class& b, const mpq_class& s);

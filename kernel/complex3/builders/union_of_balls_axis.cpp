@@ -9,6 +9,7 @@
 #include <optional>
 #include <stdexcept>
 
+#include "complex3/builders/cpu_clock.h"
 #include "complex3/builders/union_tet_axis.h"
 #include "complex3/exact_predicates3.h"
 
@@ -348,19 +349,30 @@ UnionOfBallsAxis union_of_balls_axis(const BallSet& balls, const UnionOfBallsOpt
   require_valid_balls(balls);
   const auto start = Clock::now();
   UnionOfBallsAxis out;
+  double stage_start = cpu_seconds();
+  auto stage = [&](const char* name) {
+    const double now = cpu_seconds();
+    out.stage_seconds.emplace_back(name, now - stage_start);
+    stage_start = now;
+  };
   out.complex.source = balls.source + " (union-of-balls medial axis)";
   const RegularTriangulation rt = regular_triangulation(balls);
   out.triangulation_seconds = seconds_since(start);
+  stage("regular triangulation");
   const AlphaComplex k(balls, rt);
+  stage("alpha complex (classification)");
   out.balls = balls.centers.size();
   out.hidden_balls = k.hidden_balls();
   out.triangulation_dimension = k.dimension();
   for (std::uint32_t s = 0; s < k.simplices().size(); ++s)
     if (k.in_complex(s)) ++out.alpha_simplices[k.simplices()[s].dim];
   out.union_betti = alpha_complex_betti(k);
+  stage("betti numbers");
   out.radicals = std::make_shared<RadicalTable>();
   out.boundary = boundary_vertices(balls, k, out.radicals.get());
+  stage("boundary vertices");
   TetAxis tets = tet_axis(balls, k, out.boundary, *out.radicals);
+  stage("voronoi cells in tetrahedra");
   out.stats = tets.stats;
   out.tetrahedra_candidates = tets.candidates;
   out.voronoi_cells = tets.cells_clipped;
@@ -369,7 +381,9 @@ UnionOfBallsAxis union_of_balls_axis(const BallSet& balls, const UnionOfBallsOpt
   Assembler a(balls, k, &out, options.polygon_samples);
   a.add_tet_axis(std::move(tets));
   a.add_singular_simplices();
+  stage("assembly");
   a.finish();
+  stage("output values and border rules");
   out.total_seconds = seconds_since(start);
   return out;
 }

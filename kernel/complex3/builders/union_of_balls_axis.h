@@ -30,6 +30,7 @@
 
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "complex3/ball_set.h"
@@ -76,6 +77,8 @@ struct UnionOfBallsAxis {
   BettiNumbers union_betti;  // of K, i.e. of the union
   ClipStats stats;
   double triangulation_seconds = 0, total_seconds = 0;
+  // The profile: CPU seconds per stage, in order (triangulation, alpha complex, ...).
+  std::vector<std::pair<std::string, double>> stage_seconds;
 };
 
 UnionOfBallsAxis union_of_balls_axis(const BallSet& balls, const UnionOfBallsOptions& options = {});

@@ -1,0 +1,136 @@
+// bench_burn3d_exact -- the exact burning engine (kernel/burn3/exact/) against CGAL's
+// Surface_mesh_shortest_path (Epick, burn3/geodesic_smsp.h) on closed curved meshes with
+// three point sources (issue 8 item 7).
+//
+// Meshes: data/meshes cube.off, octahedron.off and tripod.off, smoothed twice and
+// Loop-refined by 3 to 7 levels (complex3/refined_mesh.h: no two neighbouring faces
+// coplanar): 512 to 196,608 faces (the octahedron's 131,072 is the one nearest 10^5). Sources at t0 = 0, at the exact barycentric points (1/5, 3/10, 1/2) of
+// faces 0, F/3 and 2F/3 (CGAL gets the nearest doubles of these weights). Each method
+// runs in a forked child (its own peak memory); times are processor seconds of the child
+// (the machine is shared; wall time would count the other users):
+//  - smsp_s: CGAL's Surface_mesh from the mesh, add the sources, build_sequence_tree;
+//  - exact_s: the engine alone (ExactBurning: its unfolding of the complex, the sources,
+//    the propagation), from an already built MedialComplex; complex_s is the
+//    MedialComplex construction from the mesh (exact mpq geometry), timed separately
+//    because the complex is the kernel's input structure, shared by every method;
+//  - peak_mem_mb: the engine child's peak resident set (complex included);
+//  - uncertified: decisions of the propagation no certification stage decided;
+//  - max_diff: max over vertices of the distance from CGAL's value to the engine's
+//    certified enclosure (both exact to double precision: about 1e-12 expected);
+//  - ratio = exact_s / smsp_s (issue 8 target: <= 0.5 at 10^5 faces).
+// CSV on stdout:
+// mesh,faces,smsp_s,exact_s,ratio,peak_mem_mb,uncertified,complex_s,smsp_peak_mb,windows,max_diff,
+// unfolding_s,propagation_s (exact_s split: the engine's frames and crossings of the
+// complex, then the event loop; the rest is adding the sources)
+// Usage: bench_burn3d_exact [--max-faces N] [--mesh NAME]   (meshes above N faces are
+// skipped, default 200000; --mesh: only that file of data/meshes)
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <ctime>
+#include <string>
+
+#include "burn3/exact/exact_burning.h"
+#include "burn3/geodesic_smsp.h"
+#include "complex3/medial_complex.h"
+#include "complex3/point_location.h"
+#include "complex3/refined_mesh.h"
+#include "io/mesh_io.h"
+#include "peak_memory.h"
+
+using namespace grassfire;
+
+namespace {
+
+double cpu_seconds_since(std::clock_t start) { return static_cast<double>(std::clock() - start) / CLOCKS_PER_SEC; }
+
+const std::array<mpq_class, 3> kWeights = {mpq_class(1, 5), mpq_class(3, 10), mpq_class(1, 2)};
+
+std::vector<std::uint32_t> source_faces(const TriangleMesh3& m) {
+  const auto f = static_cast<std::uint32_t>(m.triangles.size());
+  return {0, f / 3, 2 * f / 3};
+}
+
+// The first face and corner of every vertex.
+std::vector<MeshPoint> vertex_points(const TriangleMesh3& m) {
+  std::vector<MeshPoint> at(m.vertices.size());
+  for (std::uint32_t f = m.triangles.size(); f-- > 0;)
+    for (int i = 0; i < 3; ++i) {
+      at[m.triangles[f][i]] = {f, {0, 0, 0}};
+      at[m.triangles[f][i]].barycentric[i] = 1;
+    }
+  return at;
+}
+
+// [seconds, T at every vertex]
+std::vector<double> run_smsp(const TriangleMesh3& m) {
+  const std::clock_t start = std::clock();
+  SmspGeodesics g(m);
+  for (std::uint32_t f : source_faces(m))
+    g.add_source({f, {kWeights[0].get_d(), kWeights[1].get_d(), kWeights[2].get_d()}}, 0);
+  g.build();
+  std::vector<double> out = {cpu_seconds_since(start)};
+  for (const MeshPoint& p : vertex_points(m)) out.push_back(g.distance(p));
+  return out;
+}
+
+// [complex seconds, engine seconds, uncertified, windows, unfolding seconds, propagation
+//  seconds, then lo, hi per vertex]
+std::vector<double> run_exact(const TriangleMesh3& m) {
+  const std::clock_t start = std::clock();
+  const MedialComplex mc(mesh_as_complex(m), false);
+  const double complex_s = cpu_seconds_since(start);
+  const std::clock_t engine_start = std::clock();
+  ExactBurning eb(mc);
+  const double unfolding_s = cpu_seconds_since(engine_start);
+  for (std::uint32_t f : source_faces(m)) {
+    ExactPoint3 p{0, 0, 0};
+    for (int i = 0; i < 3; ++i) p = p + kWeights[i] * mc.vertex(m.triangles[f][i]).exact;
+    eb.add_point_source(f, p, 0);
+  }
+  const std::clock_t run_start = std::clock();
+  eb.run();
+  const double propagation_s = cpu_seconds_since(run_start);
+  const double engine_s = cpu_seconds_since(engine_start);
+  std::vector<double> out = {complex_s, engine_s, static_cast<double>(eb.certification().uncertified),
+                             static_cast<double>(eb.propagation().stats().windows), unfolding_s, propagation_s};
+  for (const Interval& bt : eb.vertex_burn_times()) out.push_back(bt.lo), out.push_back(bt.hi);
+  return out;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  std::size_t max_faces = 200000;  // CGAL needs about 5 GB at 2 10^5 faces
+  std::string only;
+  for (int i = 1; i + 1 < argc; i += 2) {
+    if (!std::strcmp(argv[i], "--max-faces")) max_faces = std::strtoull(argv[i + 1], nullptr, 10);
+    if (!std::strcmp(argv[i], "--mesh")) only = argv[i + 1];
+  }
+  std::printf("mesh,faces,smsp_s,exact_s,ratio,peak_mem_mb,uncertified,complex_s,smsp_peak_mb,windows,max_diff,"
+              "unfolding_s,propagation_s\n");
+  int failures = 0;
+  for (const char* name : {"cube.off", "octahedron.off", "tripod.off"}) {
+    if (!only.empty() && only != name) continue;
+    const TriangleMesh3 coarse = read_triangle_mesh(std::string(GF_PROJECT_DATA) + "/meshes/" + name);
+    for (int levels = 3; levels <= 7; ++levels) {
+      if (coarse.triangles.size() << (2 * levels) > max_faces) break;
+      const TriangleMesh3 m = loop_subdivided(coarse, levels, 2);
+      const std::vector<double> smsp = bench::in_child([&] { return run_smsp(m); });
+      const std::vector<double> exact = bench::in_child([&] { return run_exact(m); });
+      double diff = 0;
+      for (std::size_t v = 0; v < m.vertices.size(); ++v) {
+        const double t = smsp[1 + v], lo = exact[6 + 2 * v], hi = exact[7 + 2 * v];
+        diff = std::max(diff, std::max(lo - t, t - hi));
+      }
+      if (!(diff < 1e-9) || exact[2] != 0) ++failures;
+      std::printf("%s,%zu,%.3f,%.3f,%.3f,%.1f,%.0f,%.3f,%.1f,%.0f,%.3g,%.3f,%.3f\n", name, m.triangles.size(), smsp[0],
+                  exact[1], exact[1] / smsp[0], exact.back(), exact[2], exact[0], smsp.back(), exact[3], diff, exact[4],
+                  exact[5]);
+      std::fflush(stdout);
+    }
+  }
+  // A disagreement with CGAL beyond double precision, or an uncertified decision, fails the run.
+  return failures == 0 ? 0 : 1;
+}

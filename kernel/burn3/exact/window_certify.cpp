@@ -1,0 +1,490 @@
+// window_certify.cpp -- see window_certify.h.
+#include "burn3/exact/window_certify.h"
+
+#include <algorithm>
+#include <stdexcept>
+
+#include "burn3/exact/window_values.h"
+#include "complex3/exact_predicates3.h"
+#include "number/ball_exact_sum.h"
+#include "number/sqrt_field.h"
+
+namespace grassfire {
+
+void CertificationCounts::merge(const CertificationCounts& o) {
+  filter += o.filter, exact += o.exact, arb += o.arb, exact_equal += o.exact_equal;
+  structural_equal += o.structural_equal, kept_undecided += o.kept_undecided, uncertified += o.uncertified;
+  max_bits = std::max(max_bits, o.max_bits);
+}
+
+namespace {
+
+using XV = Certifier::ExactVector;
+
+// A coordinate that grows past this many terms is given up (then Arb decides).
+constexpr std::size_t kMaxTerms = 32;
+constexpr int kMaxIrrationalCrossings = 4;
+
+ExactSum q(const mpq_class& x) { return ExactSum::rational(x); }
+XV xv(const std::array<mpq_class, 2>& a) { return {q(a[0]), q(a[1])}; }
+XV sub(const XV& a, const XV& b) { return {a[0] - b[0], a[1] - b[1]}; }
+ExactSum mul(const ExactSum& a, const ExactSum& b) {
+  ExactSum r = multiply(a, b);
+  r.simplify();
+  return r;
+}
+ExactSum scaled(ExactSum a, const mpq_class& c) {
+  a.scale(c);
+  return a;
+}
+ExactSum cross_xv(const XV& a, const XV& b) { return mul(a[0], b[1]) - mul(a[1], b[0]); }
+ExactSum metric_dot(const XV& a, const XV& b, const mpq_class& g1, const mpq_class& g2) {
+  return scaled(mul(a[0], b[0]), g1) + scaled(mul(a[1], b[1]), g2);
+}
+bool small(const XV& a) { return a[0].term_count() <= kMaxTerms && a[1].term_count() <= kMaxTerms; }
+
+// X' = P(X) + k beta(X) w (Unfolding::ExactCrossing); `affine` false for directions.
+XV cross_over(const Unfolding::ExactCrossing& c, const ExactSum& k, const XV& x, bool affine) {
+  ExactSum beta = scaled(x[0], c.b0) + scaled(x[1], c.b1);
+  XV r{scaled(x[0], c.p00) + scaled(x[1], c.p01), scaled(x[0], c.p10) + scaled(x[1], c.p11)};
+  if (affine) beta += q(c.bc), r[0] += q(c.p0), r[1] += q(c.p1);
+  const ExactSum kb = mul(k, beta);
+  r[0] += scaled(kb, c.w0), r[1] += scaled(kb, c.w1);
+  r[0].simplify(), r[1].simplify();
+  return r;
+}
+
+Ball ball_cross(const BallVec2& a, const BallVec2& b) { return a.x * b.y - a.y * b.x; }
+BallVec2 ball_sub(const BallVec2& a, const BallVec2& b) { return {a.x - b.x, a.y - b.y}; }
+
+int ball_sign(const Ball& b) {
+  const int s = b.sign();
+  return s == kUndecided ? kUndecided : s;
+}
+
+}  // namespace
+
+DiscPoint Certifier::target_disc(std::uint32_t t, const Target& x) const {
+  return x.point ? u_.point_image(t, *x.point) : u_.vertex_image(t, x.vertex);
+}
+
+Interval Certifier::time_interval(std::uint32_t w, const Target& x) const {
+  const Window& win = s_.windows[w];
+  const Approx a = approx_time(win, target_disc(win.triangle, x));
+  return {round_down(a.v - a.e), round_up(a.v + a.e)};
+}
+
+XV Certifier::target_uv(std::uint32_t f, const Target& x) const {
+  return xv(x.point ? u_.point_uv(f, *x.point) : u_.vertex_uv(f, x.vertex));
+}
+
+// ---- stage 4: Arb re-evaluation of the chain -------------------------------------------
+
+Ball Certifier::sigma_ball(std::uint32_t p) {
+  const std::uint32_t t = s_.pseudo[p].time;
+  return t == kNoIndex ? Ball(0.0) : expr_ball(t);
+}
+
+Ball Certifier::expr_ball(std::uint32_t i) {
+  if (memo_bits_ != BallPrecision::bits()) time_memo_.clear(), memo_bits_ = BallPrecision::bits();
+  if (auto it = time_memo_.find(i); it != time_memo_.end()) return it->second;
+  const TimeExpr& e = s_.times[i];
+  Ball r;
+  switch (e.kind) {
+    case TimeExpr::Kind::Exact: r = ball_of(s_.exact_times[e.a]); break;
+    case TimeExpr::Kind::WindowAt: r = time_ball(e.a, Target{e.b, nullptr}); break;
+    case TimeExpr::Kind::Plus: r = expr_ball(e.a) + sqrt(ball_of(edge_length2(e.b))); break;
+    case TimeExpr::Kind::Min: {
+      const Ball x = expr_ball(e.a), y = expr_ball(e.b);
+      arb_min(r.get(), x.get(), y.get(), BallPrecision::bits());
+      break;
+    }
+  }
+  time_memo_.emplace(i, r);
+  return r;
+}
+
+mpq_class Certifier::edge_length2(std::uint32_t e) const {
+  const auto& ev = u_.complex().edge(e).v;
+  return squared_distance(u_.complex().vertex(ev[0]).exact, u_.complex().vertex(ev[1]).exact);
+}
+
+WindowBall Certifier::evaluate(std::uint32_t w, bool with_offset) {
+  std::vector<std::uint32_t> chain;
+  for (std::uint32_t x = w; x != kNoIndex; x = s_.windows[x].parent) chain.push_back(x);
+  std::reverse(chain.begin(), chain.end());
+  const Window& first = s_.windows[chain[0]];
+  const Window& last = s_.windows[w];
+  const bool point_kind = s_.pseudo[first.pseudo].origin == SourceOrigin::GivenPoint ||
+                          s_.pseudo[first.pseudo].origin == SourceOrigin::Vertex ||
+                          s_.pseudo[first.pseudo].origin == SourceOrigin::BorderPoint;
+  const RootBall r =
+      root_ball(u_, s_, first.pseudo, first.triangle, point_kind && with_offset ? sigma_ball(first.pseudo) : Ball(0.0));
+  WindowBall b{r.source, r.offset, {}, r.plane};
+  std::array<bool, 2> taken{false, false};
+  for (std::size_t i = 0; i < chain.size(); ++i) {
+    const Window& wi = s_.windows[chain[i]];
+    if (i > 0) {
+      const Window& prev = s_.windows[chain[i - 1]];
+      if (!u_.same_frame(prev.triangle, wi.triangle)) {
+        const BallMotion m = u_.crossing_ball(wi.edge, prev.triangle, wi.triangle);
+        if (b.plane) {
+          b.source = m.apply_vector(b.source);
+          b.offset = b.offset - (b.source.x * m.t0 + b.source.y * m.t1);
+        } else {
+          b.source = m.apply(b.source);
+        }
+        for (int j = 0; j < 2; ++j)
+          if (taken[j]) b.image[j] = m.apply(b.image[j]);
+      }
+    }
+    for (int j = 0; j < 2; ++j)
+      if (!taken[j] && last.bound[j] != kNoIndex && last.bound_depth[j] == i) {
+        b.image[j] = u_.vertex_ball(wi.triangle, last.bound[j]);
+        taken[j] = true;
+      }
+  }
+  return b;
+}
+
+Ball Certifier::time_ball(std::uint32_t w, const Target& x) {
+  const WindowBall b = evaluate(w, true);
+  const std::uint32_t t = s_.windows[w].triangle;
+  const BallVec2 p = x.point ? u_.point_ball(t, *x.point) : u_.vertex_ball(t, x.vertex);
+  if (b.plane) return b.offset + b.source.x * p.x + b.source.y * p.y;
+  const BallVec2 d = ball_sub(p, b.source);
+  return b.offset + sqrt(d.x * d.x + d.y * d.y);
+}
+
+template <class F>
+int Certifier::escalate(long cap, F&& sign_at_precision) {
+  for (long bits = 128; bits <= cap; bits *= 2) {
+    BallPrecision guard(bits);
+    const int s = sign_at_precision();
+    if (s != kUndecided) {
+      ++counts.arb;
+      counts.max_bits = std::max(counts.max_bits, bits);
+      return s;
+    }
+  }
+  return kUndecided;
+}
+
+// ---- stage 2: structural equality ------------------------------------------------------
+
+bool Certifier::same_expression(std::uint32_t w1, std::uint32_t w2, const Target& x) const {
+  const Window &a0 = s_.windows[w1], &b0 = s_.windows[w2];
+  if (a0.pseudo != b0.pseudo) return false;
+  const SourceOrigin origin = s_.pseudo[a0.pseudo].origin;
+  const bool point_kind = origin == SourceOrigin::Vertex || origin == SourceOrigin::GivenPoint;
+  if (a0.parent == kNoIndex && b0.parent == kNoIndex && !x.point && point_kind) {
+    // Two first windows of one point source: at a vertex of both triangles the time is
+    // sigma + |x - S| measured in 3D (a straight segment inside each triangle).
+    const MedialComplex& mc = u_.complex();
+    if (corner_of(mc.triangle(a0.triangle), x.vertex) >= 0 && corner_of(mc.triangle(b0.triangle), x.vertex) >= 0)
+      return true;
+  }
+  // Equal sequences of frame changes give the same source image.
+  std::uint32_t p = a0.anchor, q = b0.anchor;
+  for (;;) {
+    if (p == q) return true;
+    const Window &a = s_.windows[p], &b = s_.windows[q];
+    if (u_.frame(a.triangle) != u_.frame(b.triangle)) return false;
+    if (a.parent == kNoIndex || b.parent == kNoIndex) return a.parent == b.parent && point_kind;
+    if (a.edge != b.edge || a.triangle != b.triangle || s_.windows[a.parent].triangle != s_.windows[b.parent].triangle)
+      return false;
+    p = s_.windows[a.parent].anchor, q = s_.windows[b.parent].anchor;
+  }
+}
+
+bool Certifier::bound_fixed(std::uint32_t w, int j, std::uint32_t v) const {
+  const Window& last = s_.windows[w];
+  if (last.bound[j] != v) return false;
+  const MedialComplex& mc = u_.complex();
+  for (std::uint32_t x = w; x != kNoIndex; x = s_.windows[x].parent) {
+    if (corner_of(mc.triangle(s_.windows[x].triangle), v) < 0) return false;
+    if (s_.windows[x].depth == last.bound_depth[j]) return true;
+  }
+  return false;
+}
+
+// ---- stage 3: exact (rational frames and crossings) -------------------------------------
+
+const ExactSum* Certifier::exact_sigma(std::uint32_t p) {
+  const PseudoSource& ps = s_.pseudo[p];
+  if (ps.time == kNoIndex) {
+    static const ExactSum zero;
+    return &zero;
+  }
+  return exact_expr(ps.time);
+}
+
+const ExactSum* Certifier::exact_expr(std::uint32_t i) {
+  if (auto it = exact_time_memo_.find(i); it != exact_time_memo_.end()) return it->second.get();
+  const TimeExpr& e = s_.times[i];
+  std::optional<ExactSum> r;
+  switch (e.kind) {
+    case TimeExpr::Kind::Exact: r = s_.exact_times[e.a]; break;
+    case TimeExpr::Kind::WindowAt: r = exact_time(e.a, Target{e.b, nullptr}); break;
+    case TimeExpr::Kind::Plus:
+      if (const ExactSum* x = exact_expr(e.a)) r = *x + ExactSum::sqrt_of(edge_length2(e.b));
+      break;
+    case TimeExpr::Kind::Min: {
+      const ExactSum* x = exact_expr(e.a);
+      const ExactSum* y = x ? exact_expr(e.b) : nullptr;
+      if (x && y) r = exact_sign(*x - *y) <= 0 ? *x : *y;
+      break;
+    }
+  }
+  if (r) r->simplify();
+  std::unique_ptr<ExactSum> owned = r ? std::make_unique<ExactSum>(std::move(*r)) : nullptr;
+  return exact_time_memo_.emplace(i, std::move(owned)).first->second.get();
+}
+
+int Certifier::compare_time_exprs(std::uint32_t a, std::uint32_t b, bool prune_only) {
+  trim_memos();
+  const int s = certified_sign(s_.times[a].value - s_.times[b].value);
+  if (s != kUndecided) {
+    ++counts.filter;
+    return s;
+  }
+  const TimeExpr &ea = s_.times[a], &eb = s_.times[b];
+  if (a == b || (ea.kind == TimeExpr::Kind::WindowAt && eb.kind == TimeExpr::Kind::WindowAt && ea.b == eb.b &&
+                 same_expression(ea.a, eb.a, Target{ea.b, nullptr}))) {
+    ++counts.structural_equal;
+    return 0;
+  }
+  const ExactSum* x = exact_expr(a);
+  const ExactSum* y = x ? exact_expr(b) : nullptr;
+  if (x && y) {
+    const int e = exact_sign(*x - *y);
+    ++(e == 0 ? counts.exact_equal : counts.exact);
+    return e;
+  }
+  const int r = escalate(prune_only ? prune_bits_ : max_bits_, [&] { return ball_sign(expr_ball(a) - expr_ball(b)); });
+  if (r == kUndecided) ++counts.kept_undecided;
+  return r;
+}
+
+const Certifier::ExactWindow* Certifier::exact_window(std::uint32_t w) {
+  if (auto it = exact_memo_.find(w); it != exact_memo_.end()) return it->second.get();
+  auto r = build_exact_window(w);
+  return exact_memo_.emplace(w, std::move(r)).first->second.get();
+}
+
+std::unique_ptr<Certifier::ExactWindow> Certifier::build_exact_window(std::uint32_t w) {
+  std::vector<std::uint32_t> chain;
+  for (std::uint32_t x = w; x != kNoIndex; x = s_.windows[x].parent) chain.push_back(x);
+  std::reverse(chain.begin(), chain.end());
+  const Window& first = s_.windows[chain[0]];
+  const Window& last = s_.windows[w];
+  const PseudoSource& ps = s_.pseudo[first.pseudo];
+  const MedialComplex& mc = u_.complex();
+  auto e = std::make_unique<ExactWindow>();
+  e->frame = u_.frame(first.triangle);
+  if (ps.origin == SourceOrigin::BorderPoint) {
+    // S = A + alpha E - sqrt(h^2 / |N|^2) N, N the part of C - A orthogonal to E (sources.h),
+    // all rational in local coordinates but the one square root.
+    const std::uint32_t edge = ps.data;
+    const auto& ev = mc.edge(edge).v;
+    const RotatedPoint rp = rotated_point(mc, edge);
+    const auto a = u_.vertex_uv(e->frame, ev[0]), b = u_.vertex_uv(e->frame, ev[1]);
+    const auto c = u_.vertex_uv(e->frame, third_vertex(mc.triangle(first.triangle), ev));
+    const mpq_class g1 = u_.g1(e->frame), g2 = u_.g2(e->frame);
+    const std::array<mpq_class, 2> E{b[0] - a[0], b[1] - a[1]}, AC{c[0] - a[0], c[1] - a[1]};
+    const mpq_class e2 = g1 * E[0] * E[0] + g2 * E[1] * E[1];
+    const mpq_class along = (g1 * AC[0] * E[0] + g2 * AC[1] * E[1]) / e2;
+    const std::array<mpq_class, 2> N{AC[0] - along * E[0], AC[1] - along * E[1]};
+    ExactSum k = ExactSum::sqrt_of(rp.h2 / (g1 * N[0] * N[0] + g2 * N[1] * N[1]));
+    k.simplify();
+    e->s = {q(a[0] + rp.alpha * E[0]) - scaled(k, N[0]), q(a[1] + rp.alpha * E[1]) - scaled(k, N[1])};
+    e->s[0].simplify(), e->s[1].simplify();
+  } else if (ps.origin == SourceOrigin::BorderPlane) {
+    if (ps.exact < 0) return nullptr;
+    const std::uint32_t edge = s_.exact[ps.exact].edge;
+    const auto& ev = mc.edge(edge).v;
+    e->line = true;
+    e->p = xv(u_.vertex_uv(e->frame, ev[0]));
+    e->d = sub(xv(u_.vertex_uv(e->frame, ev[1])), e->p);
+    const XV c = xv(u_.vertex_uv(e->frame, third_vertex(mc.triangle(border_triangle(mc, edge)), ev)));
+    e->inner = exact_sign(cross_xv(e->d, sub(c, e->p)));
+  } else {
+    e->s = xv(ps.origin == SourceOrigin::Vertex ? u_.vertex_uv(e->frame, ps.vertex)
+                                                 : u_.point_uv(e->frame, s_.given[ps.data].point));
+  }
+  std::array<bool, 2> taken{false, false};
+  int generators = 0;
+  for (std::size_t i = 0; i < chain.size(); ++i) {
+    const Window& wi = s_.windows[chain[i]];
+    const std::uint32_t prev = i > 0 ? s_.windows[chain[i - 1]].triangle : kNoIndex;
+    if (i > 0 && !u_.same_frame(prev, wi.triangle)) {
+      const Unfolding::ExactCrossing& c = u_.exact_crossing(wi.edge, prev, wi.triangle);
+      ExactSum k = ExactSum::sqrt_of(c.kk);
+      k.scale(-1);
+      k.simplify();
+      // Each irrational crossing may double the terms: past a few, give up (Arb decides).
+      if (!k.sqrt_terms().empty() && ++generators > kMaxIrrationalCrossings) return nullptr;
+      if (e->line) {
+        e->p = cross_over(c, k, e->p, true), e->d = cross_over(c, k, e->d, false);
+        if (u_.crossing(wi.edge, prev, wi.triangle).reflect) e->inner = -e->inner;
+        if (!small(e->p) || !small(e->d)) return nullptr;
+      } else {
+        e->s = cross_over(c, k, e->s, true);
+        if (!small(e->s)) return nullptr;
+      }
+      for (int j = 0; j < 2; ++j)
+        if (taken[j]) e->image[j] = cross_over(c, k, e->image[j], true);
+      e->frame = u_.frame(wi.triangle);
+    }
+    for (int j = 0; j < 2; ++j)
+      if (!taken[j] && last.bound[j] != kNoIndex && last.bound_depth[j] == i) {
+        e->image[j] = xv(u_.vertex_uv(e->frame, last.bound[j]));
+        taken[j] = true;
+      }
+  }
+  return e;
+}
+
+int Certifier::exact_side(const ExactWindow& e, int j, const Target& x) const {
+  const XV p = target_uv(e.frame, x);
+  if (!e.line) return exact_sign(cross_xv(sub(e.image[j], e.s), sub(p, e.s)));
+  // side = cross(u, X - B) with u the inner unit normal: sign = -inner * sign(E . (X - B)),
+  // the dot product in the frame's metric.
+  return -e.inner * exact_sign(metric_dot(e.d, sub(p, e.image[j]), u_.g1(e.frame), u_.g2(e.frame)));
+}
+
+std::optional<ExactSum> Certifier::exact_time(std::uint32_t w, const Target& x) {
+  const ExactWindow* e = exact_window(w);
+  if (!e) return std::nullopt;
+  const ExactSum* sigma = exact_sigma(s_.windows[w].pseudo);
+  if (!sigma) return std::nullopt;
+  const XV p = target_uv(e->frame, x);
+  const mpq_class &g1 = u_.g1(e->frame), &g2 = u_.g2(e->frame);
+  ExactSum r = *sigma;
+  if (!e->line) {
+    const XV d = sub(p, e->s);
+    ExactSum d2 = metric_dot(d, d, g1, g2);
+    d2.simplify();
+    if (d2.sqrt_terms().empty()) {
+      r += ExactSum::sqrt_of(d2.rational_part());
+    } else if (auto root = sqrt_of_sum(d2)) {
+      r += *root;
+    } else {
+      return std::nullopt;
+    }
+  } else {
+    // distance to the line = inner * cross(d, X - p) * sqrt(g1 g2 / |d|^2)
+    ExactSum n2 = metric_dot(e->d, e->d, g1, g2);
+    n2.simplify();
+    if (!n2.sqrt_terms().empty()) return std::nullopt;
+    const ExactSum dist = mul(ExactSum::sqrt_of(g1 * g2 / n2.rational_part()), cross_xv(e->d, sub(p, e->p)));
+    r += e->inner > 0 ? dist : q(0) - dist;
+  }
+  r.simplify();
+  return r;
+}
+
+// Directions at v in local coordinates: a point source's v - S (cross products scale by
+// sqrt(g1 g2) > 0), a line's inner normal u, for which cross(u, Y) = -inner (E . Y) / |E|.
+int Certifier::exact_direction_cross(const ExactWindow& a, const ExactWindow& b, std::uint32_t v) const {
+  const mpq_class &g1 = u_.g1(a.frame), &g2 = u_.g2(a.frame);
+  const XV x = xv(u_.vertex_uv(a.frame, v));
+  if (!a.line && !b.line) return exact_sign(cross_xv(sub(x, a.s), sub(x, b.s)));
+  if (a.line && !b.line) return -a.inner * exact_sign(metric_dot(a.d, sub(x, b.s), g1, g2));
+  if (!a.line && b.line) return b.inner * exact_sign(metric_dot(b.d, sub(x, a.s), g1, g2));
+  return a.inner * b.inner * exact_sign(cross_xv(a.d, b.d));
+}
+
+// ---- the staged decisions ---------------------------------------------------------------
+
+void Certifier::trim_memos() {
+  if (exact_memo_.size() > 200000) exact_memo_.clear();
+}
+
+int Certifier::side(std::uint32_t w, int j, const Target& x) {
+  trim_memos();
+  const Window& win = s_.windows[w];
+  const int s = approx_side(win, win.image[j], target_disc(win.triangle, x)).sign();
+  if (s != kUndecided) {
+    ++counts.filter;
+    return s;
+  }
+  if (!x.point && bound_fixed(w, j, x.vertex)) {
+    ++counts.structural_equal;
+    return 0;
+  }
+  if (const ExactWindow* ew = exact_window(w)) {
+    const int e = exact_side(*ew, j, x);
+    ++(e == 0 ? counts.exact_equal : counts.exact);
+    return e;
+  }
+  const int a = escalate(max_bits_, [&] {
+    const WindowBall b = evaluate(w, false);
+    const std::uint32_t t = win.triangle;
+    const BallVec2 p = x.point ? u_.point_ball(t, *x.point) : u_.vertex_ball(t, x.vertex);
+    if (b.plane) return ball_sign(ball_cross(b.source, ball_sub(p, b.image[j])));
+    return ball_sign(ball_cross(ball_sub(b.image[j], b.source), ball_sub(p, b.source)));
+  });
+  if (a != kUndecided) return a;
+  ++counts.uncertified;
+  return 0;
+}
+
+int Certifier::compare_times(std::uint32_t w1, const Target& x1, std::uint32_t w2, const Target& x2) {
+  trim_memos();
+  const int s = certified_sign(time_interval(w1, x1) - time_interval(w2, x2));
+  if (s != kUndecided) {
+    ++counts.filter;
+    return s;
+  }
+  const bool same_target = x1.point == x2.point && x1.vertex == x2.vertex;
+  if (same_target && same_expression(w1, w2, x1)) {
+    ++counts.structural_equal;
+    return 0;
+  }
+  if (exact_window(w1) && exact_window(w2)) {
+    const auto t1 = exact_time(w1, x1), t2 = exact_time(w2, x2);
+    if (t1 && t2) {
+      const int e = exact_sign(*t1 - *t2);
+      ++(e == 0 ? counts.exact_equal : counts.exact);
+      return e;
+    }
+  }
+  const int r = escalate(prune_bits_, [&] { return ball_sign(time_ball(w1, x1) - time_ball(w2, x2)); });
+  if (r == kUndecided) ++counts.kept_undecided;
+  return r;
+}
+
+int Certifier::compare_directions(std::uint32_t w1, std::uint32_t w2, std::uint32_t v) {
+  trim_memos();
+  const Window &a = s_.windows[w1], &b = s_.windows[w2];
+  const IPoint x = ipoint(u_.vertex_image(a.triangle, v));
+  const IPoint d1 = window_direction(a, x), d2 = window_direction(b, x);
+  const int s = certified_sign(icross(d1.x, d1.y, d2.x, d2.y));
+  if (s != kUndecided) {
+    ++counts.filter;
+    return s;
+  }
+  if (same_expression(w1, w2, Target{v, nullptr})) {
+    ++counts.structural_equal;
+    return 0;
+  }
+  const ExactWindow* ea = exact_window(w1);
+  const ExactWindow* eb = ea ? exact_window(w2) : nullptr;
+  if (ea && eb && ea->frame == eb->frame) {
+    const int e = exact_direction_cross(*ea, *eb, v);
+    ++(e == 0 ? counts.exact_equal : counts.exact);
+    return e;
+  }
+  const int r = escalate(prune_bits_, [&] {
+    const WindowBall ba = evaluate(w1, false), bb = evaluate(w2, false);
+    const BallVec2 p = u_.vertex_ball(a.triangle, v);
+    const BallVec2 da = ba.plane ? ba.source : ball_sub(p, ba.source);
+    const BallVec2 db = bb.plane ? bb.source : ball_sub(p, bb.source);
+    return ball_sign(ball_cross(da, db));
+  });
+  if (r == kUndecided) ++counts.kept_undecided;
+  return r;
+}
+
+}  // namespace grassfire

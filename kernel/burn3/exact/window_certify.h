@@ -1,0 +1,116 @@
+// window_certify.h -- certified decisions of the exact burning engine (DESIGN.md 3, 5a).
+//
+// Computes the sign of the three quantities the window propagation decides with:
+//  - side: where a point lies relative to a wedge ray of a window (the visibility
+//    decisions; never over-extended);
+//  - time difference: which of two windows reaches a vertex first (occupiers, vertex
+//    pseudo-sources);
+//  - direction order: the angular order of the rays of two windows at a vertex (the
+//    one-angle-one-split rule of Xin and Wang 2009).
+// Stages, each counted (CertificationCounts):
+//  1. filter: Interval arithmetic on the windows' double discs;
+//  2. structural: identical expressions are equal (the same pseudo-source through the same
+//     sequence of frame changes, Window::anchor; a bound vertex that every later triangle
+//     of the chain contains);
+//  3. exact: windows of a rational pseudo-source whose chain crosses only rational
+//     unfoldings (planar sheets, flat patches, cube-like meshes) are re-evaluated in
+//     rational local coordinates, times as ExactSum (exact sign, ties included);
+//  4. Arb: the chain is re-evaluated from the exact data (vertex coordinates, frames, the
+//     root) at 128, 256, ... bits up to max_bits; each level is a rigorous enclosure;
+//  5. undecided: side decisions return 0 and count `uncertified` (the point is taken to lie
+//     on the ray; right when the configuration is exactly collinear, the usual cause);
+//     comparisons return kUndecided and the caller keeps every window (`kept_undecided`).
+// Contract: windows in `store` as the engine builds them; targets are vertices of the
+// window's triangle or exact points in its plane.
+// Complexity: stage 1 O(1); stages 3-4 O(chain length) exact or Arb operations per level.
+#pragma once
+
+#include <memory>
+#include <optional>
+#include <unordered_map>
+
+#include "burn3/exact/sources.h"
+#include "burn3/exact/unfolding.h"
+#include "burn3/exact/windows.h"
+
+namespace grassfire {
+
+// A point where a window is evaluated: a vertex of the window's triangle, or an exact point.
+struct Target {
+  std::uint32_t vertex = kNoIndex;
+  const ExactPoint3* point = nullptr;
+};
+
+struct WindowBall {
+  BallVec2 source;  // S or u
+  Ball offset;
+  std::array<BallVec2, 2> image;
+  bool plane = false;
+};
+
+class Certifier {
+ public:
+  // Side decisions escalate to max_bits; comparisons that only prune stop at prune_bits.
+  Certifier(const Unfolding& u, const WindowStore& s, long max_bits, long prune_bits = 256)
+      : u_(u), s_(s), max_bits_(max_bits), prune_bits_(prune_bits) {}
+
+  int side(std::uint32_t w, int j, const Target& x);
+  int compare_times(std::uint32_t w1, const Target& x1, std::uint32_t w2, const Target& x2);
+  int compare_directions(std::uint32_t w1, std::uint32_t w2, std::uint32_t v);
+
+  // Enclosures at the double stage and at the current BallPrecision.
+  DiscPoint target_disc(std::uint32_t t, const Target& x) const;
+  Interval time_interval(std::uint32_t w, const Target& x) const;
+  Ball time_ball(std::uint32_t w, const Target& x);
+  // The chain re-evaluated in Arb; the offset only when asked (it recurses through the
+  // offsets of the vertex sources the chain descends from).
+  WindowBall evaluate(std::uint32_t w, bool with_offset);
+  // The window's geometry in exact local coordinates of its frame (sums of square roots),
+  // when its pseudo-source's position is exact and its chain's unfoldings keep the
+  // coordinates small (see 3.); its offset is exact_sigma(pseudo), when that exists.
+  using ExactVector = std::array<ExactSum, 2>;
+  struct ExactWindow {
+    std::uint32_t frame = 0;
+    bool line = false;
+    ExactVector s;     // point source
+    ExactVector p, d;  // line source: a point, its direction; inner side sign
+    int inner = 1;
+    std::array<ExactVector, 2> image;
+  };
+  const ExactWindow* exact_window(std::uint32_t w);
+  // The exact time of w at x, when exact_window(w) exists and the squared distance (or
+  // the line's length) is rational or denests.
+  std::optional<ExactSum> exact_time(std::uint32_t w, const Target& x);
+  const ExactSum* exact_sigma(std::uint32_t pseudo);
+  // Time expressions (windows.h): Arb and exact values, and the staged comparison
+  // (kUndecided when no stage decides).
+  Ball expr_ball(std::uint32_t expr);
+  const ExactSum* exact_expr(std::uint32_t expr);
+  // prune_only: the caller keeps everything when undecided (escalates to prune_bits only).
+  int compare_time_exprs(std::uint32_t a, std::uint32_t b, bool prune_only = false);
+  mpq_class edge_length2(std::uint32_t e) const;
+
+  CertificationCounts counts;
+
+ private:
+  Ball sigma_ball(std::uint32_t pseudo);
+  void trim_memos();  // only between decisions: pointers into the memo stay valid within one
+  bool same_expression(std::uint32_t w1, std::uint32_t w2, const Target& x) const;
+  bool bound_fixed(std::uint32_t w, int j, std::uint32_t v) const;
+  ExactVector target_uv(std::uint32_t f, const Target& x) const;
+  int exact_side(const ExactWindow& e, int j, const Target& x) const;
+  int exact_direction_cross(const ExactWindow& a, const ExactWindow& b, std::uint32_t v) const;
+  std::unique_ptr<ExactWindow> build_exact_window(std::uint32_t w);
+  template <class F>
+  int escalate(long cap, F&& sign_at_precision);
+
+  const Unfolding& u_;
+  const WindowStore& s_;
+  long max_bits_, prune_bits_;
+  long memo_bits_ = 0;
+  std::unordered_map<std::uint32_t, Ball> time_memo_;  // per TimeExpr, at memo_bits_
+  std::unordered_map<std::uint32_t, std::unique_ptr<ExactWindow>> exact_memo_;
+  std::unordered_map<std::uint32_t, std::unique_ptr<ExactSum>> exact_time_memo_;
+};
+
+}  // namespace grassfire

@@ -1,0 +1,181 @@
+// window_propagation.h -- the event loop of the exact burning engine: fronts (windows)
+// propagated across the sheets of a medial complex (4.2.3, 5.2; DESIGN.md 5).
+//
+// Computes: every window that can realise the burning time BT inside the sheets, from the
+// caller's point sources and the border ignition rules, with singular edges as walls
+// (issue 8, part 1). The arrival of fire at a wall through one of its sheet sides t is the
+// minimum of t's windows along the edge (fronts often graze a wall rather than cross it).
+// The method is Chen and Han's window propagation with the improvements of Xin and Wang
+// 2009 (ICH, as in CGAL's Surface_mesh_shortest_path): a priority queue ordered by a
+// certified lower bound of each window's times (so that, as in Dijkstra's algorithm, every
+// time below the current key is final), pseudo-sources at vertices where paths bend
+// (sector_geometry.h), and two pruning rules, each applied only on a certified decision:
+//  - vertex filter. A child window C on an exit edge with ends a, b is dropped when
+//    time(X1) > d(a) + |a X1| (X1 the end of C farther from a), or the same for b, or, for
+//    the entry edge's vertex c not on the exit edge, time(Y) > d(c) + |c Y| at the end Y of
+//    the parent's entry interval farther from c; d(v) is the time of a real path to v in
+//    the same sector. Proof: along a line through v, time_w(X) - |v X| is non-increasing as
+//    X moves away from v (|grad time| <= 1), so the inequality at the far end holds on the
+//    whole interval, and for c every ray of C passes the entry interval (time(X) = time(Y)
+//    + |Y X| >= ... ); beyond the edge the path through v and then straight is a real path
+//    that is strictly shorter, so C carries no burning path.
+//  - one angle, one split (Xin and Wang): of the windows entering a triangle through one
+//    edge and reaching the opposite vertex o, only the earliest at o (the occupier)
+//    continues on both sides of o; a later one continues only on the side of o from which
+//    its ray comes (and an occupier that loses its place loses the other side's subtree).
+// An undecided comparison prunes nothing (Certifier: kept_undecided). Visibility is never
+// extended: a wedge side is decided by Certifier::side, and an undecided side is counted
+// `uncertified`. Exact ties (symmetric inputs) are proved by exact arithmetic on planar
+// sheets, or by identical expressions, so that tied vertex sources are created once.
+// Contract: a validated MedialComplex and its Unfolding; point sources located in closed
+// triangles (coordinates exact, in the triangle's plane: std::invalid_argument otherwise).
+// Complexity: O(W log W) for W windows (W is O(n^2) in the worst case, about O(n^1.5) on
+// meshes in practice) plus the certified fallbacks; memory O(W).
+#pragma once
+
+#include <cstdint>
+#include <queue>
+#include <vector>
+
+#include "burn3/exact/sector_geometry.h"
+#include "burn3/exact/window_certify.h"
+#include "burn3/exact/window_values.h"
+
+namespace grassfire {
+
+struct ExactBurningOptions {
+  bool vertex_filter = true;          // the vertex filter (tests switch it off to compare)
+  bool one_angle_one_split = true;
+  long max_bits = 512;                // Arb precision cap of the certified stages
+  std::uint64_t max_windows = 400'000'000;  // iteration bound (std::runtime_error beyond)
+};
+
+struct PropagationStats {
+  std::uint64_t windows = 0;          // created (incl. roots and arrival records)
+  std::uint64_t processed = 0;        // popped and propagated
+  std::uint64_t filtered = 0;         // children dropped by the vertex filter
+  std::uint64_t split_pruned = 0;     // children not created by one angle, one split
+  std::uint64_t evicted = 0;          // windows killed as dominated (subtrees, old sources)
+  std::uint64_t pseudo_sources = 0;
+  std::uint64_t ties_absorbed = 0;    // unprovable ties folded into an existing vertex source
+  std::uint64_t vertex_events = 0;    // a window reaching a vertex
+  std::uint64_t wall_arrivals = 0;    // children stopped by a wall (singular edge)
+  std::uint64_t vertex_burns = 0;     // vertices burned by the link rule
+  std::uint64_t segment_arrivals = 0; // fire reaching a vertex along a segment
+  std::uint64_t border_arrivals = 0;  // children that reached a border edge
+  std::uint64_t undecided_angles = 0; // sectors taken to bend without a certified angle
+  double seconds = 0.0;
+};
+
+class WindowPropagation {
+ public:
+  WindowPropagation(const Unfolding& u, const ExactBurningOptions& o);
+
+  // A point source igniting at `start`; the point must lie in the closed triangle.
+  void add_point_source(std::uint32_t triangle, const ExactPoint3& point, const mpq_class& start);
+  // A point source at vertex v (any vertex): v burns at `start`.
+  void add_vertex_source(std::uint32_t v, const mpq_class& start);
+  // Every border rule of the complex (Linear, DistanceToPoint, Never) and f at border vertices.
+  void add_border_ignition();
+  void run();
+
+  const WindowStore& store() const { return s_; }
+  Certifier& certifier() { return cert_; }
+  const PropagationStats& stats() const { return stats_; }
+  const std::vector<SweepEvent>& events() const { return events_; }
+  const SectorGeometry& sectors() const { return sectors_; }
+  // The burn time (TimeExpr) of a vertex decided by the link rule (vertices with
+  // segments), kNoIndex otherwise or if it never burns.
+  std::uint32_t link_burn_time(std::uint32_t v) const {
+    return link_of_[v] == kNoIndex ? kNoIndex : links_[link_of_[v]].burned;
+  }
+  bool is_link_rule_vertex(std::uint32_t v) const { return link_of_[v] != kNoIndex; }
+
+ private:
+  // Events: a window to propagate, fire arriving at a vertex along a segment, a vertex
+  // burning by the link rule. At equal keys arrivals come before burns (a burn's key is an
+  // upper bound of its time: every arrival below it must have been seen).
+  enum class EventKind : std::uint8_t { Window = 0, SegmentArrival = 1, VertexSource = 2, VertexBurn = 3 };
+  struct QueueEntry {
+    double key;
+    std::uint32_t id;
+    EventKind kind = EventKind::Window;
+    bool operator>(const QueueEntry& o) const {
+      if (key != o.key) return key > o.key;
+      if (kind != o.kind) return kind > o.kind;
+      return id > o.id;
+    }
+  };
+  // The link rule's state at a vertex with segments (part 1) or poles (part 2): the first
+  // arrival per link element (TimeExpr, kNoIndex: none yet), the ignition (fixed), and the
+  // burn time once decided.
+  struct LinkState {
+    std::vector<std::uint32_t> arrival;
+    std::uint32_t fixed = kNoIndex;
+    std::uint32_t burned = kNoIndex;
+  };
+  struct SegmentArrival {
+    std::uint32_t vertex, element, time;
+  };
+  // A wedge bound while building a child: a vertex, its image in the parent's frame, and
+  // the depth at which that image is exact.
+  struct Bound {
+    std::uint32_t vertex;
+    DiscPoint image;
+    std::uint32_t depth;
+  };
+
+  void process(std::uint32_t w);
+  void process_root(std::uint32_t w);
+  void process_entered(std::uint32_t w);
+  std::pair<bool, bool> reach_opposite(std::uint32_t w, int corner);
+  void vertex_arrival(std::uint32_t w, std::uint32_t v, std::uint32_t sector);
+  void process_vertex_source(std::uint32_t sector, double key);
+  void make_child(std::uint32_t w, int exit_slot, int icw, int iccw, const Bound& b0, const Bound& b1,
+                  const DiscPoint* third, std::uint32_t third_vertex);
+  bool filtered(std::uint32_t w, std::uint32_t a, std::uint32_t b, const DiscPoint& x0, const DiscPoint& x1,
+                const DiscPoint* third, std::uint32_t third_vertex);
+  std::uint32_t spawn_vertex_source(std::uint32_t v, std::uint32_t sector, std::uint32_t time);
+  std::uint32_t new_time(TimeExpr e);
+  std::uint32_t exact_time(const ExactSum& x);
+  std::uint32_t window_time_at(std::uint32_t w, std::uint32_t v);
+  // Vertex v burns at the given time (ignition, a point source on it, the link rule):
+  // every sector (and segment) receives fire from it.
+  void burn_vertex_at(std::uint32_t v, std::uint32_t time);
+  std::uint32_t new_window(Window w);
+  void add_root(std::uint32_t pseudo, std::uint32_t t, std::uint8_t exits, double key);
+  void add_border_window(std::uint32_t pseudo, std::uint32_t e);
+  void kill_subtree(std::uint32_t w);
+  void kill_child_through(std::uint32_t w, std::uint32_t edge);
+  double vertex_bound(std::uint32_t t, std::uint32_t v) const;
+
+  void init_links();
+  bool is_link_vertex(std::uint32_t v) const { return link_of_[v] != kNoIndex; }
+  void link_arrival(std::uint32_t v, std::uint32_t element, std::uint32_t time);
+  std::uint32_t link_candidate(std::uint32_t v);
+  void schedule_burn(std::uint32_t v);
+  void process_burn(std::uint32_t v, double key);
+  void process_segment_arrival(std::uint32_t a);
+  void emit_from_vertex(std::uint32_t v, std::uint32_t time);
+  void claim_sector(std::uint32_t sector, std::uint32_t time);
+  std::uint32_t min_time(std::uint32_t a, std::uint32_t b);
+
+  const Unfolding& u_;
+  const MedialComplex& mc_;
+  ExactBurningOptions o_;
+  WindowStore s_;
+  Certifier cert_;
+  SectorGeometry sectors_;
+  PropagationStats stats_;
+  std::priority_queue<QueueEntry, std::vector<QueueEntry>, std::greater<QueueEntry>> queue_;
+  std::vector<std::uint32_t> occupier_;      // 3 t + corner
+  std::vector<std::uint32_t> best_time_;     // per sector: the earliest known arrival at its apex (TimeExpr)
+  std::vector<double> best_hi_;              // per sector: upper bound of a real path's time to the apex
+  std::vector<std::uint32_t> sector_source_; // per sector: its current vertex pseudo-source
+  std::vector<std::uint32_t> link_of_;       // vertex -> index into links_, or kNoIndex
+  std::vector<LinkState> links_;
+  std::vector<SegmentArrival> segment_arrivals_;
+  std::vector<SweepEvent> events_;
+};
+
+}  // namespace grassfire

@@ -1,0 +1,106 @@
+// Exact burning engine, metamorphic checks (issue 8 item 6): rational rotations
+// (Pythagorean), translations and scalings change BT exactly as they should; reordering
+// vertices and triangles changes nothing.
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <random>
+
+#include "burn3/exact/exact_burning.h"
+#include "complex3/synthetic_complexes.h"
+#include "number/sqrt_field.h"
+#include "test_burn3_exact_support.h"
+
+using namespace grassfire;
+using namespace grassfire::testing;
+
+namespace {
+
+// x -> s R x + t with R = the rotation by the Pythagorean angle (3/5, 4/5) about y, then
+// by (5/13, 12/13) about z: rational, orthogonal.
+ExactPoint3 motion(const ExactPoint3& p, const mpq_class& s, const ExactPoint3& t) {
+  const mpq_class c1(3, 5), s1(4, 5), c2(5, 13), s2(12, 13);
+  const ExactPoint3 a{c1 * p.x - s1 * p.z, p.y, s1 * p.x + c1 * p.z};
+  const ExactPoint3 b{c2 * a.x - s2 * a.y, s2 * a.x + c2 * a.y, a.z};
+  return {s * b.x + t.x, s * b.y + t.y, s * b.z + t.z};
+}
+
+RawComplex moved(RawComplex raw, const mpq_class& s, const ExactPoint3& t) {
+  for (ExactPoint3& v : raw.vertices) v = motion(v, s, t);
+  for (mpq_class& r2 : raw.radius_squared) r2 *= s * s;
+  for (BorderIgnition& b : raw.border_rules) b.point = motion(b.point, s, t);
+  raw.source += " moved";
+  return raw;
+}
+
+// The same complex with vertices and triangles in a shuffled order (and each triangle's
+// corners rotated).
+RawComplex shuffled(RawComplex raw, std::mt19937& rng, std::vector<std::uint32_t>* new_triangle) {
+  std::vector<std::uint32_t> perm(raw.vertices.size());
+  for (std::uint32_t i = 0; i < perm.size(); ++i) perm[i] = i;
+  std::shuffle(perm.begin(), perm.end(), rng);
+  RawComplex r = raw;
+  for (std::size_t i = 0; i < perm.size(); ++i) {
+    r.vertices[perm[i]] = raw.vertices[i];
+    r.radius_squared[perm[i]] = raw.radius_squared[i];
+  }
+  std::vector<std::uint32_t> tperm(raw.triangles.size());
+  for (std::uint32_t i = 0; i < tperm.size(); ++i) tperm[i] = i;
+  std::shuffle(tperm.begin(), tperm.end(), rng);
+  for (std::size_t i = 0; i < tperm.size(); ++i) {
+    const auto& t = raw.triangles[i];
+    const int k = static_cast<int>(i % 3);
+    r.triangles[tperm[i]] = {perm[t[k]], perm[t[(k + 1) % 3]], perm[t[(k + 2) % 3]]};
+  }
+  for (auto& s : r.segments) s = {perm[s[0]], perm[s[1]]};
+  for (auto& b : r.border_rules) b.edge = {perm[b.edge[0]], perm[b.edge[1]]};
+  *new_triangle = tperm;
+  return r;
+}
+
+}  // namespace
+
+TEST_CASE("rational rigid motions and scalings scale BT exactly (planar sheet with a hole)", "[exact3]") {
+  const RawComplex raw = grid_sheet(4, 3, 1, {{1, 1}}, IgnitionRule::Linear);
+  const mpq_class s(3, 2);
+  const ExactPoint3 t{mpq_class(1, 3), -2, mpq_class(5, 7)};
+  const MedialComplex a = built(raw), b = built(moved(raw, s, t));
+  ExactBurning ea(a), eb(b);
+  ea.add_border_ignition(), eb.add_border_ignition();
+  ea.add_point_source(0, triangle_point(a, 0, mpq_class(1, 3), mpq_class(1, 3)), mpq_class(1, 2));
+  eb.add_point_source(0, motion(triangle_point(a, 0, mpq_class(1, 3), mpq_class(1, 3)), s, t), mpq_class(3, 4));
+  ea.run(), eb.run();
+  std::mt19937 rng(23);
+  for (std::uint32_t k = 0; k < a.triangle_count(); ++k)
+    for (const ExactPoint3& x : sample_triangle(a, k, 3, rng)) {
+      const auto va = ea.exact_burn_time(k, x), vb = eb.exact_burn_time(k, motion(x, s, t));
+      REQUIRE(va);
+      REQUIRE(vb);
+      ExactSum scaled = *va;
+      scaled.scale(s);
+      CHECK(exact_sign(*vb - scaled) == 0);
+    }
+}
+
+TEST_CASE("rigid motions and reordering leave BT unchanged on curved surfaces", "[exact3]") {
+  std::mt19937 rng(29);
+  for (const RawComplex& raw : {octahedron_surface(), tetrahedron_with_flap(), pinched_double_cone(5)}) {
+    const MedialComplex a = built(raw);
+    std::vector<std::uint32_t> tperm;
+    const RawComplex shuffled_raw = shuffled(raw, rng, &tperm);
+    const MedialComplex b = built(moved(raw, 2, {1, 2, 3})), c = built(shuffled_raw);
+    ExactBurning ea(a), eb(b), ec(c);
+    const ExactPoint3 p = triangle_point(a, 0, mpq_class(1, 5), mpq_class(2, 5));
+    ea.add_point_source(0, p, 0), eb.add_point_source(0, motion(p, 2, {1, 2, 3}), 0), ec.add_point_source(tperm[0], p, 0);
+    ea.add_border_ignition(), eb.add_border_ignition(), ec.add_border_ignition();
+    ea.run(), eb.run(), ec.run();
+    for (std::uint32_t k = 0; k < a.triangle_count(); ++k)
+      for (const ExactPoint3& x : sample_triangle(a, k, 3, rng)) {
+        const Interval ia = ea.burn_time(k, x), ib = eb.burn_time(k, motion(x, 2, {1, 2, 3})), ic = ec.burn_time(tperm[k], x);
+        CAPTURE(raw.source, k, ia.lo, ib.lo, ic.lo);
+        CHECK(std::abs(2 * ia.mid() - ib.mid()) <= 1e-11);
+        CHECK(std::abs(ia.mid() - ic.mid()) <= 1e-11);
+      }
+    CHECK(ea.certification().uncertified == 0);
+  }
+}

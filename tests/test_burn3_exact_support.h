@@ -1,0 +1,31 @@
+// Helpers shared by the [exact3] tests: small complexes with known burning times, point
+// sampling inside triangles, and a run of the exact engine.
+#pragma once
+
+#include <random>
+#include <vector>
+
+#include "burn3/exact/exact_burning.h"
+#include "complex3/complex_builder.h"
+#include "test_complex3_support.h"
+
+namespace grassfire::testing {
+
+// The grid sheet [0, w] x [0, h] in the plane z = 0 (cells of side 1/g, each split in two
+// along alternating diagonals), without the cells listed in `holes` (cell column, row at
+// resolution g). Border edges get `rule`.
+RawComplex grid_sheet(int w, int h, int g, const std::vector<std::pair<int, int>>& holes = {},
+                      IgnitionRule rule = IgnitionRule::Never);
+
+// The point with barycentric weights (a, b, 1 - a - b) of triangle t (exact).
+ExactPoint3 triangle_point(const MedialComplex& mc, std::uint32_t t, const mpq_class& a, const mpq_class& b);
+// `count` random exact points of t with denominator 64 (interior, edges and corners included).
+std::vector<ExactPoint3> sample_triangle(const MedialComplex& mc, std::uint32_t t, int count, std::mt19937& rng);
+
+Vec3d to_vec(const ExactPoint3& p);
+double distance3(const Vec3d& a, const Vec3d& b);
+
+// The enclosure's width, and whether it contains x.
+inline bool encloses(const Interval& i, double x, double slack = 0.0) { return i.lo - slack <= x && x <= i.hi + slack; }
+
+}  // namespace grassfire::testing
