@@ -3,6 +3,8 @@
 // the homotopy-preserving pruning, the homology, exact vertices, refinement and refusal.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
+#include <cmath>
 #include <optional>
 #include <random>
 #include <set>
@@ -193,8 +195,10 @@ TEST_CASE("samples whose Voronoi cell lies inside (a narrow notch) do not leave 
 
 TEST_CASE("mesh axis vertices are exact circumcentres, merged exactly", "[mesh_axis]") {
   // The octahedron's six vertices are cospherical: one Delaunay cell, one vertex, the
-  // centre, with R^2 = 4 exactly.
-  const MeshAxis octa = mesh_medial_axis(project_mesh("octahedron.off"));
+  // centre, with R^2 = 4 exactly (the first round: no thickness refinement).
+  MeshAxisOptions first;
+  first.max_refinements = 0;
+  const MeshAxis octa = mesh_medial_axis(project_mesh("octahedron.off"), first);
   REQUIRE(octa.complex.vertices.size() == 1);
   CHECK(octa.complex.vertices[0] == ExactPoint3{0, 0, 0});
   CHECK(octa.complex.radius_squared[0] == 4);
@@ -354,4 +358,72 @@ TEST_CASE("homology: peeling free faces gives the plain reduction's Betti number
   const std::vector<std::array<std::uint32_t, 3>> faces = {{0, 1, 2}, {0, 1, 3}, {0, 2, 3}, {1, 2, 3}};
   CHECK(betti_numbers(4, {}, faces, {}) == BettiNumbers{1, 0, 1});
   CHECK(betti_numbers(4, {}, faces, {{0, 1, 2, 3}}) == BettiNumbers{1, 0, 0});
+}
+
+namespace {
+
+std::array<double, 3> approx(const ExactPoint3& p) { return {p.x.get_d(), p.y.get_d(), p.z.get_d()}; }
+
+double distance(const std::array<double, 3>& x, const std::array<double, 3>& y) {
+  return std::sqrt((x[0] - y[0]) * (x[0] - y[0]) + (x[1] - y[1]) * (x[1] - y[1]) + (x[2] - y[2]) * (x[2] - y[2]));
+}
+
+double distance_to_segment(const std::array<double, 3>& x, const std::array<double, 3>& a, const std::array<double, 3>& b) {
+  double ab2 = 0, t = 0;
+  for (int k = 0; k < 3; ++k) ab2 += (b[k] - a[k]) * (b[k] - a[k]), t += (x[k] - a[k]) * (b[k] - a[k]);
+  t = std::clamp(t / ab2, 0.0, 1.0);
+  double d2 = 0;
+  for (int k = 0; k < 3; ++k) d2 += (x[k] - a[k] - t * (b[k] - a[k])) * (x[k] - a[k] - t * (b[k] - a[k]));
+  return std::sqrt(d2);
+}
+
+// Whether some axis vertex lies past the middle of the arm from hub to end (closer to the
+// end than half the arm's length) and within `radius` of the arm's centre line.
+bool reaches_into_arm(const MeshAxis& a, const std::array<double, 3>& hub, const std::array<double, 3>& end, double radius) {
+  const double length = distance(end, hub);
+  for (const ExactPoint3& v : a.complex.vertices) {
+    const std::array<double, 3> x = approx(v);
+    if (distance(x, end) < length / 2 && distance_to_segment(x, hub, end) < radius) return true;
+  }
+  return false;
+}
+
+}  // namespace
+
+TEST_CASE("thin parts keep their axis: the tripod's arms and the cross's bars", "[mesh_axis]") {
+  // At the default spacing (the mean edge, 0.31 on the tripod, 0.23 on the cross) the arms
+  // (0.3 and 0.2 thick) are thinner than the separation threshold 2 h: before the
+  // thickness rule every arm face was pruned and both axes were one vertex.
+  const TriangleMesh3 tripod = project_mesh("tripod.off");
+  const MeshAxis t = mesh_medial_axis(tripod);
+  CHECK(t.axis_betti == BettiNumbers{1, 0, 0});
+  CHECK(t.rounds.front().kept_polygons == 0);  // the coarse round lost the arms
+  // The arms' ends: the centroids of the mesh vertices at each arm's tip (the arms run
+  // towards -x, towards +x -y and towards +y from the hub, the centroid of the box
+  // [-0.17, 0.14] x [-0.27, 0.04] between them).
+  const std::array<double, 3> hub{-0.0165, -0.1166, 0.0059};
+  auto tip = [&](auto at_tip) {
+    std::array<double, 3> c{0, 0, 0};
+    int n = 0;
+    for (const auto& v : tripod.vertices)
+      if (at_tip(v)) {
+        for (int k = 0; k < 3; ++k) c[k] += v[k];
+        ++n;
+      }
+    REQUIRE(n == 5);
+    for (double& x : c) x /= n;
+    return c;
+  };
+  const std::array<double, 3> ends[3] = {tip([](const auto& v) { return v[0] < -0.4; }),
+                                         tip([](const auto& v) { return v[0] > 0.35; }),
+                                         tip([](const auto& v) { return v[1] > 0.33; })};
+  for (const auto& end : ends) CHECK(reaches_into_arm(t, hub, end, 0.15));
+  // The cross: bars 0.2 x 0.2 along the x and y axes from -0.5 to 0.5; their centre lines
+  // are the axes themselves.
+  const MeshAxis c = mesh_medial_axis(project_mesh("cross.off"));
+  CHECK(c.axis_betti == BettiNumbers{1, 0, 0});
+  CHECK(c.complex.vertices.size() > 1);
+  for (const std::array<double, 3>& end :
+       {std::array<double, 3>{0.5, 0, 0}, {-0.5, 0, 0}, {0, 0.5, 0}, {0, -0.5, 0}})
+    CHECK(reaches_into_arm(c, {0, 0, 0}, end, 0.1));
 }

@@ -144,7 +144,9 @@ class Extractor {
       }
     }
     out_->pole_distance.resize(n);
+    out_->inner_pole_distance.resize(n);
     for (std::size_t i = 0; i < n; ++i) {
+      out_->inner_pole_distance[i] = std::sqrt(inner[i]);
       const double r2 = inner[i] == 0 ? outer[i] : outer[i] == 0 ? inner[i] : std::min(inner[i], outer[i]);
       out_->pole_distance[i] = std::sqrt(r2);
     }

@@ -75,6 +75,10 @@ struct InnerVoronoi {
   // Per sample, the distance to the nearer of its two poles (a local feature size
   // estimate, in doubles: it only steers the refinement of the sampling).
   std::vector<double> pole_distance;
+  // Per sample, the distance to its inner pole (the largest R(x) over the inner Voronoi
+  // vertices of its cell; 0 when the cell has none): the local half-thickness of the solid
+  // at the sample, which the separation test of the pruning must resolve (mesh_axis.h).
+  std::vector<double> inner_pole_distance;
   // Structure and cost.
   std::size_t tetrahedra = 0, cells = 0, cells_on_boundary = 0, cospherical_pairs = 0;
   std::size_t interior_samples = 0;  // Voronoi cells wholly inside, collapsed through one face

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 #include "complex3/builders/axis_pruning.h"
 #include "complex3/builders/cpu_clock.h"
@@ -201,6 +202,41 @@ void refine(const InnerVoronoi& vor, const MeshAxisOptions& options, std::vector
     for (double& h : *spacing) h /= 2;
 }
 
+
+// The thickness rule: triangle t is too coarse for the separation test when
+// lambda h_t > 2 f_t, f_t the largest inner pole distance of its samples (the
+// half-thickness of the part it bounds: a part of half-thickness f puts the samples across
+// it about 2 f apart, and the test keeps only pairs at least lambda h apart). The largest, not the least: near a convex
+// edge the inner pole distance of a sample is about its distance to the edge (lfs = 0
+// there), so the least would refine every sharp edge for ever. Such triangles get
+// h_t = max(rho 2 f_t / lambda, h_t / 4): the margin 1 / rho (rho = feature_ratio) is also
+// the hysteresis that stops the refinement once the estimates of f settle. Returns how
+// many triangles were too coarse.
+std::size_t refine_thin(const InnerVoronoi& vor, const MeshAxisOptions& options, std::vector<double>* spacing) {
+  if (!(options.separation > 0)) return 0;
+  std::size_t coarse = 0;
+  for (std::size_t t = 0; t < spacing->size(); ++t) {
+    double f = 0;
+    for (std::uint32_t i = vor.samples.offset[t]; i < vor.samples.offset[t + 1]; ++i)
+      f = std::max(f, vor.inner_pole_distance[vor.samples.on_triangle[i]]);
+    if (f == 0) continue;  // no inner Voronoi vertex on its samples: nothing to resolve
+    const double limit = 2 * f / options.separation;
+    double& h = (*spacing)[t];
+    if (limit < h) {
+      h = std::max(options.feature_ratio * limit, h / 4);
+      ++coarse;
+    }
+  }
+  return coarse;
+}
+
+// The accepted round: its Voronoi complex and kept cells, assembled once at the end.
+struct AcceptedAxis {
+  std::size_t round = 0;
+  InnerVoronoi vor;
+  AxisCells cells;
+};
+
 }  // namespace
 
 MeshAxis mesh_medial_axis(const TriangleMesh3& mesh, const MeshAxisOptions& options) {
@@ -211,17 +247,20 @@ MeshAxis mesh_medial_axis(const TriangleMesh3& mesh, const MeshAxisOptions& opti
   out.solid = solid_topology(mesh);
   const SolidLocator solid(mesh);
   std::vector<double> spacing(mesh.triangles.size(), mean_edge_length(mesh) / options.samples_per_edge);
+  std::optional<AcceptedAxis> accepted;
   for (int round = 0;; ++round) {
     MeshAxisRound r;
     r.spacing = *std::min_element(spacing.begin(), spacing.end());
     double t = cpu_seconds();
     SurfaceSamples samples = sample_surface(mesh, spacing);
     r.samples = samples.lattice.size();
-    if (r.samples > options.max_samples)
+    if (r.samples > options.max_samples) {
+      if (accepted) break;  // thickness refinement only: the accepted axis stands
       throw MeshAxisTopologyError(mesh.source + ": " + std::to_string(r.samples) + " samples would exceed the limit of " +
                                   std::to_string(options.max_samples));
+    }
     r.sample_seconds = seconds_since(t);
-    const InnerVoronoi vor = inner_voronoi(std::move(samples), solid);
+    InnerVoronoi vor = inner_voronoi(std::move(samples), solid);
     r.tetrahedra = vor.tetrahedra;
     r.cells = vor.cells;
     r.inner_cells = vor.vertices.size();
@@ -235,30 +274,40 @@ MeshAxis mesh_medial_axis(const TriangleMesh3& mesh, const MeshAxisOptions& opti
     const AngleTest angle(vor, options.angle_degrees);
     const SeparationTest separation(vor, spacing, options.separation);
     const PrunedComplex pruned = prune(vor, angle, separation);
-    const AxisCells cells = axis_cells(vor, pruned);
+    AxisCells cells = axis_cells(vor, pruned);
     r.kept_polygons = cells.polygons.size();
     r.kept_segments = cells.segments.size();
     r.prune_seconds = seconds_since(t);
     t = cpu_seconds();
     r.betti = polygonal_betti_numbers(cells.voronoi_vertex.size(), cells.segments, cells.rings);
     r.betti_seconds = seconds_since(t);
-    out.rounds.push_back(r);
-    if (r.betti == out.solid.betti) {
-      t = cpu_seconds();
-      out.complex = assemble(vor, cells, mesh.source);
-      out.samples = vor.samples;
-      out.axis_betti = r.betti;
-      out.exact_locator_tests = solid.stats().exact_tests;
-      out.assemble_seconds = seconds_since(t);
-      break;
+    const bool right = r.betti == out.solid.betti;
+    if (right) {
+      std::vector<double> next = spacing;
+      r.coarse_triangles = refine_thin(vor, options, &next);
+      out.rounds.push_back(r);
+      accepted = AcceptedAxis{out.rounds.size() - 1, std::move(vor), std::move(cells)};
+      if (r.coarse_triangles == 0 || round >= options.max_refinements) break;
+      spacing = std::move(next);
+      continue;
     }
-    if (round >= options.max_refinements)
+    out.rounds.push_back(r);
+    if (round >= options.max_refinements) {
+      if (accepted) break;
       throw MeshAxisTopologyError(mesh.source + ": the axis has Betti numbers " + betti_text(r.betti) +
                                   ", the solid " + betti_text(out.solid.betti) + ", after " + std::to_string(round) +
                                   " refinements (" + std::to_string(r.samples) +
                                   " samples); no axis is returned. Try a larger --samples");
+    }
     refine(vor, options, &spacing);
   }
+  const double t = cpu_seconds();
+  out.axis_round = accepted->round;
+  out.complex = assemble(accepted->vor, accepted->cells, mesh.source);
+  out.samples = std::move(accepted->vor.samples);
+  out.axis_betti = out.rounds[out.axis_round].betti;
+  out.exact_locator_tests = solid.stats().exact_tests;
+  out.assemble_seconds = seconds_since(t);
   out.total_seconds = seconds_since(start);
   return out;
 }
@@ -277,6 +326,7 @@ nlohmann::json mesh_axis_json(const MeshAxis& a) {
                       {"voronoi_segments", r.segments},
                       {"kept_polygons", r.kept_polygons},
                       {"kept_segments", r.kept_segments},
+                      {"coarse_triangles", r.coarse_triangles},
                       {"betti", betti(r.betti)},
                       {"seconds",
                        {{"samples", r.sample_seconds},
@@ -291,6 +341,7 @@ nlohmann::json mesh_axis_json(const MeshAxis& a) {
   return {{"solid_betti", betti(a.solid.betti)},
           {"axis_betti", betti(a.axis_betti)},
           {"refinements", a.refinements()},
+          {"axis_round", a.axis_round},
           {"shells", shells},
           {"rounds", rounds},
           {"exact_locator_tests", a.exact_locator_tests},

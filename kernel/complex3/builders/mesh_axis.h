@@ -16,6 +16,16 @@
 //     triangulated axis. When they differ from S's, h is halved and steps 2-5 repeat, at
 //     most max_refinements times; then MeshAxisTopologyError says what was reached. A
 //     wrong axis is never returned.
+//  6. the thickness rule: the separation test (|p - q| >= lambda h) removes every face of a
+//     part thinner than about lambda h / 2, so a coarse sampling of a thin part (a tripod's
+//     arm, a cross's bar) prunes the part away and leaves the right Betti numbers on a
+//     useless axis (a point). So once the Betti numbers are right, every triangle whose
+//     spacing exceeds 2 f / lambda, f the largest inner pole distance of its samples (the
+//     half-thickness of the part it bounds), gets spacing 2 rho f / lambda, rho =
+//     feature_ratio (at most 4 times finer per round)
+//     and steps 2-5 repeat, until no triangle is too coarse or max_refinements or
+//     max_samples is reached; the last round with the solid's Betti numbers is returned
+//     (axis_round; later rounds are listed too).
 // Output: a RawComplex with exact rational vertices (the circumcentres, from the double
 // samples; distinct because equal circumcentres are one Delaunay cell), exact R^2 (the
 // squared circumradius), the Voronoi faces fanned into triangles (they are convex, and
@@ -54,7 +64,8 @@ struct MeshAxisOptions {
   int max_refinements = 5;       // halvings of h after the first round
   double angle_degrees = 0;      // theta of the pruning (0: no angle test)
   double separation = 2;         // lambda: pq must be >= lambda local spacings apart; 0: no test
-  double feature_ratio = 0.5;    // refinement: spacing <= ratio * (pole distance) where refined
+  double feature_ratio = 0.5;    // refinement: spacing <= ratio * (pole distance) where refined;
+                                 // thickness rule: spacing <= ratio * 2 (inner pole distance) / lambda
   std::size_t max_samples = 2000000;
 };
 
@@ -63,6 +74,7 @@ struct MeshAxisRound {
   std::size_t samples = 0, tetrahedra = 0, cells = 0, inner_cells = 0;
   std::size_t interior_samples = 0;  // samples whose Voronoi cell is inside (inner_voronoi.h)
   std::size_t polygons = 0, segments = 0, kept_polygons = 0, kept_segments = 0;
+  std::size_t coarse_triangles = 0;  // too coarse for the thickness rule (rounds with the right Betti numbers)
   BettiNumbers betti;
   double sample_seconds = 0, delaunay_seconds = 0, classify_seconds = 0, extract_seconds = 0, prune_seconds = 0,
          betti_seconds = 0;
@@ -72,8 +84,9 @@ struct MeshAxis {
   RawComplex complex;
   SolidTopology solid;
   BettiNumbers axis_betti;
-  std::vector<MeshAxisRound> rounds;  // the last one is the axis returned
-  SurfaceSamples samples;             // of the last round
+  std::vector<MeshAxisRound> rounds;  // every round run
+  std::size_t axis_round = 0;         // the round whose axis is returned (the last with the solid's Betti numbers)
+  SurfaceSamples samples;             // of that round
   std::size_t exact_locator_tests = 0;
   double assemble_seconds = 0, total_seconds = 0;
   int refinements() const { return static_cast<int>(rounds.size()) - 1; }
