@@ -23,7 +23,7 @@
 
 #include "burn2/extended_grassfire.h"
 #include "burn2/measures.h"
-#include "medial2/cpu_clock.h"
+#include "io/cpu_clock.h"
 #include "medial2/sampled_axis.h"
 #include "peak_memory.h"
 #include "shapes/load_shape.h"

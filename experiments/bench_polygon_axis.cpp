@@ -41,7 +41,7 @@
 #include <vector>
 
 #include "burn2/extended_grassfire.h"
-#include "medial2/cpu_clock.h"
+#include "io/cpu_clock.h"
 #include "medial2/polygon_axis.h"
 #include "medial2/polygon_axis_geometry.h"
 #include "medial2/polygon_axis_symmetry.h"

@@ -10,12 +10,12 @@
 #include <string>
 
 #include "geometry2/predicates2.h"
-#include "medial2/cpu_clock.h"
+#include "io/cpu_clock.h"
 #include "medial2/polygon_axis_geometry.h"
 #include "medial2/polygon_axis_symmetry.h"
 #include "medial2/segment_voronoi.h"
-#include "medial2/voronoi_circle.h"
 #include "medial2/union_find.h"
+#include "medial2/voronoi_circle.h"
 
 namespace grassfire {
 

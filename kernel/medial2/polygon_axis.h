@@ -65,7 +65,7 @@ struct PolygonAxisReport {
   std::uint64_t dd_refinements = 0;        // enclosures re-evaluated in double-double
   std::uint64_t ball_refinements = 0;      // of those, still too wide: re-evaluated in Arb
   std::uint64_t circles_by_kind[7] = {};   // indexed by CircleKind
-  double voronoi_seconds = 0, values_seconds = 0, total_seconds = 0;  // thread CPU (medial2/cpu_clock.h)
+  double voronoi_seconds = 0, values_seconds = 0, total_seconds = 0;  // thread CPU (io/cpu_clock.h)
 };
 
 MedialGraph exact_polygon_axis(const Shape2& shape, const PolygonAxisOptions& options = {},

@@ -13,7 +13,7 @@
 #include <string>
 
 #include "geometry2/shape_locator.h"
-#include "medial2/cpu_clock.h"
+#include "io/cpu_clock.h"
 #include "medial2/sampled_geometry.h"
 #include "medial2/union_find.h"
 

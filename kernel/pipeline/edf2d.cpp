@@ -3,7 +3,7 @@
 
 #include <stdexcept>
 
-#include "medial2/cpu_clock.h"
+#include "io/cpu_clock.h"
 
 namespace grassfire {
 

@@ -34,7 +34,7 @@ struct Edf2dOptions {
   const DiskList* disks = nullptr;        // AxisMethod::DiskUnion
 };
 
-// Thread CPU seconds per stage (medial2/cpu_clock.h).
+// Thread CPU seconds per stage (io/cpu_clock.h).
 struct Edf2dTimings {
   double resample = 0, delaunay = 0, axis = 0, burn = 0, measures = 0;
   double total() const { return resample + delaunay + axis + burn + measures; }

@@ -9,9 +9,9 @@
 #include <memory>
 #include <stdexcept>
 
-#include "complex3/builders/cpu_clock.h"
 #include "complex3/builders/mesh_checks.h"
 #include "complex3/exact_predicates3.h"
+#include "io/cpu_clock.h"
 #include "medial2/union_find.h"
 #include "number/exact_sum.h"
 

@@ -6,11 +6,11 @@
 #include <optional>
 
 #include "complex3/builders/axis_pruning.h"
-#include "complex3/builders/cpu_clock.h"
 #include "complex3/builders/inner_voronoi.h"
 #include "complex3/builders/mesh_checks.h"
 #include "complex3/builders/mesh_samples.h"
 #include "complex3/exact_predicates3.h"
+#include "io/cpu_clock.h"
 #include "number/exact_sum.h"
 
 namespace grassfire {

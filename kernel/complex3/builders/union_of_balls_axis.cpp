@@ -9,9 +9,9 @@
 #include <optional>
 #include <stdexcept>
 
-#include "complex3/builders/cpu_clock.h"
 #include "complex3/builders/union_tet_axis.h"
 #include "complex3/exact_predicates3.h"
+#include "io/cpu_clock.h"
 
 namespace grassfire {
 
