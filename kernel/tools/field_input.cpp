@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "burn3/discrete_burning_field.h"
+#include "pipeline/burn3d.h"
 #include "pipeline/complex_input.h"
 
 namespace grassfire::cli {
@@ -17,14 +18,6 @@ void declare_field_options(Options& opt) {
       .flag("mesh-is-complex", "use a mesh itself as the 2-complex (R = 0) instead of its medial axis");
 }
 
-double default_spacing(const MedialComplex& mc) {
-  Vec3d lo = mc.vertex(0).approx, hi = lo;
-  for (const ComplexVertex& v : mc.vertices())
-    for (int i = 0; i < 3; ++i) lo[i] = std::min(lo[i], v.approx[i]), hi[i] = std::max(hi[i], v.approx[i]);
-  const double h = std::hypot(hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]) / 100;
-  return h > 0 ? h : 1.0;
-}
-
 FieldInput load_field(const Options& opt, const std::string& input, const std::string& command) {
   if (opt.get("method") != "discrete")
     throw std::runtime_error("method '" + opt.get("method") + "' is not available: only 'discrete' (the exact "
@@ -34,7 +27,7 @@ FieldInput load_field(const Options& opt, const std::string& input, const std::s
   in.complex->validate();
   if (in.complex->vertex_count() == 0) throw std::runtime_error(input + ": the complex is empty");
   DiscreteBurningOptions o;
-  o.spacing = opt.has("spacing") ? opt.get_double("spacing") : default_spacing(*in.complex);
+  o.spacing = opt.has("spacing") ? opt.get_double("spacing") : default_burn_spacing(*in.complex);
   if (!(o.spacing > 0) || !std::isfinite(o.spacing)) throw std::runtime_error("--spacing must be a positive number");
   o.max_points = static_cast<std::uint64_t>(opt.get_long("max-points", 1, 2'000'000'000L));
   in.burning = std::make_unique<DiscreteBurning>(burn_discrete(*in.complex, o));

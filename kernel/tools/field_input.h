@@ -25,6 +25,5 @@ struct FieldInput {
 
 void declare_field_options(Options& opt);
 FieldInput load_field(const Options& opt, const std::string& input, const std::string& command);
-double default_spacing(const MedialComplex& mc);
 
 }  // namespace grassfire::cli
