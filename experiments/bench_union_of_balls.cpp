@@ -54,7 +54,9 @@ std::vector<double> measure(std::size_t n) {
           a.coordinate_error,
           a.triangulation_seconds,
           double(a.tetrahedra_candidates),
-          double(a.voronoi_cells)};
+          double(a.voronoi_cells),
+          double(a.clips),
+          double(a.beyond_reach)};
   for (const auto& stage : a.stage_seconds) v.push_back(stage.second);  // the profile, CPU seconds
   return v;
 }
@@ -71,10 +73,12 @@ int main(int argc, char** argv) {
     std::printf("%zu,%.4f,%.4f,%.1f,%.0f,%.0f,%.1f\n", n, v[0], v[1], v[1] / v[0], v[2], v[3], v.back());
     std::printf("# n=%zu: rt cells %.0f, alpha tetrahedra %.0f, boundary vertices %.0f, tet polygons %.0f, segments %.0f, "
                 "sign tests %.0f (filter %.0f, structural %.0f, exact %.0f), max coordinate error %.3g, "
-                "triangulation inside the axis %.3f s, candidates per tetrahedron %.1f, cells clipped per tetrahedron %.1f\n",
-                n, v[4], v[5], v[6], v[7], v[8], v[9], v[10], v[11], v[12], v[13], v[14], v[15] / v[5], v[16] / v[5]);
+                "triangulation inside the axis %.3f s, candidates per tetrahedron %.1f, cells clipped per tetrahedron %.1f, "
+                "bisectors clipped per cell %.1f, skipped by the reach bound per cell %.1f\n",
+                n, v[4], v[5], v[6], v[7], v[8], v[9], v[10], v[11], v[12], v[13], v[14], v[15] / v[5], v[16] / v[5],
+                v[17] / v[16], v[18] / v[16]);
     std::printf("# n=%zu profile (CPU s):", n);
-    for (std::size_t k = 0; k < kStages.size(); ++k) std::printf(" %s %.3f;", kStages[k], v[17 + k]);
+    for (std::size_t k = 0; k < kStages.size(); ++k) std::printf(" %s %.3f;", kStages[k], v[19 + k]);
     std::printf("\n");
     std::fflush(stdout);
   }

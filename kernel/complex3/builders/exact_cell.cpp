@@ -69,14 +69,15 @@ LazyPoint3::LazyPoint3(const ExactPoint3& p)
   exact_ = h;
 }
 
-LazyPoint3::LazyPoint3(std::array<std::array<RadicalNumber, 4>, 3> planes, const std::array<Interval, 3>& approx)
-    : planes_(std::move(planes)), approx_(approx) {}
+LazyPoint3::LazyPoint3(std::array<CellPlane, 3> planes, const std::array<Interval, 3>& approx)
+    : planes_(planes.begin(), planes.end()), approx_(approx) {}
 
 LazyPoint3::LazyPoint3(std::shared_ptr<const HomogeneousPoint> exact, const std::array<Interval, 3>& approx)
     : approx_(approx), exact_(std::move(exact)) {}
 
 const HomogeneousPoint& LazyPoint3::exact() const {
-  if (!exact_) exact_ = std::make_shared<HomogeneousPoint>(point_on_planes(planes_[0], planes_[1], planes_[2]));
+  if (!exact_)
+    exact_ = std::make_shared<HomogeneousPoint>(point_on_planes(planes_[0].coef(), planes_[1].coef(), planes_[2].coef()));
   return *exact_;
 }
 
@@ -137,15 +138,15 @@ int PlaneSet::side(std::uint32_t id, const CellVertex& v) {
     return 0;
   }
   const CellPlane& p = planes_[id];
-  if (structural_zero_ && structural_zero_(id, v)) {
-    ++stats.by_structure;
-    return 0;
-  }
   const Interval value = p.approx()[0] * v.approx[0] + p.approx()[1] * v.approx[1] + p.approx()[2] * v.approx[2] + p.approx()[3];
   const int s = certified(value);
   if (s != 2) {
     ++stats.by_filter;
     return s;
+  }
+  if (structural_zero_ && structural_zero_(id, v)) {
+    ++stats.by_structure;
+    return 0;
   }
   ++stats.by_exact;
   const HomogeneousPoint& h = exact(v);

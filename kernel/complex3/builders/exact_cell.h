@@ -10,9 +10,10 @@
 // created it, and every later plane that evaluated to exactly zero at it). Builders turn
 // supports into global keys, so that the same point computed in different cells is
 // recognised without comparing coordinates.
-// Decisions (DESIGN.md 3): side of a vertex = the support test, then a caller-supplied
-// structural zero (a plane known to contain the point), then a double interval filter,
-// then the exact sign of  a X + b Y + c Z + d W  over the field (X, Y, Z, W homogeneous
+// Decisions (DESIGN.md 3): side of a vertex = the support test, then a double interval
+// filter, then a caller-supplied structural zero (a plane known to contain the point:
+// the filter can never certify a nonzero sign there, so asking it first changes no
+// decision and spares the oracle on most tests), then the exact sign of  a X + b Y + c Z + d W  over the field (X, Y, Z, W homogeneous
 // coordinates of the vertex from its three defining planes, by Cramer's rule).
 // Contract: the initial polytope is bounded, full-dimensional, with outward
 // counter-clockwise faces; planes of one cell live in one PlaneSet.
@@ -71,18 +72,19 @@ HomogeneousPoint point_on_planes(const std::array<RadicalNumber, 4>& a, const st
                                  const std::array<RadicalNumber, 4>& c, NumberStats* stats = nullptr);
 
 // A vertex kept beyond the life of its cell: an interval enclosure now, the exact
-// coordinates (from copies of its three planes) on first use. Not thread-safe.
+// coordinates (from copies of its three planes, whose exact coefficients are themselves
+// made on first use) when asked. Not thread-safe.
 class LazyPoint3 {
  public:
   explicit LazyPoint3(const ExactPoint3& p);  // a rational point
-  LazyPoint3(std::array<std::array<RadicalNumber, 4>, 3> planes, const std::array<Interval, 3>& approx);
+  LazyPoint3(std::array<CellPlane, 3> planes, const std::array<Interval, 3>& approx);
   explicit LazyPoint3(std::shared_ptr<const HomogeneousPoint> exact, const std::array<Interval, 3>& approx);
   const HomogeneousPoint& exact() const;
   const std::array<Interval, 3>& approx() const { return approx_; }
   const ExactPoint3* rational() const { return rational_ ? &point_ : nullptr; }
 
  private:
-  std::array<std::array<RadicalNumber, 4>, 3> planes_;
+  std::vector<CellPlane> planes_;  // three, or none for a rational or given point
   std::array<Interval, 3> approx_;
   bool rational_ = false;
   ExactPoint3 point_;

@@ -73,6 +73,13 @@ void extract(const Rt& rt, RegularTriangulation* out) {
     for (auto c = rt.finite_cells_begin(); c != rt.finite_cells_end(); ++c)
       out->tetrahedra.push_back(
           sorted<4>({c->vertex(0)->info(), c->vertex(1)->info(), c->vertex(2)->info(), c->vertex(3)->info()}));
+  // CGAL enumerates each edge and facet from the cell of smaller address, so its order
+  // changes from one call to the next in one process: sorted lists make the axis (its
+  // numbering, and which cell first computes a vertex) a function of the input alone.
+  std::sort(out->vertices.begin(), out->vertices.end());
+  std::sort(out->edges.begin(), out->edges.end());
+  std::sort(out->triangles.begin(), out->triangles.end());
+  std::sort(out->tetrahedra.begin(), out->tetrahedra.end());
 }
 
 template <class K>

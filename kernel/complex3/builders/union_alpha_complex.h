@@ -36,7 +36,7 @@
 
 namespace grassfire {
 
-// The finite simplices of the regular triangulation, as sorted ball ids.
+// The finite simplices of the regular triangulation, as sorted ball ids, each list sorted.
 struct RegularTriangulation {
   int dimension = -1;
   std::vector<std::uint32_t> vertices;

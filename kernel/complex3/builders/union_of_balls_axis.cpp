@@ -184,15 +184,16 @@ class Assembler {
     std::array<double, 3> c{0, 0, 0};
     for (std::uint32_t v : p.vertices)
       for (int k = 0; k < 3; ++k) c[k] += records_[v].point->approx()[k].mid() / static_cast<double>(p.vertices.size());
+    const CellPlane::Coefficients& plane = p.plane->coef();
     int axis = 0;
     for (int k = 1; k < 3; ++k)
-      if (p.plane[k].approx().mid() * p.plane[k].approx().mid() > p.plane[axis].approx().mid() * p.plane[axis].approx().mid()) axis = k;
+      if (plane[k].approx().mid() * plane[k].approx().mid() > plane[axis].approx().mid() * plane[axis].approx().mid()) axis = k;
     const ExactPoint3 q{mpq_class(c[0]), mpq_class(c[1]), mpq_class(c[2])};
-    const RadicalNumber value = p.plane[0] * q.x + p.plane[1] * q.y + p.plane[2] * q.z + p.plane[3];
+    const RadicalNumber value = plane[0] * q.x + plane[1] * q.y + plane[2] * q.z + plane[3];
     auto h = std::make_shared<HomogeneousPoint>();
     const mpq_class* qc[3] = {&q.x, &q.y, &q.z};
-    for (int k = 0; k < 3; ++k) h->c[k] = p.plane[axis] * *qc[k] - (k == axis ? value : RadicalNumber(0));
-    h->c[3] = p.plane[axis];
+    for (int k = 0; k < 3; ++k) h->c[k] = plane[axis] * *qc[k] - (k == axis ? value : RadicalNumber(0));
+    h->c[3] = plane[axis];
     h->w_sign = sign(h->c[3]);
     if (h->w_sign == 0) return;
     out_->samples.push_back({h, p.v, p.u});
@@ -369,13 +370,15 @@ UnionOfBallsAxis union_of_balls_axis(const BallSet& balls, const UnionOfBallsOpt
   out.union_betti = alpha_complex_betti(k);
   stage("betti numbers");
   out.radicals = std::make_shared<RadicalTable>();
-  out.boundary = boundary_vertices(balls, k, out.radicals.get());
+  out.boundary = boundary_vertices(balls, k, out.radicals.get(), !options.reference);
   stage("boundary vertices");
-  TetAxis tets = tet_axis(balls, k, out.boundary, *out.radicals);
+  TetAxis tets = tet_axis(balls, k, out.boundary, *out.radicals, !options.reference);
   stage("voronoi cells in tetrahedra");
   out.stats = tets.stats;
   out.tetrahedra_candidates = tets.candidates;
   out.voronoi_cells = tets.cells_clipped;
+  out.clips = tets.clips;
+  out.beyond_reach = tets.beyond_reach;
   out.merged_by_position = tets.merged_by_position;
   out.key_collisions = tets.key_collisions;
   Assembler a(balls, k, &out, options.polygon_samples);

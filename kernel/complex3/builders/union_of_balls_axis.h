@@ -43,6 +43,10 @@ namespace grassfire {
 
 struct UnionOfBallsOptions {
   bool polygon_samples = false;  // one exact point per bisector polygon, for check_union_axis
+  // The definition-level path, for tests: every shortcut of the fast path off (the boundary
+  // vertices' interval filter, the Voronoi cells' reach bound, the output values' small-
+  // integer continued fractions). The output is the same, vertex for vertex.
+  bool reference = false;
 };
 
 struct AxisVertexInfo {
@@ -73,6 +77,7 @@ struct UnionOfBallsAxis {
   std::array<std::size_t, 4> alpha_simplices{};    // simplices of K by dimension
   std::array<std::size_t, 3> singular_simplices{};  // singular vertices, edges, triangles
   std::size_t tet_polygons = 0, tetrahedra_candidates = 0, voronoi_cells = 0;
+  std::size_t clips = 0, beyond_reach = 0;  // bisectors clipped, skipped by the reach bound
   std::size_t merged_by_position = 0, key_collisions = 0;
   BettiNumbers union_betti;  // of K, i.e. of the union
   ClipStats stats;

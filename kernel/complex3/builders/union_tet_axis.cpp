@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <memory>
 #include <numeric>
 #include <stdexcept>
 
@@ -93,20 +94,50 @@ bool boxes_overlap(const Box& a, const Box& b) {
   return true;
 }
 
+// The exact bisector planes of boundary vertices, made on first use: most planes are only
+// ever evaluated by the interval filter, and the axis vertices keep their planes beyond
+// the builder's life (LazyPoint3), so the field is shared. Not thread-safe.
+class BisectorField {
+ public:
+  BisectorField(const std::vector<BoundaryVertex>& boundary, const RadicalTable& table)
+      : boundary_(boundary), table_(&table), made_(boundary.size()) {}
+
+  // |x - v|^2 <= |x - u|^2  <=>  2 (u - v) . x + |v|^2 - |u|^2 <= 0.
+  CellPlane::Coefficients bisector(std::uint32_t v, std::uint32_t u) const {
+    const Entry& p = entry(v);
+    const Entry& q = entry(u);
+    return {(q.x[0] - p.x[0]) * mpq_class(2), (q.x[1] - p.x[1]) * mpq_class(2), (q.x[2] - p.x[2]) * mpq_class(2),
+            p.norm2 - q.norm2};
+  }
+
+ private:
+  struct Entry {
+    std::array<RadicalNumber, 3> x;
+    RadicalNumber norm2;
+  };
+  const Entry& entry(std::uint32_t i) const {
+    if (!made_[i]) {
+      const BoundaryVertex& v = boundary_[i];
+      // |v|^2 = |z|^2 + s |n|^2 + 2 side sqrt(s) z . n
+      made_[i] = std::make_unique<Entry>(Entry{
+          v.coordinates(*table_), v.rational ? RadicalNumber(dot(v.point, v.point))
+                                             : RadicalNumber(dot(v.z, v.z) + v.s * dot(v.n, v.n)) +
+                                                   RadicalNumber::root(*table_, v.radical, 2 * v.side * dot(v.z, v.n))});
+    }
+    return *made_[i];
+  }
+  std::vector<BoundaryVertex> boundary_;
+  const RadicalTable* table_;
+  mutable std::vector<std::unique_ptr<Entry>> made_;
+};
+
 // The per-run state: boundary vertices, the global vertex table and the polygons.
 class Builder {
  public:
   Builder(const BallSet& balls, const AlphaComplex& k, const std::vector<BoundaryVertex>& boundary,
-          const RadicalTable& table)
-      : balls_(balls), k_(k), boundary_(boundary), grid_(boundary) {
-    for (const BoundaryVertex& v : boundary) {
-      coords_.push_back(v.coordinates(table));
-      // |v|^2 = |z|^2 + s |n|^2 + 2 side sqrt(s) z . n
-      norm2_.push_back(v.rational ? RadicalNumber(dot(v.point, v.point))
-                                  : RadicalNumber(dot(v.z, v.z) + v.s * dot(v.n, v.n)) +
-                                        RadicalNumber::root(table, v.radical, 2 * v.side * dot(v.z, v.n)));
-    }
-  }
+          const RadicalTable& table, bool reach)
+      : balls_(balls), k_(k), boundary_(boundary), grid_(boundary),
+        field_(std::make_shared<const BisectorField>(boundary, table)), reach_(reach) {}
 
   TetAxis run() {
     for (std::uint32_t t : k_.of_dimension(3))
@@ -171,11 +202,7 @@ class Builder {
       approx[k] = Interval(2) * (b[k] - a[k]);
       approx[3] += (a[k] - b[k]) * (a[k] + b[k] - Interval(2 * origin_[k]));
     }
-    auto make = [this, v, u]() -> CellPlane::Coefficients {
-      const auto& p = coords_[v];
-      const auto& q = coords_[u];
-      return {(q[0] - p[0]) * mpq_class(2), (q[1] - p[1]) * mpq_class(2), (q[2] - p[2]) * mpq_class(2), norm2_[v] - norm2_[u]};
-    };
+    auto make = [field = field_, v, u]() { return field->bisector(v, u); };
     it->second = planes.add(CellPlane(make, approx, 0));
     info_.push_back({true, {}, v, u});
     return it->second;
@@ -278,11 +305,32 @@ class Builder {
         if (u != v) order.push_back({squared_distance(boundary_[u].approx, boundary_[v].approx).mid(), u});
       std::sort(order.begin(), order.end());
       ConvexCell cell = tet;
-      for (const auto& [d, u] : order)
-        if (cell.clip(bisector(planes, cache, v, u)) == ConvexCell::Clip::Emptied) break;
+      double reach2 = reach_ ? reach_squared(cell, v) : INFINITY;
+      for (const auto& [d, u] : order) {
+        if (squared_distance(boundary_[u].approx, boundary_[v].approx).lo > reach2) {
+          ++out_.beyond_reach;
+          continue;
+        }
+        ++out_.clips;
+        const ConvexCell::Clip c = cell.clip(bisector(planes, cache, v, u));
+        if (c == ConvexCell::Clip::Emptied) break;
+        if (c == ConvexCell::Clip::Cut && reach_) reach2 = reach_squared(cell, v);
+      }
       record_faces(cell, planes, v);
     }
     out_.stats.merge(planes.stats);
+  }
+
+  // (2 R)^2 rounded up, R the largest distance from boundary vertex v to a vertex of the
+  // cell (a certified upper bound): a bisector of v and u with |u - v|^2 > (2 R)^2 leaves
+  // every point x of the cell strictly on v's side, |x - u| >= |u - v| - |x - v| > R >= |x - v|.
+  double reach_squared(const ConvexCell& cell, std::uint32_t v) const {
+    Box local;
+    for (int k = 0; k < 3; ++k) local[k] = boundary_[v].approx[k] - Interval(origin_[k]);
+    double r2 = 0;
+    for (const CellFace& f : cell.faces())
+      for (std::uint32_t x : f.vertices) r2 = std::max(r2, squared_distance(cell.vertex(x).approx, local).hi);
+    return std::isfinite(r2) ? 4 * r2 : INFINITY;  // x 4 is exact
   }
 
   void record_faces(const ConvexCell& cell, PlaneSet& planes, std::uint32_t v) {
@@ -292,7 +340,7 @@ class Builder {
       TetAxisPolygon poly;
       poly.v = info_[*b].v;
       poly.u = info_[*b].u;
-      poly.plane = planes[*b].coef();
+      poly.plane = std::make_shared<const CellPlane>(planes[*b]);
       for (std::uint32_t x : f.vertices) poly.vertices.push_back(global_vertex(cell.vertex(x), planes, v));
       out_.polygons.push_back(std::move(poly));
     }
@@ -315,9 +363,7 @@ class Builder {
       g.point = std::make_shared<LazyPoint3>(x.exact, global);
     else
       g.point = std::make_shared<LazyPoint3>(
-          std::array<std::array<RadicalNumber, 4>, 3>{planes[x.defining[0]].coef(), planes[x.defining[1]].coef(),
-                                                      planes[x.defining[2]].coef()},
-          global);
+          std::array<CellPlane, 3>{planes[x.defining[0]], planes[x.defining[1]], planes[x.defining[2]]}, global);
     g.nearest = owner;
     const auto id = static_cast<std::uint32_t>(out_.vertices.size());
     ids_.emplace(std::move(key), id);
@@ -379,8 +425,8 @@ class Builder {
   const AlphaComplex& k_;
   const std::vector<BoundaryVertex>& boundary_;
   PointGrid grid_;
-  std::vector<std::array<RadicalNumber, 3>> coords_;
-  std::vector<RadicalNumber> norm2_;
+  std::shared_ptr<const BisectorField> field_;
+  bool reach_;
   std::vector<PlaneInfo> info_;  // per tetrahedron, indexed by plane id
   std::array<double, 3> origin_{0, 0, 0};  // per tetrahedron: local coordinates of the enclosures
   std::map<VertexKey, std::uint32_t> ids_;
@@ -396,9 +442,9 @@ bool same_point(const HomogeneousPoint& a, const HomogeneousPoint& b, NumberStat
 }
 
 TetAxis tet_axis(const BallSet& balls, const AlphaComplex& k, const std::vector<BoundaryVertex>& boundary,
-                 const RadicalTable& table) {
+                 const RadicalTable& table, bool reach) {
   if (boundary.empty()) return {};
-  return Builder(balls, k, boundary, table).run();
+  return Builder(balls, k, boundary, table, reach).run();
 }
 
 }  // namespace grassfire

@@ -39,7 +39,7 @@ struct TetAxisVertex {
 struct TetAxisPolygon {
   std::vector<std::uint32_t> vertices;  // convex, in order
   std::uint32_t v = 0, u = 0;           // the bisector of boundary vertices v and u
-  std::array<RadicalNumber, 4> plane;   // a x + b y + c z + d = 0
+  std::shared_ptr<const CellPlane> plane;  // a x + b y + c z + d = 0 (exact on demand)
 };
 
 struct TetAxis {
@@ -49,12 +49,18 @@ struct TetAxis {
   std::size_t tetrahedra = 0;        // tetrahedra of K processed
   std::size_t candidates = 0;        // sum over tetrahedra of |C|
   std::size_t cells_clipped = 0;     // Voronoi cells computed (after the corner test)
+  std::size_t clips = 0, beyond_reach = 0;  // bisectors clipped, and skipped by the reach bound
   std::size_t merged_by_position = 0;
   std::size_t key_collisions = 0;
 };
 
+// With `reach` (the fast path), a bisector of v and u is not clipped when |u - v| > 2 R
+// for R the largest distance from v to a vertex of v's current cell (certified with
+// intervals): every point of the cell is then strictly nearer to v, so the clip would
+// change nothing (no vertex on the plane either). Without it, every candidate is clipped
+// (the definition-level path); the output is the same.
 TetAxis tet_axis(const BallSet& balls, const AlphaComplex& k, const std::vector<BoundaryVertex>& boundary,
-                 const RadicalTable& table);
+                 const RadicalTable& table, bool reach = true);
 
 // Exact equality of two points given homogeneously.
 bool same_point(const HomogeneousPoint& a, const HomogeneousPoint& b, NumberStats* stats = nullptr);
