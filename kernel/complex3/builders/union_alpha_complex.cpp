@@ -329,36 +329,56 @@ std::array<ExactPoint3, 3> boundary_vertex_key(const BoundaryVertex& v) {
 
 namespace {
 
-// Whether the interval filter certifies that the point z + side sqrt(s) n of triangle t
-// (three spheres meeting) lies in the open ball of an extra vertex j of a coface:
-// pow_j - pow_t = (pow_j(z) - w) + side 2 n . (c_0 - c_j) sqrt(s) < 0. False when unsure.
-bool certainly_off_dual_edge(const AlphaComplex& k, const PowerSimplex& p, int side) {
-  std::array<Interval, 3> c0 = k.approx_ball(p.balls[0]), e1, e2;
-  for (int m = 0; m < 3; ++m) {
-    e1[m] = k.approx_ball(p.balls[1])[m] - c0[m];
-    e2[m] = k.approx_ball(p.balls[2])[m] - c0[m];
-  }
-  const std::array<Interval, 3> n{e1[1] * e2[2] - e1[2] * e2[1], e1[2] * e2[0] - e1[0] * e2[2], e1[0] * e2[1] - e1[1] * e2[0]};
-  const Interval nn = square(n[0]) + square(n[1]) + square(n[2]);
-  if (nn.lo <= 0) return false;
-  const Interval root = sqrt(-p.approx_power / nn);
-  for (std::uint32_t c : p.cofaces) {
-    const PowerSimplex& q = k.simplices()[c];
-    for (int m = 0; m < 4; ++m) {
-      const std::uint32_t j = q.balls[m];
-      if (std::find(p.balls.begin(), p.balls.begin() + 3, j) != p.balls.begin() + 3) continue;
-      const auto& cj = k.approx_ball(j);
-      Interval a = -k.approx_weight(j) - p.approx_power, bn(0.0);
-      for (int x = 0; x < 3; ++x) {
-        a += square(p.approx_centre[x] - cj[x]);
-        bn += n[x] * (c0[x] - cj[x]);
-      }
-      const Interval v = a + Interval(2.0 * side) * bn * root;
-      if (v.hi < 0) return true;
+// The interval filter for the point z + side sqrt(s) n of triangle t (three spheres
+// meeting) against ball j (the extra vertex of a coface): the sign of
+// pow_j - pow_t = (pow_j(z) - w) + side 2 n . (c_0 - c_j) sqrt(s), or 0 when unsure.
+class DualEdgeFilter {
+ public:
+  DualEdgeFilter(const AlphaComplex& k, const PowerSimplex& p) : k_(k), p_(p) {
+    c0_ = k.approx_ball(p.balls[0]);
+    std::array<Interval, 3> e1, e2;
+    for (int m = 0; m < 3; ++m) {
+      e1[m] = k.approx_ball(p.balls[1])[m] - c0_[m];
+      e2[m] = k.approx_ball(p.balls[2])[m] - c0_[m];
     }
+    n_ = {e1[1] * e2[2] - e1[2] * e2[1], e1[2] * e2[0] - e1[0] * e2[2], e1[0] * e2[1] - e1[1] * e2[0]};
+    const Interval nn = square(n_[0]) + square(n_[1]) + square(n_[2]);
+    usable_ = nn.lo > 0;
+    if (usable_) root_ = sqrt(-p.approx_power / nn);
   }
-  return false;
-}
+
+  int sign(int side, std::uint32_t j) const {
+    if (!usable_) return 0;
+    const auto& cj = k_.approx_ball(j);
+    Interval a = -k_.approx_weight(j) - p_.approx_power, bn(0.0);
+    for (int x = 0; x < 3; ++x) {
+      a += square(p_.approx_centre[x] - cj[x]);
+      bn += n_[x] * (c0_[x] - cj[x]);
+    }
+    const Interval v = a + Interval(2.0 * side) * bn * root_;
+    return v.lo > 0 ? 1 : v.hi < 0 ? -1 : 0;
+  }
+
+  // Whether the point certainly lies in the open ball of some coface's extra vertex.
+  bool certainly_off_dual_edge(int side) const {
+    for (std::uint32_t c : p_.cofaces) {
+      const PowerSimplex& q = k_.simplices()[c];
+      for (int m = 0; m < 4; ++m) {
+        const std::uint32_t j = q.balls[m];
+        if (std::find(p_.balls.begin(), p_.balls.begin() + 3, j) != p_.balls.begin() + 3) continue;
+        if (sign(side, j) < 0) return true;
+      }
+    }
+    return false;
+  }
+
+ private:
+  const AlphaComplex& k_;
+  const PowerSimplex& p_;
+  std::array<Interval, 3> c0_, n_;
+  Interval root_;
+  bool usable_ = false;
+};
 
 }  // namespace
 
@@ -374,9 +394,12 @@ std::vector<BoundaryVertex> boundary_vertices(const BallSet& b, const AlphaCompl
   std::map<std::array<ExactPoint3, 3>, bool, decltype(key_less)> seen(key_less);
   for (std::uint32_t t : k.of_dimension(2)) {
     if (k.power_sign(t) > 0) continue;  // the three spheres do not meet
-    if (filtered && certainly_off_dual_edge(k, k.simplices()[t], 1) && certainly_off_dual_edge(k, k.simplices()[t], -1))
-      continue;
+    if (filtered) {
+      const DualEdgeFilter coarse(k, k.simplices()[t]);  // the centre's enclosure from intervals
+      if (coarse.certainly_off_dual_edge(1) && coarse.certainly_off_dual_edge(-1)) continue;
+    }
     const PowerSimplex& p = k.exact(t);
+    const DualEdgeFilter filter(k, p);  // tight: the enclosures of the exact centre and power
     BoundaryVertex v;
     std::copy(p.balls.begin(), p.balls.begin() + 3, v.balls.begin());
     const ExactPoint3& c0 = b.centers[v.balls[0]];
@@ -393,7 +416,11 @@ std::vector<BoundaryVertex> boundary_vertices(const BallSet& b, const AlphaCompl
         const PowerSimplex& q = k.simplices()[c];
         for (int m = 0; m < 4; ++m) {
           const std::uint32_t j = q.balls[m];
-          if (std::find(v.balls.begin(), v.balls.end(), j) != v.balls.end()) continue;
+          if (!valid || std::find(v.balls.begin(), v.balls.end(), j) != v.balls.end()) continue;
+          if (const int certain = filtered ? filter.sign(side, j) : 0) {
+            valid = certain > 0;
+            continue;
+          }
           const mpq_class a = power(b, j, v.z) - p.power;
           valid &= sign_with_root(a, side, 2 * dot(v.n, c0 - b.centers[j]), v.s) >= 0;
         }

@@ -148,8 +148,9 @@ std::array<ExactPoint3, 3> boundary_vertex_key(const BoundaryVertex& v);
 
 // With `filtered`, a triangle both of whose points an interval filter certainly places
 // inside the ball of a coface's extra vertex (off the dual edge) is skipped before any
-// exact construction; the exact tests decide every other case, so the output is the same
-// as without the filter (the definition-level path, kept for the tests).
+// exact construction, and for the others each point-versus-ball test is asked of the
+// filter first; exact tests decide what it leaves, so the output is the same as without
+// the filter (the definition-level path, kept for the tests).
 std::vector<BoundaryVertex> boundary_vertices(const BallSet& b, const AlphaComplex& k, RadicalTable* table,
                                               bool filtered = true);
 

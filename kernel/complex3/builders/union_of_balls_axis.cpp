@@ -12,6 +12,7 @@
 #include "complex3/builders/union_tet_axis.h"
 #include "complex3/exact_predicates3.h"
 #include "io/cpu_clock.h"
+#include "number/simplest_rational.h"
 
 namespace grassfire {
 
@@ -21,32 +22,11 @@ using Clock = std::chrono::steady_clock;
 
 double seconds_since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
 
-// The rational with the smallest denominator in [a, b] (continued fractions), if that
-// denominator is below 2^max_bits.
-std::optional<mpq_class> simplest_between(mpq_class a, mpq_class b, std::size_t max_bits, int depth = 0) {
-  if (depth > 64) return std::nullopt;
-  if (sgn(a) <= 0 && sgn(b) >= 0) return mpq_class(0);
-  if (sgn(b) < 0) {
-    auto r = simplest_between(-b, -a, max_bits, depth);
-    if (r) *r = -*r;
-    return r;
-  }
-  mpz_class n;
-  mpz_cdiv_q(n.get_mpz_t(), a.get_num_mpz_t(), a.get_den_mpz_t());
-  if (mpq_class(n) <= b) return mpq_class(n);
-  const mpq_class fl(n - 1);
-  auto r = simplest_between(1 / (b - fl), 1 / (a - fl), max_bits, depth + 1);
-  if (!r) return r;
-  mpq_class out = fl + 1 / *r;
-  if (mpz_sizeinbase(out.get_den_mpz_t(), 2) > max_bits) return std::nullopt;
-  return out;
-}
-
 // An output value from a certified enclosure: a simple rational inside it when `is_value`
 // confirms it exactly, else the midpoint with its error; `precise` when the enclosure is
 // too wide to be useful (ill-conditioned points).
 mpq_class output_value(const Interval& iv, const std::function<bool(const mpq_class&)>& is_value,
-                       const std::function<mpq_class(double*)>& precise, bool* exact, double* error) {
+                       const std::function<mpq_class(double*)>& precise, bool reference, bool* exact, double* error) {
   *exact = false;
   const double scale = std::max({1.0, std::fabs(iv.lo), std::fabs(iv.hi)});
   if (iv.hi - iv.lo > 1e-9 * scale) return precise(error);
@@ -55,7 +35,10 @@ mpq_class output_value(const Interval& iv, const std::function<bool(const mpq_cl
   // is rare, and symmetric configurations, whose values have small denominators, pass.
   const double width = std::max(iv.hi - iv.lo, 1e-300);
   const auto max_bits = static_cast<long>(std::floor(std::log2(std::sqrt(1e-4 / width))));
-  if (const auto q = max_bits < 1 ? std::nullopt : simplest_between(mpq_class(iv.lo), mpq_class(iv.hi), static_cast<std::size_t>(max_bits));
+  const auto bits = static_cast<std::size_t>(max_bits);
+  if (const auto q = max_bits < 1 ? std::nullopt
+                     : reference  ? simplest_rational_reference(mpq_class(iv.lo), mpq_class(iv.hi), bits)
+                                  : simplest_rational(iv.lo, iv.hi, bits);
       q && is_value(*q)) {
     *exact = true;
     *error = 0;
@@ -67,8 +50,8 @@ mpq_class output_value(const Interval& iv, const std::function<bool(const mpq_cl
 
 class Assembler {
  public:
-  Assembler(const BallSet& balls, const AlphaComplex& k, UnionOfBallsAxis* out, bool samples)
-      : balls_(balls), k_(k), out_(out), samples_(samples) {
+  Assembler(const BallSet& balls, const AlphaComplex& k, UnionOfBallsAxis* out, bool samples, bool reference)
+      : balls_(balls), k_(k), out_(out), samples_(samples), reference_(reference) {
     for (std::size_t v = 0; v < out->boundary.size(); ++v) {
       const auto& bv = out->boundary[v];
       if (bv.side > 0 || !mirror_.count(bv.balls)) mirror_[bv.balls] = v;
@@ -247,7 +230,8 @@ class Assembler {
       double err = 0;
       (*x)[k] = output_value(
           p.approx()[k], [&](const mpq_class& q) { return sign(p.exact().c[k] - p.exact().c[3] * q) == 0; },
-          [&](double* error) { return approximate_quotient(p.exact().c[k], p.exact().c[3], 64, error); }, &e, &err);
+          [&](double* error) { return approximate_quotient(p.exact().c[k], p.exact().c[3], 64, error); }, reference_, &e,
+          &err);
       all_exact &= e;
       out_->coordinate_error = std::max(out_->coordinate_error, err);
     }
@@ -276,7 +260,7 @@ class Assembler {
           const auto [num, den] = exact_d2();
           return approximate_quotient(num, den, 64, error);
         },
-        &e, &err);
+        reference_, &e, &err);
     out_->radius_squared_error = std::max(out_->radius_squared_error, err);
     return all_exact && e;
   }
@@ -310,7 +294,7 @@ class Assembler {
   const BallSet& balls_;
   const AlphaComplex& k_;
   UnionOfBallsAxis* out_;
-  bool samples_;
+  bool samples_, reference_;
   std::vector<Record> records_;
   std::map<std::uint32_t, std::uint32_t> ball_vertex_;
   std::map<std::pair<std::uint32_t, std::uint32_t>, std::vector<std::uint32_t>> edge_points_;
@@ -381,7 +365,7 @@ UnionOfBallsAxis union_of_balls_axis(const BallSet& balls, const UnionOfBallsOpt
   out.beyond_reach = tets.beyond_reach;
   out.merged_by_position = tets.merged_by_position;
   out.key_collisions = tets.key_collisions;
-  Assembler a(balls, k, &out, options.polygon_samples);
+  Assembler a(balls, k, &out, options.polygon_samples, options.reference);
   a.add_tet_axis(std::move(tets));
   a.add_singular_simplices();
   stage("assembly");

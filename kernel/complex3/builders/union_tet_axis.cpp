@@ -269,14 +269,17 @@ class Builder {
     return out;
   }
 
-  // v owns no point of tau when some u is certainly closer at all four corners.
-  bool excluded(std::uint32_t v, const std::vector<std::uint32_t>& cand, const std::array<Box, 4>& corners) const {
-    for (std::size_t i = 0; i < std::min<std::size_t>(cand.size(), 8); ++i) {
-      const std::uint32_t u = cand[i];
-      if (u == v) continue;
+  // Candidate i owns no point of tau when some other candidate is certainly closer at all
+  // four corners (then everywhere in tau: the half-space nearer to it is convex), given the
+  // squared distances from each candidate to each corner. The definition-level path asks
+  // only the first 8 candidates; the cell such a test spares would be emptied by clipping,
+  // so asking all of them changes no output.
+  bool excluded(std::size_t i, const std::vector<std::array<Interval, 4>>& corner_d2) const {
+    const std::size_t n = reach_ ? corner_d2.size() : std::min<std::size_t>(corner_d2.size(), 8);
+    for (std::size_t j = 0; j < n; ++j) {
+      if (j == i) continue;
       bool closer = true;
-      for (const Box& c : corners)
-        closer &= squared_distance(c, boundary_[u].approx).hi < squared_distance(c, boundary_[v].approx).lo;
+      for (int c = 0; c < 4 && closer; ++c) closer = corner_d2[j][c].hi < corner_d2[i][c].lo;
       if (closer) return true;
     }
     return false;
@@ -297,17 +300,30 @@ class Builder {
     const std::vector<std::uint32_t> cand = candidates(corners);
     out_.candidates += cand.size();
     std::map<std::pair<std::uint32_t, std::uint32_t>, std::uint32_t> cache;
-    for (std::uint32_t v : cand) {
-      if (excluded(v, cand, corners)) continue;
+    std::vector<std::array<Interval, 4>> corner_d2(cand.size());
+    for (std::size_t i = 0; i < cand.size(); ++i)
+      for (int c = 0; c < 4; ++c) corner_d2[i][c] = squared_distance(corners[c], boundary_[cand[i]].approx);
+    struct Neighbour {
+      double mid, lo;  // |u - v|^2
+      std::uint32_t u;
+      bool operator<(const Neighbour& o) const { return mid < o.mid || (mid == o.mid && u < o.u); }
+    };
+    std::vector<Neighbour> order;
+    for (std::size_t i = 0; i < cand.size(); ++i) {
+      const std::uint32_t v = cand[i];
+      if (excluded(i, corner_d2)) continue;
       ++out_.cells_clipped;
-      std::vector<std::pair<double, std::uint32_t>> order;
+      order.clear();
       for (std::uint32_t u : cand)
-        if (u != v) order.push_back({squared_distance(boundary_[u].approx, boundary_[v].approx).mid(), u});
+        if (u != v) {
+          const Interval d = squared_distance(boundary_[u].approx, boundary_[v].approx);
+          order.push_back({d.mid(), d.lo, u});
+        }
       std::sort(order.begin(), order.end());
       ConvexCell cell = tet;
       double reach2 = reach_ ? reach_squared(cell, v) : INFINITY;
-      for (const auto& [d, u] : order) {
-        if (squared_distance(boundary_[u].approx, boundary_[v].approx).lo > reach2) {
+      for (const auto& [d, d_lo, u] : order) {
+        if (d_lo > reach2) {
           ++out_.beyond_reach;
           continue;
         }
