@@ -3,7 +3,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <map>
 #include <stdexcept>
 
 namespace grassfire {
@@ -216,9 +215,10 @@ void ConvexCell::finish_crossings(std::uint32_t id) {
 
 ConvexCell::Clip ConvexCell::clip(std::uint32_t id) {
   side_.assign(vertices_.size(), 1);
-  std::vector<bool> used(vertices_.size(), false);
+  std::vector<char>& used = used_;  // scratch kept across clips: clips are many and small
+  used.assign(vertices_.size(), 0);
   for (const CellFace& f : faces_)
-    for (std::uint32_t v : f.vertices) used[v] = true;
+    for (std::uint32_t v : f.vertices) used[v] = 1;
   bool any_pos = false, any_neg = false;
   for (std::uint32_t v = 0; v < vertices_.size(); ++v) {
     if (!used[v]) continue;
@@ -244,7 +244,14 @@ ConvexCell::Clip ConvexCell::clip(std::uint32_t id) {
   const auto first_new = static_cast<std::uint32_t>(vertices_.size());
   auto on_plane = [&](std::uint32_t v) { return v >= first_new || side_[v] == 0; };
   std::vector<CellFace> kept;
-  std::map<std::uint32_t, std::uint32_t> cap_next;  // cap edge u -> w
+  kept.reserve(faces_.size() + 1);
+  std::vector<std::pair<std::uint32_t, std::uint32_t>>& cap_next = cap_next_;  // cap edges w -> u
+  cap_next.clear();
+  auto next_on_cap = [&](std::uint32_t w) {
+    for (const auto& e : cap_next)
+      if (e.first == w) return e.second;
+    return kNoPlane;
+  };
   for (CellFace& f : faces_) {
     CellFace out;
     const std::size_t n = f.vertices.size();
@@ -257,7 +264,12 @@ ConvexCell::Clip ConvexCell::clip(std::uint32_t id) {
     const std::size_t m = out.vertices.size();
     for (std::size_t k = 0; k < m; ++k) {
       const std::uint32_t u = out.vertices[k], w = out.vertices[(k + 1) % m];
-      if (on_plane(u) && on_plane(w)) cap_next[w] = u;  // the cap runs the shared edge backwards
+      if (on_plane(u) && on_plane(w)) {  // the cap runs the shared edge backwards
+        bool seen = false;
+        for (auto& e : cap_next)
+          if (e.first == w) e.second = u, seen = true;
+        if (!seen) cap_next.emplace_back(w, u);
+      }
     }
     out.planes = std::move(f.planes);
     kept.push_back(std::move(out));
@@ -266,12 +278,11 @@ ConvexCell::Clip ConvexCell::clip(std::uint32_t id) {
   CellFace cap;
   cap.planes = {id};
   if (cap_next.size() < 3) throw std::logic_error("exact_cell: degenerate cap");
-  std::uint32_t u = cap_next.begin()->first;
+  std::uint32_t u = std::min_element(cap_next.begin(), cap_next.end())->first;  // as the map's first key
   for (std::size_t guard = 0; guard <= cap_next.size(); ++guard) {
     cap.vertices.push_back(u);
-    auto it = cap_next.find(u);
-    if (it == cap_next.end()) throw std::logic_error("exact_cell: open cap chain");
-    u = it->second;
+    u = next_on_cap(u);
+    if (u == kNoPlane) throw std::logic_error("exact_cell: open cap chain");
     if (u == cap.vertices.front()) break;
   }
   if (cap.vertices.size() != cap_next.size()) throw std::logic_error("exact_cell: cap is not one cycle");

@@ -172,6 +172,8 @@ class ConvexCell {
     std::array<std::uint32_t, 2> face_planes;
   };
   std::vector<Crossing> crossings_;
+  std::vector<char> used_;                                      // vertices on some face
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> cap_next_;  // edges of the new face
 };
 
 }  // namespace grassfire

@@ -100,6 +100,9 @@ AlphaComplex::AlphaComplex(const BallSet& balls, const RegularTriangulation& rt)
     approx_ball_.push_back({enclose(balls.centers[i].x), enclose(balls.centers[i].y), enclose(balls.centers[i].z)});
     approx_weight_.push_back(enclose(balls.squared_radii[i]));
   }
+  const std::size_t total = rt.vertices.size() + rt.edges.size() + rt.triangles.size() + rt.tetrahedra.size();
+  index_.reserve(total);
+  simplices_.reserve(total);
   for (std::uint32_t v : rt.vertices) add_simplex({v, kNone, kNone, kNone}, 0);
   for (const auto& e : rt.edges) add_simplex({e[0], e[1], kNone, kNone}, 1);
   for (const auto& t : rt.triangles) add_simplex({t[0], t[1], t[2], kNone}, 2);

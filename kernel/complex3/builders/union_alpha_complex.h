@@ -29,6 +29,7 @@
 #include <array>
 #include <cstdint>
 #include <map>
+#include <unordered_map>
 #include <vector>
 
 #include "complex3/ball_set.h"
@@ -114,7 +115,14 @@ class AlphaComplex {
   int dimension_ = -1;
   mutable std::vector<PowerSimplex> simplices_;
   std::array<std::vector<std::uint32_t>, 4> by_dim_;
-  std::map<std::array<std::uint32_t, 4>, std::uint32_t> index_;
+  struct BallsHash {  // simplices are looked up once per facet: a hash, not a tree
+    std::size_t operator()(const std::array<std::uint32_t, 4>& a) const {
+      std::uint64_t h = 0x9E3779B97F4A7C15ull;
+      for (std::uint32_t x : a) h = (h ^ x) * 0xBF58476D1CE4E5B9ull, h ^= h >> 31;
+      return static_cast<std::size_t>(h);
+    }
+  };
+  std::unordered_map<std::array<std::uint32_t, 4>, std::uint32_t, BallsHash> index_;
 };
 
 // pow_i(x) = |x - c_i|^2 - r_i^2.
