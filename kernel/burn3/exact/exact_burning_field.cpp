@@ -48,6 +48,12 @@ std::array<double, 3> barycentric2(const DiscPoint& a, const DiscPoint& b, const
   return {1 - u - v, u, v};
 }
 
+// Origins where the fire itself starts (the path ends there): a caller's point source and
+// the border rules. Vertices and any other burned point emit fire that came from elsewhere.
+bool starts_fire(SourceOrigin o) {
+  return o == SourceOrigin::GivenPoint || o == SourceOrigin::BorderPoint || o == SourceOrigin::BorderPlane;
+}
+
 }  // namespace
 
 ExactBurningField::ExactBurningField(ExactBurning& eb, double edge_spacing)
@@ -160,8 +166,7 @@ Vec3d ExactBurningField::back_step(std::uint32_t w, const Vec3d& p) const {
 bool ExactBurningField::window_starts_at(std::uint32_t w, const Vec3d& p, const Vec3d& back) const {
   const Window& win = eb_.propagation().store().windows[w];
   if (win.parent != kNoIndex || !same_point(p, back)) return false;
-  const PseudoSource& ps = eb_.propagation().store().pseudo[win.pseudo];
-  return ps.origin != SourceOrigin::Vertex;
+  return starts_fire(eb_.propagation().store().pseudo[win.pseudo].origin);
 }
 
 void ExactBurningField::walk_window(std::uint32_t w, Vec3d at, std::vector<Vec3d>& path, int budget) const {
@@ -180,6 +185,8 @@ void ExactBurningField::walk_window(std::uint32_t w, Vec3d at, std::vector<Vec3d
       const Vec3d& v = mc_.vertex(ps.vertex).approx;
       if (!same_point(v, path.back())) path.push_back(v);
       walk_time(ps.time, ps.vertex, path, budget - 1);
+    } else if (!starts_fire(ps.origin)) {
+      walk_time(ps.time, kNoIndex, path, budget - 1);  // a point that burned before emitting
     }
     return;  // a point source, or the border edge where a border window started
   }
@@ -193,9 +200,11 @@ void ExactBurningField::walk_time(std::uint32_t time, std::uint32_t vertex, std:
       case TimeExpr::Kind::Exact:
         return;  // the vertex's ignition, or a point source on it
       case TimeExpr::Kind::WindowAt:
+        if (e.b >= mc_.vertex_count()) return;
         walk_window(e.a, mc_.vertex(e.b).approx, path, budget);
         return;
       case TimeExpr::Kind::Plus: {
+        if (vertex == kNoIndex || e.b >= mc_.edge_count()) return;
         const auto& ev = mc_.edge(e.b).v;
         vertex = ev[0] == vertex ? ev[1] : ev[0];
         path.push_back(mc_.vertex(vertex).approx);
@@ -205,6 +214,8 @@ void ExactBurningField::walk_time(std::uint32_t time, std::uint32_t vertex, std:
       case TimeExpr::Kind::Min:
         time = s.times[e.a].value.mid() <= s.times[e.b].value.mid() ? e.a : e.b;
         break;
+      default:
+        return;  // a time known only by its value: the path ends here
     }
   }
 }

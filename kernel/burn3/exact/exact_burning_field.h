@@ -17,7 +17,9 @@
 //    path ends on the border, where the fire started at f), at a caller's point source, or
 //    at a vertex source, where the path continues as the vertex's own: its time expression
 //    (windows.h TimeExpr) says how the vertex burned (a window's arrival there, fire along a
-//    segment from its other end, its ignition, the minimum of two);
+//    segment from its other end, its ignition, the minimum of two); a pseudo-source of
+//    another kind (a burned point of a singular edge, once the junction rule emits them)
+//    continues the same way through its time expression;
 //  - edge_points(e) = ceil(|e| / h) - 1 for the given spacing h (the resolution at which
 //    medial curves are traced along edges; BT itself has no h), edge_point_burn_time the
 //    engine's BT of the point itself (ExactBurning::burn_time(ComplexPoint): the min over
