@@ -1,13 +1,14 @@
 // check_exact_chapter4.cpp -- Props 5, 6 and 7 of chapter 4 (4.3) on the EXACT burning time
 // (burn3/exact, issue 9 item 4), by limits along sequences into the points where BT may
-// jump: vertices (singular points among them) and the midpoints of edges (points of
-// singular curves among them).
+// jump: vertices (singular points among them) and one point of every edge (the midpoint;
+// on the baseline the middle graph point of the edge), points of singular curves among them.
 //
 // Probe points x and their sectors: at a vertex, every triangle at it and every segment
 // leaving it (the triangles of one sector share the sector's limit, which checks it once
-// per triangle; a segment's sequence is its point at 2^-16 of its length); at an edge midpoint, every triangle on the edge (one half-disk each). For
-// each sector triangle t the sequence x_n = x + 2^-n (c_t - x), n = 4, 8, 12, 16 (c_t the
-// centroid: exact rational points inside t) with d_n = |x_n - x|; the engine's certified
+// per triangle; a segment's sequence is its point at 2^-16 of its length); at an edge
+// point, every triangle on the edge (one half-disk each). For each sector triangle t the
+// sequence x_n = x + 2^-n (c_t - x), n = 4, 8, 12, 16 (c_t the centroid: exact rational
+// points inside t) with d_n = |x_n - x|; the engine's certified
 // enclosures BT(x) (ExactBurning::burn_time at the located point: the link rule applied)
 // and BT(x_n) (burn_time in t). Inside t BT is 1-Lipschitz (Prop 4), so each sequence has
 // a limit L_t(x) with |BT(x_n) - L_t| <= d_n; the rows judge the propositions on these
@@ -32,8 +33,13 @@
 // computation whose error the baseline's spacing bounds only empirically (its paths are
 // O(h) longer than the exact ones), so those rows are evidence on all complexes, also where
 // the exact engine refuses.
+//  - Prop 4 (BT 1-Lipschitz in a sheet and along singular curves, no allowance): between
+//    the points of one sequence (a segment inside one triangle), and between the points 1/4,
+//    1/2, 3/4 of every singular edge (distance along the edge); the rows the baseline's family
+//    leaves "not checked" (there Prop 4 holds by construction), here on the exact BT.
 // Mutants: bt-bump, bt-dip, bt-infinite (mutants3d.h) on BT at the probe points (the point of
-// median BT inside a sheet), closed-burns on a probe in the closed subcomplex.
+// median BT inside a sheet), closed-burns on a probe in the closed subcomplex; for the Prop 4
+// rows the same mutants act on a copy of the sequence values (or of the curve points).
 #include <algorithm>
 #include <cmath>
 #include <map>
@@ -193,7 +199,7 @@ void mutate(const CheckContext& ctx, std::vector<Probe>& ps) {
 }
 
 struct Tallies {
-  Tally usc, lsc, prop6, prop7;
+  Tally usc, lsc, prop6, prop7, prop4_sheet, prop4_curve;
 };
 
 // |a - b| <= slack on enclosures (both infinite: equal).
@@ -246,6 +252,73 @@ void judge(const Probe& p, double allowance, Tallies& t) {
   if (equal < std::min<std::size_t>(2, sectors)) violation(t.prop6, 1);
 }
 
+// |BT(a) - BT(b)| <= d_hi on enclosures: a violation is a certified excess.
+void lipschitz(const Interval& a, const Interval& b, double d_hi, Tally& t) {
+  ++t.points;
+  if (a.is_infinite() || b.is_infinite()) {
+    if (a.is_infinite() != b.is_infinite()) violation(t, INFINITY);
+    return;
+  }
+  const double lower = std::max({0.0, a.lo - b.hi, b.lo - a.hi});
+  if (lower > d_hi) violation(t, lower - d_hi);
+}
+
+// Prop 4 in a sheet: the points of one sequence lie on a segment inside one triangle, so
+// d_M2(x_n, x_m) <= |x_n - x_m| = d_n - d_m. The output mutants act on a copy of these
+// values (the point of median BT), apart from the probes' mutation.
+void check_prop4_sheet(const CheckContext& ctx, const std::vector<Probe>& ps, Tally& t) {
+  std::vector<Interval> values;
+  std::vector<double> mid;
+  for (const Probe& p : ps)
+    for (const Sequence& s : p.sectors)
+      if (s.bt.size() > 1)
+        for (const Interval& v : s.bt) values.push_back(v), mid.push_back(v.mid());
+  std::vector<double> m = mid;
+  mutate_burning_times(ctx, m, [](std::size_t) { return true; }, [](std::size_t) { return false; });
+  for (std::size_t i = 0; i < m.size(); ++i)
+    if (m[i] != mid[i])
+      values[i] = std::isinf(m[i]) ? Interval::infinity() : Interval(values[i].lo + m[i] - mid[i], values[i].hi + m[i] - mid[i]);
+  ++t.instances;
+  std::size_t i = 0;
+  for (const Probe& p : ps)
+    for (const Sequence& s : p.sectors) {
+      if (s.bt.size() < 2) continue;
+      for (std::size_t a = 0; a < s.bt.size(); ++a)
+        for (std::size_t b = a + 1; b < s.bt.size(); ++b) lipschitz(values[i + a], values[i + b], (s.d[a] - s.d[b]) * (1 + 0x1p-30), t);
+      i += s.bt.size();
+    }
+}
+
+// Prop 4 on singular curves: BT at the points 1/4, 1/2, 3/4 of every singular edge, against
+// their distance along the (straight) edge.
+void check_prop4_curves(const CheckContext& ctx, Values& values, const MedialComplex& mc, Tally& t) {
+  std::vector<Interval> bt;
+  std::vector<std::pair<std::uint32_t, int>> where;
+  for (std::uint32_t e = 0; e < mc.edge_count(); ++e) {
+    if (mc.edge(e).stratum != EdgeStratum::Singular) continue;
+    const ExactPoint3& a = mc.vertex(mc.edge(e).v[0]).exact;
+    for (int q = 1; q <= 3; ++q) {
+      ComplexPoint x;
+      x.kind = ComplexPoint::Kind::Edge, x.id = e, x.parameter = mpq_class(q, 4);
+      x.parameter.canonicalize();
+      x.point = a + x.parameter * (mc.vertex(mc.edge(e).v[1]).exact - a);
+      bt.push_back(values.at(x));
+      where.emplace_back(e, q);
+    }
+  }
+  std::vector<double> mid(bt.size());
+  for (std::size_t i = 0; i < bt.size(); ++i) mid[i] = bt[i].mid();
+  std::vector<double> m = mid;
+  mutate_burning_times(ctx, m, [](std::size_t) { return false; }, [](std::size_t) { return false; });
+  for (std::size_t i = 0; i < m.size(); ++i)
+    if (m[i] != mid[i]) bt[i] = std::isinf(m[i]) ? Interval::infinity() : Interval(bt[i].lo + m[i] - mid[i], bt[i].hi + m[i] - mid[i]);
+  ++t.instances;
+  for (std::size_t i = 0; i + 1 < bt.size(); ++i) {
+    if (where[i].first != where[i + 1].first) continue;
+    lipschitz(bt[i], bt[i + 1], mc.edge(where[i].first).length * 0.25 * (1 + 0x1p-30), t);
+  }
+}
+
 struct CorpusRun {
   Tallies exact, discrete;
   std::size_t refused = 0;
@@ -278,6 +351,8 @@ void run_instance(const CheckContext& ctx, const Instance3& in, CorpusRun& c) {
   Tallies& et = c.exact;
   ++et.usc.instances, ++et.lsc.instances, ++et.prop6.instances, ++et.prop7.instances;
   for (const Probe& p : ep) judge(p, 0.0, et);
+  check_prop4_sheet(ctx, ep, et.prop4_sheet);
+  check_prop4_curves(ctx, ev, in.mc, et.prop4_curve);
 }
 
 const char* kProp51 = "Prop 5.1 (BT upper semicontinuous; a sequence reaches BT)";
@@ -286,7 +361,7 @@ const char* kProp6 = "Prop 6 (at x not on the border, two sectors' limits equal 
 const char* kProp7 = "Prop 7 (BT = inf exactly on the maximal closed subcomplex)";
 
 std::vector<CheckRow> exact_rows(const Corpus3& corpus, const CorpusRun& c) {
-  const std::string ref = "limits along x_n = x + 2^-n (c_t - x) into vertices and edge midpoints, every sector";
+  const std::string ref = "limits along x_n = x + 2^-n (c_t - x) into vertices and edge points, every sector";
   const std::string tol = "d_n = |x_n - x| (Prop 4 inside the sector; -> 0); the engine's certified enclosures";
   const std::string note = "exact engine; " + std::to_string(c.refused) + " instances refused" +
                            (c.refused ? " (" + c.reason + ")" : "") + "; uncertified decisions " +
@@ -297,6 +372,22 @@ std::vector<CheckRow> exact_rows(const Corpus3& corpus, const CorpusRun& c) {
       tally_row(std::string(kProp6) + " on the exact BT", corpus.name, ref, tol, c.exact.prop6, "count", note),
       tally_row(std::string(kProp7) + " on the exact BT", corpus.name, "maximal closed subcomplex peeled combinatorially",
                 "exact", c.exact.prop7, "points", note)};
+  CheckRow sheet = tally_row("Prop 4 in a sheet on the exact BT (|BT(x) - BT(y)| <= d, no allowance)", corpus.name,
+                             "d: the straight length between two points of one sequence (a segment inside one triangle)",
+                             "the engine's certified enclosures; rounding of d only", c.exact.prop4_sheet, "length", note);
+  if (c.exact.prop4_sheet.points == 0 && c.exact.usc.instances > 0) {
+    sheet.verdict = Verdict::NotChecked;
+    sheet.note = "no sheet in the instances the exact engine burns here (graphs only); " + note;
+  }
+  rows.push_back(sheet);
+  CheckRow curves = tally_row("Prop 4 on singular curves on the exact BT (|BT(x) - BT(y)| <= arclength)", corpus.name,
+                              "BT at 1/4, 1/2, 3/4 of every singular edge; d: their distance along the edge",
+                              "the engine's certified enclosures; rounding of d only", c.exact.prop4_curve, "length", note);
+  if (c.exact.prop4_curve.points == 0 && c.exact.usc.instances > 0) {
+    curves.verdict = Verdict::NotChecked;
+    curves.note = "no singular curve in the instances the exact engine burns today (it refuses singular edges); " + note;
+  }
+  rows.push_back(curves);
   if (c.exact.usc.instances == 0)
     for (CheckRow& r : rows) {
       r.verdict = Verdict::NotChecked;
