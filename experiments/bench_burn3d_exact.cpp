@@ -35,8 +35,8 @@
 // error is measured against the walls' BT, which the baseline (Definition 9) may undercut,
 // so the 1% spacing may not exist there (h_1pct then says "not reached"). The spacing search
 // starts at default_burn_spacing (1/100 of the bounding box diagonal) and halves it up to 5
-// times, stopping early when the error shrinks by less than 10% in a halving or the baseline
-// takes over a minute; the error is max over vertices of |BT_h - BT_exact| (midpoint of
+// times, stopping early when the error shrinks by less than 10% in a halving, is infinite
+// (walls leave parts unburned that the baseline burns) or the baseline takes over a minute; the error is max over vertices of |BT_h - BT_exact| (midpoint of
 // the enclosure).
 // Times are processor seconds in forked children, the complex built outside both.
 // CSV: axis,triangles,singular_edges,semantics,exact_s,uncertified,max_bt,h_1pct,discrete_s,
@@ -188,7 +188,7 @@ int bench_axes(bool quick) {
       reached = err <= 0.01 * max_bt;
       // Stop when reached, when the error no longer shrinks (walls: BT_h tends to
       // Definition 9's BT, not to the walls' bound), or past a minute of baseline time.
-      if (reached || err > 0.9 * previous || discrete_s > 60) break;
+      if (reached || !std::isfinite(err) || err > 0.9 * previous || discrete_s > 60) break;
     }
     if (exact[1] != 0) ++failures;
     std::printf("%s,%zu,%zu,%s,%.3f,%.0f,%.4g,%s,%.3f,%.3g,%.3f\n", a.name.c_str(), mc.triangle_count(),
