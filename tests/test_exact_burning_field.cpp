@@ -170,3 +170,31 @@ TEST_CASE("medial curves from the exact field have the axis' b0 and b1", "[exact
     CHECK(curves.method == r.field->method());
   }
 }
+
+TEST_CASE("exact field on segments: the 2D rule's paths through the link-rule centre of a Y", "[exact3][paths]") {
+  // Leaves at distance 3 with R = 1, 2, 4 (test_burn3_exact_corpus.cpp): the centre burns at
+  // 5 by its second arrival, the fire from the leaf with R = 2; the third branch's point at
+  // distance 1/2 from the centre burns at 5.5 through the centre, the one at distance 2 at 5
+  // from its own leaf (R = 4, 1 away).
+  ComplexBuilder b("Y graph");
+  const std::uint32_t c = b.vertex({0, 0, 0}, 16);
+  const std::uint32_t l1 = b.vertex({3, 0, 0}, 1), l2 = b.vertex({0, 3, 0}, 4), l3 = b.vertex({0, 0, 3}, 16);
+  b.segment(c, l1), b.segment(c, l2), b.segment(c, l3);
+  const ExactRun r(b.raw(), 0.5);
+  const std::vector<Vec3d> centre = r.field->path_from_vertex(c);
+  REQUIRE(centre.size() == 2);
+  CHECK(v3::dist(centre.back(), r.mc->vertex(l2).approx) == 0.0);  // back along the leaf with R = 2
+  CHECK(r.field->vertex_burn_time(c) == Catch::Detail::Approx(5.0).margin(1e-12));
+  const std::uint32_t e3 = r.mc->find_edge(c, l3);
+  const bool from_centre = r.mc->edge(e3).v[0] == c;
+  for (const double s : {1.0 / 6, 2.0 / 3}) {
+    const double at = from_centre ? s : 1 - s;  // s: the distance from the centre / 3
+    const FieldSample x = r.field->sample_on_segment(e3, at);
+    const std::vector<Vec3d> path = r.field->path_on_segment(e3, at);
+    const double f = std::sqrt(r.mc->vertex(path.size() == 2 ? l3 : l2).radius_squared.get_d());
+    CAPTURE(s, x.bt, path.size());
+    CHECK(x.bt == Catch::Detail::Approx(std::min(5 + 3 * s, 4 + 3 * (1 - s))).margin(1e-12));
+    CHECK(x.bt == Catch::Detail::Approx(f + polyline_length(path)).margin(1e-12));
+    CHECK(path.size() == (s < 0.5 ? 3u : 2u));  // through the centre, or straight from l3
+  }
+}
