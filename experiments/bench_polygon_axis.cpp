@@ -6,13 +6,17 @@
 // circle r(t) = 10^6 (1 + 0.1 sin 7t), which is mirror-symmetric in x = 0 (integer
 // rounding keeps the symmetry: thousands of exactly equal burn times, proved by value
 // classes, burn2/burn_times.h), and the phase-shifted r(t) = 10^6 (1 + 0.1 sin(7t + 0.3)),
-// which has no symmetry (generic input). Each row runs: Boost alone; CGAL SDG alone (bulk
-// insert_segments, filtered traits without intersections) unless --max-cgal is below the
-// size; the exact axis (polygon_axis.h); the exact axis plus the extended grassfire
+// which has no symmetry (generic input), and the "unrounded" variant: the shifted curve's
+// points as computed (full-mantissa doubles, no decimal or int32 binary frame: the CGAL
+// SDG path of polygon_axis.h; run up to --max-unrounded segments, default 20000, because
+// that path is superlinear on such input). Each row runs: Boost alone (on the rounded
+// polygon for "unrounded"); CGAL SDG alone (bulk insert_segments, CGAL's default filtered
+// traits without intersections) unless --max-cgal is below the size; the exact axis (polygon_axis.h); the exact axis plus the extended grassfire
 // (extended_grassfire.h).
 // Output (stdout): CSV segments,shape,boost_s,cgal_sdg_s,axis_s,axis_plus_edf_s,
 // axis_ratio,ratio_to_boost,boost_cpu_s,axis_plus_edf_cpu_s,cpu_ratio,uncertified,
-// peak_mem_mb; shape is "symmetric" or "shifted"; axis_ratio = axis_s / boost_s,
+// peak_mem_mb,ratio_to_decimal; ratio_to_decimal (unrounded rows only) = the unrounded
+// row's axis_plus_edf_cpu_s / the shifted (decimal) row's of the same size; shape is "symmetric" or "shifted"; axis_ratio = axis_s / boost_s,
 // ratio_to_boost = axis_plus_edf_s / boost_s (wall clock), cpu_ratio the same in thread
 // CPU time (what to read on a loaded machine); uncertified = ties of the burning and
 // contractions of the axis that no stage could prove (zero is the goal, DESIGN.md 3); an
@@ -20,7 +24,8 @@
 // the row. Each time is the best of --repeat runs (default 1). stderr: the axis report
 // (where its CPU time goes: Voronoi, values, value classes, burning; contractions, double-
 // double and Arb refinements), the engine's comparison counts and the value classes.
-// Usage: bench_polygon_axis [--sizes 1000,10000,100000] [--max-cgal N] [--repeat K]
+// Usage: bench_polygon_axis [--sizes 1000,10000,100000] [--max-cgal N] [--max-unrounded N]
+//        [--repeat K]
 #include <CGAL/Segment_Delaunay_graph_2.h>
 #include <CGAL/Segment_Delaunay_graph_filtered_traits_2.h>
 #include <CGAL/Simple_cartesian.h>
@@ -52,13 +57,14 @@ namespace {
 
 double now() { return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count(); }
 
-Shape2 wavy_circle(int n, double phase) {
+Shape2 wavy_circle(int n, double phase, bool round = true) {
   Shape2 s;
   s.name = "wavy circle " + std::to_string(n);
   Ring r;
   for (int k = 0; k < n; ++k) {
     const double t = 2 * M_PI * k / n, rad = 1e6 * (1 + 0.1 * std::sin(7 * t + phase));
-    r.points.push_back({std::round(rad * std::cos(t)), std::round(rad * std::sin(t))});
+    const double x = rad * std::cos(t), y = rad * std::sin(t);
+    r.points.push_back(round ? Point2{std::round(x), std::round(y)} : Point2{x, y});
   }
   s.rings.push_back(r);
   return s;
@@ -137,12 +143,14 @@ void report_details(int n, const char* shape, const PolygonAxisReport& rep, cons
 
 int main(int argc, char** argv) {
   std::vector<int> sizes{1000, 10000, 100000};
-  long max_cgal = 100000;
+  long max_cgal = 100000, max_unrounded = 20000;
   int repeat = 1;
   for (int i = 1; i + 1 < argc; i += 2) {
     const std::string a = argv[i];
     if (a == "--max-cgal") {
       max_cgal = std::atol(argv[i + 1]);
+    } else if (a == "--max-unrounded") {
+      max_unrounded = std::atol(argv[i + 1]);
     } else if (a == "--repeat") {
       repeat = std::max(1, std::atoi(argv[i + 1]));
     } else if (a == "--sizes") {
@@ -150,21 +158,25 @@ int main(int argc, char** argv) {
       std::stringstream ss(argv[i + 1]);
       for (std::string t; std::getline(ss, t, ',');) sizes.push_back(std::atoi(t.c_str()));
     } else {
-      std::fprintf(stderr, "usage: bench_polygon_axis [--sizes a,b,c] [--max-cgal N] [--repeat K]\n");
+      std::fprintf(stderr, "usage: bench_polygon_axis [--sizes a,b,c] [--max-cgal N] [--max-unrounded N] [--repeat K]\n");
       return 2;
     }
   }
   std::printf("segments,shape,boost_s,cgal_sdg_s,axis_s,axis_plus_edf_s,axis_ratio,ratio_to_boost,boost_cpu_s,"
-              "axis_plus_edf_cpu_s,cpu_ratio,uncertified,peak_mem_mb\n");
+              "axis_plus_edf_cpu_s,cpu_ratio,uncertified,peak_mem_mb,ratio_to_decimal\n");
   for (int n : sizes) {
-    for (const auto& [shape, phase] : {std::pair<const char*, double>{"symmetric", 0.0}, {"shifted", 0.3}}) {
-      const Shape2 s = wavy_circle(n, phase);
+    double decimal_cpu = 0;
+    for (const auto& [shape, phase] :
+         {std::pair<const char*, double>{"symmetric", 0.0}, {"shifted", 0.3}, {"unrounded", 0.3}}) {
+      const bool unrounded = std::string(shape) == "unrounded";
+      if (unrounded && n > max_unrounded) continue;
+      const Shape2 s = wavy_circle(n, phase, !unrounded), rounded = wavy_circle(n, phase);
       Row row;
       PolygonAxisReport rep;
       std::unique_ptr<MedialGraph> g;
       std::unique_ptr<GrassfireResult> r;
       for (int k = 0; k < repeat; ++k) {
-        const Times b = bare_boost(s);
+        const Times b = bare_boost(rounded);
         row.boost_s = std::min(row.boost_s, b.wall);
         row.boost_cpu = std::min(row.boost_cpu, b.cpu);
         if (n <= max_cgal) row.cgal_s = std::min(row.cgal_s, bare_cgal(s));
@@ -190,9 +202,11 @@ int main(int argc, char** argv) {
       }
       const std::uint64_t uncertified = r->stats().uncertified_zero + rep.uncertified_contractions;
       const std::string cgal = n <= max_cgal ? std::to_string(row.cgal_s) : "";
-      std::printf("%d,%s,%.4f,%s,%.4f,%.4f,%.3f,%.3f,%.4f,%.4f,%.3f,%llu,%.1f\n", n, shape, row.boost_s, cgal.c_str(),
+      if (std::string(shape) == "shifted") decimal_cpu = row.both_cpu;
+      const std::string to_decimal = unrounded ? std::to_string(row.both_cpu / decimal_cpu) : "";
+      std::printf("%d,%s,%.4f,%s,%.4f,%.4f,%.3f,%.3f,%.4f,%.4f,%.3f,%llu,%.1f,%s\n", n, shape, row.boost_s, cgal.c_str(),
                   row.axis_s, row.both_s, row.axis_s / row.boost_s, row.both_s / row.boost_s, row.boost_cpu, row.both_cpu,
-                  row.both_cpu / row.boost_cpu, (unsigned long long)uncertified, peak_mb());
+                  row.both_cpu / row.boost_cpu, (unsigned long long)uncertified, peak_mb(), to_decimal.c_str());
       std::fflush(stdout);
       report_details(n, shape, rep, row, *g, *r);
     }

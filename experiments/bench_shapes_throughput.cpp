@@ -8,13 +8,24 @@
 // preserving ET+ST pruning (T = 0.05 x the bounding box's larger side, S = 1 - 1/sqrt 2,
 // 3.5.1), and the LFS signature at 200 boundary samples (apps2d); (2) sampled:
 // pipeline/edf2d.h with 2000 samples, then closest points and boundary eccentricity BE
-// (defined on a sampled axis). Each stage is timed with steady_clock; a failure in either
-// is recorded with its message and the next shape goes on.
+// (defined on a sampled axis). Baselines per shape, in the same run: Boost.Polygon's
+// construct_voronoi alone on the exact axis's integer frame (the polygon's segments scaled
+// by the frame scale; shapes on the CGAL SDG path get none), and CGAL's
+// Delaunay_triangulation_2 alone on the sampled pipeline's 2000 samples; exact_ratio =
+// exact_total_s / boost_s, sampled_ratio = sampled_total_s / dt2_s. Each stage is timed
+// with steady_clock; a failure in either is recorded with its message and the next shape
+// goes on.
 // Output: OUT/shapes_throughput.csv (one row per shape), OUT/shapes_throughput_summary.csv
-// (shapes, failures per pipeline, total, median and max seconds per pipeline, with the
-// first failure messages), the summary also on stderr.
+// (shapes, failures per pipeline, total, median and max seconds per pipeline and of the
+// two ratios, with the first failure messages), the summary also on stderr.
 // --shard I/N runs every N-th shape and writes its rows only (experiments/shard.h).
 // Usage: bench_shapes_throughput FOLDER [OUT] [--shard I/N] [--progress|--quiet]
+#include <CGAL/Delaunay_triangulation_2.h>
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+
+#include <boost/polygon/point_data.hpp>
+#include <boost/polygon/segment_data.hpp>
+#include <boost/polygon/voronoi.hpp>
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -50,10 +61,40 @@ struct Row {
   std::size_t exact_nodes = 0, sampled_nodes = 0;
   double exact_axis = 0, exact_burn = 0, exact_measures = 0, burn2_measures = 0, signatures = 0, exact_total = 0;
   double sampled_delaunay = 0, sampled_axis = 0, sampled_burn = 0, sampled_be = 0, sampled_total = 0;
+  double boost = 0, dt2 = 0, exact_ratio = 0, sampled_ratio = 0;  // baselines; 0 = none
   std::uint32_t pr_maxima = 0;
   std::size_t pruned_edges = 0;
   std::string exact_error, sampled_error, load_error;
 };
+
+// Boost.Polygon alone on the segments of every ring in the exact axis's integer frame.
+double bare_boost(const Shape2& s, double frame_scale) {
+  namespace bp = boost::polygon;
+  std::vector<bp::segment_data<int>> seg;
+  for (const Ring& ring : s.rings)
+    for (std::size_t i = 0; i < ring.points.size(); ++i) {
+      const Point2 a = ring.points[i], b = ring.points[(i + 1) % ring.points.size()];
+      auto p = [&](Point2 q) {
+        return bp::point_data<int>(int(std::lround(q.x * frame_scale)), int(std::lround(q.y * frame_scale)));
+      };
+      seg.emplace_back(p(a), p(b));
+    }
+  const auto t0 = Clock::now();
+  bp::voronoi_diagram<double> vd;
+  bp::construct_voronoi(seg.begin(), seg.end(), &vd);
+  return since(t0);
+}
+
+// CGAL's Delaunay_triangulation_2 alone on the samples (bulk insertion, spatially sorted).
+double bare_dt2(const BoundarySamples& samples) {
+  using K = CGAL::Exact_predicates_inexact_constructions_kernel;
+  std::vector<K::Point_2> pts;
+  for (const auto& ring : samples)
+    for (const Point2& p : ring) pts.emplace_back(p.x, p.y);
+  const auto t0 = Clock::now();
+  CGAL::Delaunay_triangulation_2<K> dt(pts.begin(), pts.end());
+  return since(t0);
+}
 
 void run_exact(const Shape2& s, Row& r) {
   try {
@@ -85,6 +126,10 @@ void run_exact(const Shape2& s, Row& r) {
     r.exact_burn = e.timings.burn;
     r.exact_measures = e.timings.measures;
     r.exact_total = since(t0);
+    if (e.polygon_report.construction == AxisConstruction::BoostPolygon) {
+      r.boost = bare_boost(s, e.polygon_report.frame_scale);
+      r.exact_ratio = r.exact_total / r.boost;
+    }
   } catch (const std::exception& ex) {
     r.exact_error = ex.what();
   }
@@ -106,6 +151,8 @@ void run_sampled(const Shape2& s, Row& r) {
         boundary_eccentricity(*e.graph, *e.burning, distance_to_ema(*e.graph, *e.burning), cp);
     r.sampled_be = since(t1);
     r.sampled_total = since(t0);
+    r.dt2 = bare_dt2(e.samples);
+    r.sampled_ratio = r.sampled_total / r.dt2;
   } catch (const std::exception& ex) {
     r.sampled_error = ex.what();
   }
@@ -133,6 +180,7 @@ Stats stats(const std::vector<Row>& rows, double Row::*time, std::string Row::*e
       ++s.reasons[e.substr(0, 160)];
       continue;
     }
+    if (r.*time == 0) continue;  // no baseline for this shape
     ++s.ok;
     t.push_back(r.*time);
     s.total += r.*time;
@@ -182,11 +230,13 @@ int main(int argc, char** argv) {
   progress.done();
   std::vector<std::string> lines;
   for (const Row& r : rows) {
-    char buf[512];
-    std::snprintf(buf, sizeof buf, "%s,%zu,%zu,%.5f,%.5f,%.5f,%.5f,%.5f,%.5f,%u,%zu,%zu,%.5f,%.5f,%.5f,%.5f,%.5f,",
+    char buf[640];
+    std::snprintf(buf, sizeof buf,
+                  "%s,%zu,%zu,%.5f,%.5f,%.5f,%.5f,%.5f,%.5f,%u,%zu,%zu,%.5f,%.5f,%.5f,%.5f,%.5f,%.6f,%.6f,%.3f,%.3f,",
                   csv(r.file).c_str(), r.vertices, r.exact_nodes, r.exact_axis, r.exact_burn, r.exact_measures,
                   r.burn2_measures, r.signatures, r.exact_total, r.pr_maxima, r.pruned_edges, r.sampled_nodes,
-                  r.sampled_delaunay, r.sampled_axis, r.sampled_burn, r.sampled_be, r.sampled_total);
+                  r.sampled_delaunay, r.sampled_axis, r.sampled_burn, r.sampled_be, r.sampled_total, r.boost, r.dt2,
+                  r.exact_ratio, r.sampled_ratio);
     std::string err = r.load_error;
     if (!r.exact_error.empty()) err += "exact: " + r.exact_error + " ";
     if (!r.sampled_error.empty()) err += "sampled: " + r.sampled_error;
@@ -195,7 +245,8 @@ int main(int argc, char** argv) {
   experiments::write_sorted_csv(out + "/shapes_throughput.csv",
                                 "file,vertices,exact_nodes,exact_axis_s,exact_burn_s,exact_measures_s,burn2_measures_s,"
                                 "signatures_s,exact_total_s,pr_local_maxima,pruned_edges,sampled_nodes,"
-                                "sampled_delaunay_s,sampled_axis_s,sampled_burn_s,sampled_be_s,sampled_total_s,error",
+                                "sampled_delaunay_s,sampled_axis_s,sampled_burn_s,sampled_be_s,sampled_total_s,boost_s,dt2_s,"
+                                "exact_ratio,sampled_ratio,error",
                                 lines);
   if (experiments::rows_only(shard, out + "/shapes_throughput.csv")) return 0;
   std::ofstream sum(out + "/shapes_throughput_summary.csv");
@@ -205,7 +256,9 @@ int main(int argc, char** argv) {
     double Row::*time;
     std::string Row::*error;
   } pipelines[] = {{"exact axis + EDF + all measures + LFS", &Row::exact_total, &Row::exact_error},
-                   {"sampled 2000 + EDF + ET/ST + BE", &Row::sampled_total, &Row::sampled_error}};
+                   {"sampled 2000 + EDF + ET/ST + BE", &Row::sampled_total, &Row::sampled_error},
+                   {"ratio: exact pipeline / Boost.Polygon alone", &Row::exact_ratio, &Row::exact_error},
+                   {"ratio: sampled pipeline / CGAL DT2 alone", &Row::sampled_ratio, &Row::sampled_error}};
   for (const auto& p : pipelines) {
     const Stats s = stats(rows, p.time, p.error);
     std::string reasons;

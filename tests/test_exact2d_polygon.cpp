@@ -312,3 +312,91 @@ TEST_CASE("a strip with teeth off the decimal grid (CGAL path): a finite EMA equ
   CHECK(ema[0].x > 1.4);  // the teeth pull the EMA left of the strip's centre (x = 2)
   CHECK(ema[0].x < 1.6);
 }
+
+TEST_CASE("binary policy: exponent of the lowest set bit", "[exact2d]") {
+  CHECK(lowest_bit_exponent(1.0) == 0);
+  CHECK(lowest_bit_exponent(6.0) == 1);
+  CHECK(lowest_bit_exponent(-0.375) == -3);
+  CHECK(lowest_bit_exponent(std::ldexp(12345.0, -40)) == -40);
+  CHECK(lowest_bit_exponent(1.0 / 3.0) == -54);  // 6004799503160661 x 2^-54, an odd mantissa
+  CHECK(lowest_bit_exponent(std::ldexp(1.0, 60)) == 60);
+}
+
+TEST_CASE("seeded random star polygons on a binary grid: Boost on exact integers equals CGAL", "[exact2d]") {
+  // Coordinates m / 2^20 (not short decimals: 1/2^20 needs 20 decimal digits): the binary
+  // policy scales them exactly to integers and Boost runs; CGAL's SDG runs on the same
+  // doubles. The two constructions see one exact polygon, so the radii agree exactly.
+  std::mt19937 rng(20261202);
+  std::uniform_real_distribution<double> radius(0.3, 1.0);
+  for (int trial = 0; trial < 8; ++trial) {
+    const int n = 5 + trial * 4;
+    std::vector<Point2> ring;
+    for (int k = 0; k < n; ++k) {
+      const double t = 2 * M_PI * k / n, r = radius(rng);
+      ring.push_back({std::ldexp(std::round(std::ldexp(r * std::cos(t), 20)), -20),
+                      std::ldexp(std::round(std::ldexp(r * std::sin(t), 20)), -20)});
+    }
+    const Shape2 s = polygon({ring});
+    PolygonAxisOptions cgal_opt;
+    cgal_opt.construction = AxisConstruction::CgalSdg;
+    PolygonAxisReport rb, rc;
+    const MedialGraph gb = exact_polygon_axis(s, {}, &rb), gc = exact_polygon_axis(s, cgal_opt, &rc);
+    INFO("trial " << trial);
+    CHECK(rb.construction == AxisConstruction::BoostPolygon);
+    CHECK(rb.decimal_digits == -1);
+    CHECK(rb.binary_digits <= 20);
+    CHECK(rb.binary_digits >= 17);
+    CHECK(rc.construction == AxisConstruction::CgalSdg);
+    require_same_axis(gb, gc, false);
+    // Radii without certified constants (rationals and sums of square roots, whose
+    // identity does not depend on the frame) are equal exactly.
+    int exact = 0;
+    for (std::uint32_t v = 0; v < gb.node_count(); ++v) {
+      const Point2 p = gb.node(v).position;
+      const ExactSum a = gb.geometry().exact_radius(v), b = gc.geometry().exact_radius(node_at(gc, p.x, p.y));
+      if (!a.constant_terms().empty() || !b.constant_terms().empty()) continue;
+      CHECK(equals(a, b));
+      ++exact;
+    }
+    CHECK(exact >= n);  // at least the n apexes (R = 0) and the rational or sqrt circles
+    require_valid_and_burns_like_oracle(gb);
+  }
+}
+
+TEST_CASE("rotated polygons with full-mantissa coordinates (CGAL path) = the decimal axis rotated", "[exact2d]") {
+  // A rigid motion by an angle whose sine and cosine have full 53-bit mantissas: no decimal
+  // or int32 binary frame exists, CGAL's SDG runs on the doubles. Every node of the decimal
+  // polygon's axis, rotated, is a node of the rotated polygon's axis with the same radius
+  // (to the rounding of the rotated coordinates, ~1e-16), and the edge kinds agree.
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> radius(0.3, 1.0);
+  const double angle = 0.7390851332151607, c = std::cos(angle), sn = std::sin(angle);
+  for (int trial = 0; trial < 6; ++trial) {
+    const int n = 6 + trial * 5;
+    std::vector<Point2> ring, rotated;
+    for (int k = 0; k < n; ++k) {
+      const double t = 2 * M_PI * k / n, r = radius(rng);
+      const Point2 p{std::round(r * std::cos(t) * 1e4) / 1e4, std::round(r * std::sin(t) * 1e4) / 1e4};
+      ring.push_back(p);
+      rotated.push_back({c * p.x - sn * p.y, sn * p.x + c * p.y});
+    }
+    const Shape2 s = polygon({ring}), sr = polygon({rotated});
+    PolygonAxisReport rep;
+    const MedialGraph g = exact_polygon_axis(s), gr = exact_polygon_axis(sr, {}, &rep);
+    INFO("trial " << trial);
+    CHECK(rep.construction == AxisConstruction::CgalSdg);
+    REQUIRE(g.node_count() == gr.node_count());
+    REQUIRE(g.edge_count() == gr.edge_count());
+    std::vector<std::uint32_t> to_r(g.node_count());
+    for (std::uint32_t v = 0; v < g.node_count(); ++v) {
+      const Point2 p = g.node(v).position;
+      to_r[v] = node_at(gr, c * p.x - sn * p.y, sn * p.x + c * p.y);
+      CHECK(std::fabs(g.node(v).radius.mid() - gr.node(to_r[v]).radius.mid()) < 1e-12);
+    }
+    std::multiset<std::tuple<std::uint32_t, std::uint32_t, EdgeKind>> ea, eb;
+    for (const MedialEdge& e : g.edges()) ea.insert({std::min(to_r[e.u], to_r[e.v]), std::max(to_r[e.u], to_r[e.v]), e.kind});
+    for (const MedialEdge& e : gr.edges()) eb.insert({std::min(e.u, e.v), std::max(e.u, e.v), e.kind});
+    CHECK(ea == eb);
+    require_valid_and_burns_like_oracle(gr);
+  }
+}

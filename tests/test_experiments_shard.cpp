@@ -35,8 +35,8 @@ std::vector<std::string> split(const std::string& line) {
   return fields;
 }
 
-// The table with its wall-clock columns (named *_s or seconds) blanked: they differ
-// between any two runs.
+// The table with its wall-clock columns (named *_s or seconds, and ratios of them named
+// *_ratio) blanked: they differ between any two runs.
 std::vector<std::string> without_timings(const std::vector<std::string>& table) {
   const std::vector<std::string> header = split(table.at(0));
   std::vector<std::string> out;
@@ -45,7 +45,10 @@ std::vector<std::string> without_timings(const std::vector<std::string>& table) 
     std::string joined;
     for (std::size_t i = 0; i < f.size(); ++i) {
       const std::string& name = i < header.size() ? header[i] : "";
-      const bool timing = name == "seconds" || (name.size() > 2 && name.compare(name.size() - 2, 2, "_s") == 0);
+      auto ends_with = [&](const std::string& tail) {
+        return name.size() > tail.size() && name.compare(name.size() - tail.size(), tail.size(), tail) == 0;
+      };
+      const bool timing = name == "seconds" || ends_with("_s") || ends_with("_ratio");
       joined += (i ? "," : "") + (timing && &line != &table[0] ? std::string("t") : f[i]);
     }
     out.push_back(joined);

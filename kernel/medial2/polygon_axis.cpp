@@ -4,6 +4,8 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdint>
+#include <limits>
 #include <numeric>
 #include <optional>
 #include <stdexcept>
@@ -37,9 +39,31 @@ bool overlap(const Interval& a, const Interval& b) { return a.lo <= b.hi && b.lo
 struct Frame {
   AxisConstruction construction = AxisConstruction::CgalSdg;
   int digits = -1;
+  int binary_digits = std::numeric_limits<int>::min();
   mpq_class to_input = 1;
   PolygonSites sites;
 };
+
+// The binary policy: every double is an integer times a power of two, so the polygon
+// scaled by 2^K (K = minus the smallest exponent of a lowest set bit) has integer
+// coordinates, exactly. Boost runs on them when they fit int32.
+bool dyadic_frame(Frame& f) {
+  int low = std::numeric_limits<int>::max();
+  double largest = 0;
+  for (const Point2& p : f.sites.vertex)
+    for (double x : {p.x, p.y}) {
+      if (x == 0) continue;
+      low = std::min(low, lowest_bit_exponent(x));
+      largest = std::max(largest, std::fabs(x));
+    }
+  if (low == std::numeric_limits<int>::max()) low = 0;
+  if (!(std::ldexp(largest, -low) <= 2147483647.0)) return false;
+  for (Point2& p : f.sites.vertex) p = {std::ldexp(p.x, -low), std::ldexp(p.y, -low)};
+  f.construction = AxisConstruction::BoostPolygon;
+  f.binary_digits = -low;
+  f.to_input = low >= 0 ? mpq_class(mpz_class(mpz_class(1) << low)) : mpq_class(mpz_class(1), mpz_class(mpz_class(1) << -low));
+  return true;
+}
 
 Frame choose_frame(const Shape2& shape, const PolygonAxisOptions& options) {
   Frame f;
@@ -75,8 +99,9 @@ Frame choose_frame(const Shape2& shape, const PolygonAxisOptions& options) {
       return f;
     }
   }
+  if (options.construction != AxisConstruction::CgalSdg && dyadic_frame(f)) return f;
   if (options.construction == AxisConstruction::BoostPolygon)
-    throw std::invalid_argument(shape.name + ": Boost.Polygon needs decimal coordinates that fit int32 once scaled");
+    throw std::invalid_argument(shape.name + ": Boost.Polygon needs decimal or binary coordinates that fit int32 once scaled");
   return f;
 }
 
@@ -318,6 +343,18 @@ int decimal_digits(double x, int max_digits, long long* m) {
   return -1;
 }
 
+int lowest_bit_exponent(double x) {
+  int e = 0;
+  const double f = std::frexp(std::fabs(x), &e);  // |x| = f 2^e, f in [1/2, 1)
+  auto m = static_cast<std::uint64_t>(std::ldexp(f, 53));  // exact: 53-bit integer
+  int low = e - 53;
+  while ((m & 1u) == 0) {
+    m >>= 1;
+    ++low;
+  }
+  return low;
+}
+
 MedialGraph exact_polygon_axis(const Shape2& shape, const PolygonAxisOptions& options, PolygonAxisReport* report) {
   const double t0 = thread_seconds();
   PolygonAxisReport local;
@@ -329,6 +366,7 @@ MedialGraph exact_polygon_axis(const Shape2& shape, const PolygonAxisOptions& op
   const Frame frame = choose_frame(shape, options);
   rep.construction = frame.construction;
   rep.decimal_digits = frame.digits;
+  rep.binary_digits = frame.binary_digits;
   rep.frame_scale = 1 / frame.to_input.get_d();
   rep.polygon_vertices = frame.sites.vertex_count();
   VoronoiTopology topo = frame.construction == AxisConstruction::BoostPolygon ? boost_segment_voronoi(frame.sites)

@@ -28,15 +28,21 @@
 // digit count k, per coordinate; the shape's K is the largest k). If every coordinate
 // is such a decimal and the integers x 10^K fit in int32, Boost.Polygon runs on those
 // integers and the axis is exact for the decimal polygon (the one the file wrote).
-// Otherwise CGAL's SDG runs on the exact double values, and the axis is exact for the
-// polygon of those doubles. Either way every combinatorial decision is exact.
+// Otherwise, if the doubles scaled by the power of two 2^K that makes them all integers
+// (the binary policy: exact, K = minus the smallest lowest-set-bit exponent) fit int32,
+// Boost.Polygon runs on those integers (dyadic inputs: binary fractions, float data, large
+// integers with trailing zero bits). Otherwise CGAL's SDG runs on the exact double values.
+// Every policy gives the axis of the exact input polygon (the decimal one for the first),
+// and every combinatorial decision is exact.
 // Contract: a validated Shape2 (shapes/validate_shape.h). Throws std::invalid_argument
 // for an empty shape.
-// Complexity: O(n log n) (Boost) plus O(n) circle work; CGAL SDG is near-quadratic on
-// large smooth polygons.
+// Complexity: O(n log n) (Boost) plus O(n) circle work; CGAL SDG is superlinear on dense
+// samples of smooth curves with full-mantissa coordinates (its interval filter fails on the
+// near-degenerate incircle tests; measured in experiments/bench_polygon_axis.cpp).
 #pragma once
 
 #include <cstdint>
+#include <limits>
 #include <string>
 
 #include "medial2/medial_graph.h"
@@ -55,6 +61,7 @@ struct PolygonAxisOptions {
 struct PolygonAxisReport {
   AxisConstruction construction = AxisConstruction::Auto;  // the one that ran
   int decimal_digits = -1;  // K when the decimal policy applied, else -1
+  int binary_digits = std::numeric_limits<int>::min();  // K when the binary policy applied (frame = input x 2^K)
   double frame_scale = 1;   // frame coordinates = input coordinates x frame_scale
   std::uint64_t polygon_vertices = 0;
   std::uint64_t voronoi_vertices = 0;   // interior Voronoi vertices before contraction
@@ -70,6 +77,10 @@ struct PolygonAxisReport {
 
 MedialGraph exact_polygon_axis(const Shape2& shape, const PolygonAxisOptions& options = {},
                                PolygonAxisReport* report = nullptr);
+
+// The binary policy: the exponent of the lowest set bit of a finite nonzero x (x is an odd
+// integer times 2^result).
+int lowest_bit_exponent(double x);
 
 // The decimal policy: the smallest k <= max_digits such that x is the double nearest to
 // m / 10^k for an integer m (which is stored), or -1.

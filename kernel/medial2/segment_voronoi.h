@@ -9,15 +9,16 @@
 // are apex vertices (R = 0, leaves of the medial axis, DESIGN.md 4).
 // Two constructions with exact topology: Boost.Polygon's voronoi builder (integer input
 // up to int32, exact predicates), and CGAL's Segment_Delaunay_graph_2 with filtered exact
-// traits (any double input). Boost's post-pass that merges vertices within 128 ulps is
+// traits (any double input; exact kernel Gmpzf, segments in seeded random order). Boost's post-pass that merges vertices within 128 ulps is
 // switched off: coincident vertices (cocircular sites) come out as zero-length edges and
 // are contracted later by an exact test (polygon_axis.cpp), never by a tolerance.
 // Interior/exterior is decided combinatorially: from the apex of every convex vertex,
 // a search along primary edges never leaves the polygon (a Voronoi edge meets the
 // boundary only at an endpoint shared by its two sites).
 // Contract: a validated Shape2 (shapes/validate_shape.h) mapped to the exact frame.
-// Complexity: O(n log n) for n polygon vertices (Boost); CGAL SDG is close to quadratic
-// on large smooth inputs (measured: experiments/bench_polygon_axis.cpp).
+// Complexity: O(n log n) for n polygon vertices (Boost); CGAL SDG is superlinear on dense
+// samples of smooth curves with full-mantissa coordinates, where its interval filter fails
+// more and more often (measured: experiments/bench_polygon_axis.cpp, notes fast2d2.md).
 #pragma once
 
 #include <array>
