@@ -203,27 +203,66 @@ void refine(const InnerVoronoi& vor, const MeshAxisOptions& options, std::vector
 }
 
 
-// The thickness rule: triangle t is too coarse for the separation test when
-// lambda h_t > 2 f_t, f_t the largest inner pole distance of its samples (the
-// half-thickness of the part it bounds: a part of half-thickness f puts the samples across
-// it about 2 f apart, and the test keeps only pairs at least lambda h apart). The largest, not the least: near a convex
-// edge the inner pole distance of a sample is about its distance to the edge (lfs = 0
-// there), so the least would refine every sharp edge for ever. Such triangles get
-// h_t = max(rho 2 f_t / lambda, h_t / 4): the margin 1 / rho (rho = feature_ratio) is also
-// the hysteresis that stops the refinement once the estimates of f settle. Returns how
-// many triangles were too coarse.
-std::size_t refine_thin(const InnerVoronoi& vor, const MeshAxisOptions& options, std::vector<double>* spacing) {
+// Whether each inner Voronoi vertex is on the pruned axis with a cell of dimension > 0
+// at it (a kept polygon or a kept segment), and whether V_in had such a cell there at all.
+struct PoleSupport {
+  std::vector<bool> had_cell, kept_cell;
+};
+
+PoleSupport pole_support(const InnerVoronoi& vor, const PrunedComplex& pruned) {
+  PoleSupport out;
+  out.had_cell.assign(vor.vertices.size(), false);
+  out.kept_cell.assign(vor.vertices.size(), false);
+  for (std::uint32_t i = 0; i < vor.polygons.size(); ++i)
+    for (std::uint32_t k = 0; k < vor.polygons.ring_size(i); ++k) {
+      const std::uint32_t x = vor.polygons.ring(i)[k];
+      out.had_cell[x] = true;
+      if (pruned.polygon_kept[i]) out.kept_cell[x] = true;
+    }
+  for (const InnerVoronoi::Segment& seg : vor.segments)
+    for (std::uint32_t x : seg.v) out.had_cell[x] = true;
+  for (const auto& e : pruned.bare_edges)
+    for (std::uint32_t x : e) out.kept_cell[x] = true;
+  return out;
+}
+
+// The thickness rule, once the Betti numbers are right. Triangle t is too coarse when
+//  (a) lambda h_t > 2 f_t, f_t the largest inner pole distance of its samples (the
+//      half-thickness of the part it bounds: samples across a slab of half-thickness f are
+//      about 2 f apart, and the separation test keeps only pairs at least lambda h apart);
+//      then h_t = max(rho 2 f_t / lambda, h_t / 4), rho = feature_ratio; or
+//  (b) the pruning left no polygon or segment at that deepest pole although V_in had some:
+//      the sheets through the deepest point of the part were pruned. (a) misses this where
+//      the sheets are wedges, not slabs: the touching samples of a sheet of object angle
+//      alpha at depth R are 2 R sin(alpha / 2) apart (the octahedron's sheets: 1.15 R,
+//      which kept its axis one vertex). Then h_t = h_t / 2.
+// The largest pole, not the least: near a convex edge the inner pole of a sample is about as
+// far as the edge (lfs = 0 there), so the least would refine every sharp edge for ever. The
+// margin 1 / rho of (a) is also the hysteresis that stops the refinement once the estimates
+// of f settle. Returns how many triangles were too coarse.
+std::size_t refine_thin(const InnerVoronoi& vor, const PrunedComplex& pruned, const MeshAxisOptions& options,
+                        std::vector<double>* spacing) {
   if (!(options.separation > 0)) return 0;
+  const PoleSupport support = pole_support(vor, pruned);
   std::size_t coarse = 0;
   for (std::size_t t = 0; t < spacing->size(); ++t) {
     double f = 0;
-    for (std::uint32_t i = vor.samples.offset[t]; i < vor.samples.offset[t + 1]; ++i)
-      f = std::max(f, vor.inner_pole_distance[vor.samples.on_triangle[i]]);
-    if (f == 0) continue;  // no inner Voronoi vertex on its samples: nothing to resolve
-    const double limit = 2 * f / options.separation;
+    std::uint32_t pole = UINT32_MAX;
+    for (std::uint32_t i = vor.samples.offset[t]; i < vor.samples.offset[t + 1]; ++i) {
+      const std::uint32_t p = vor.samples.on_triangle[i];
+      if (vor.inner_pole[p] != UINT32_MAX && vor.inner_pole_distance[p] > f) {
+        f = vor.inner_pole_distance[p];
+        pole = vor.inner_pole[p];
+      }
+    }
+    if (pole == UINT32_MAX) continue;  // no inner Voronoi vertex on its samples: nothing to resolve
     double& h = (*spacing)[t];
+    const double limit = 2 * f / options.separation;
     if (limit < h) {
       h = std::max(options.feature_ratio * limit, h / 4);
+      ++coarse;
+    } else if (support.had_cell[pole] && !support.kept_cell[pole]) {
+      h /= 2;
       ++coarse;
     }
   }
@@ -284,7 +323,7 @@ MeshAxis mesh_medial_axis(const TriangleMesh3& mesh, const MeshAxisOptions& opti
     const bool right = r.betti == out.solid.betti;
     if (right) {
       std::vector<double> next = spacing;
-      r.coarse_triangles = refine_thin(vor, options, &next);
+      r.coarse_triangles = refine_thin(vor, pruned, options, &next);
       out.rounds.push_back(r);
       accepted = AcceptedAxis{out.rounds.size() - 1, std::move(vor), std::move(cells)};
       if (r.coarse_triangles == 0 || round >= options.max_refinements) break;
