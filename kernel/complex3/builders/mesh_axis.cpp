@@ -231,11 +231,13 @@ PoleSupport pole_support(const InnerVoronoi& vor, const PrunedComplex& pruned) {
 //      half-thickness of the part it bounds: samples across a slab of half-thickness f are
 //      about 2 f apart, and the separation test keeps only pairs at least lambda h apart);
 //      then h_t = max(rho 2 f_t / lambda, h_t / 4), rho = feature_ratio; or
-//  (b) the pruning left no polygon or segment at that deepest pole although V_in had some:
-//      the sheets through the deepest point of the part were pruned. (a) misses this where
-//      the sheets are wedges, not slabs: the touching samples of a sheet of object angle
-//      alpha at depth R are 2 R sin(alpha / 2) apart (the octahedron's sheets: 1.15 R,
-//      which kept its axis one vertex). Then h_t = h_t / 2.
+//  (b) the pruning left no polygon or segment at that deepest pole x although V_in had
+//      some: the sheets through the deepest point of the part were pruned. (a) misses this
+//      where the sheets are wedges, not slabs: the touching samples of a sheet of object
+//      angle alpha at depth R are 2 R sin(alpha / 2) apart (the octahedron's sheets: 1.15 R,
+//      which kept its axis one vertex). Then t and the triangles of every sample bounding a
+//      polygon at x get half their spacing: the test compares |p - q| with the larger
+//      spacing of p and q, so refining t alone would not bring the sheet back.
 // The largest pole, not the least: near a convex edge the inner pole of a sample is about as
 // far as the edge (lfs = 0 there), so the least would refine every sharp edge for ever. The
 // margin 1 / rho of (a) is also the hysteresis that stops the refinement once the estimates
@@ -244,28 +246,44 @@ std::size_t refine_thin(const InnerVoronoi& vor, const PrunedComplex& pruned, co
                         std::vector<double>* spacing) {
   if (!(options.separation > 0)) return 0;
   const PoleSupport support = pole_support(vor, pruned);
+  const SurfaceSamples& s = vor.samples;
+  std::vector<std::vector<std::uint32_t>> sample_triangles(s.lattice.size());
+  for (std::uint32_t t = 0; t < spacing->size(); ++t)
+    for (std::uint32_t i = s.offset[t]; i < s.offset[t + 1]; ++i) sample_triangles[s.on_triangle[i]].push_back(t);
+  std::vector<bool> lost(vor.vertices.size(), false), halve(spacing->size(), false);
+  std::vector<double> next = *spacing;
   std::size_t coarse = 0;
   for (std::size_t t = 0; t < spacing->size(); ++t) {
     double f = 0;
     std::uint32_t pole = UINT32_MAX;
-    for (std::uint32_t i = vor.samples.offset[t]; i < vor.samples.offset[t + 1]; ++i) {
-      const std::uint32_t p = vor.samples.on_triangle[i];
+    for (std::uint32_t i = s.offset[t]; i < s.offset[t + 1]; ++i) {
+      const std::uint32_t p = s.on_triangle[i];
       if (vor.inner_pole[p] != UINT32_MAX && vor.inner_pole_distance[p] > f) {
         f = vor.inner_pole_distance[p];
         pole = vor.inner_pole[p];
       }
     }
     if (pole == UINT32_MAX) continue;  // no inner Voronoi vertex on its samples: nothing to resolve
-    double& h = (*spacing)[t];
-    const double limit = 2 * f / options.separation;
+    const double h = (*spacing)[t], limit = 2 * f / options.separation;
     if (limit < h) {
-      h = std::max(options.feature_ratio * limit, h / 4);
+      next[t] = std::max(options.feature_ratio * limit, h / 4);
       ++coarse;
     } else if (support.had_cell[pole] && !support.kept_cell[pole]) {
-      h /= 2;
-      ++coarse;
+      lost[pole] = true;
+      halve[t] = true;
     }
   }
+  for (std::uint32_t i = 0; i < vor.polygons.size(); ++i)
+    for (std::uint32_t k = 0; k < vor.polygons.ring_size(i); ++k)
+      if (lost[vor.polygons.ring(i)[k]])
+        for (std::uint32_t p : vor.pq[i])
+          for (std::uint32_t t : sample_triangles[p]) halve[t] = true;
+  for (std::size_t t = 0; t < spacing->size(); ++t)
+    if (halve[t] && next[t] == (*spacing)[t]) {
+      next[t] /= 2;
+      ++coarse;
+    }
+  *spacing = std::move(next);
   return coarse;
 }
 
@@ -290,6 +308,7 @@ MeshAxis mesh_medial_axis(const TriangleMesh3& mesh, const MeshAxisOptions& opti
   for (int round = 0;; ++round) {
     MeshAxisRound r;
     r.spacing = *std::min_element(spacing.begin(), spacing.end());
+    r.max_spacing = *std::max_element(spacing.begin(), spacing.end());
     double t = cpu_seconds();
     SurfaceSamples samples = sample_surface(mesh, spacing);
     r.samples = samples.lattice.size();
@@ -356,6 +375,7 @@ nlohmann::json mesh_axis_json(const MeshAxis& a) {
   nlohmann::json rounds = nlohmann::json::array();
   for (const MeshAxisRound& r : a.rounds)
     rounds.push_back({{"spacing", r.spacing},
+                      {"max_spacing", r.max_spacing},
                       {"samples", r.samples},
                       {"tetrahedra", r.tetrahedra},
                       {"delaunay_cells", r.cells},

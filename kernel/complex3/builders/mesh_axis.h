@@ -25,7 +25,8 @@
 //     rho = feature_ratio (at most 4 times finer per round); and, since the samples
 //     touching a wedge-shaped sheet of object angle alpha at depth R are only
 //     2 R sin(alpha / 2) apart (the octahedron's sheets: 1.15 R, not 2 R), also when the
-//     pruning left no polygon or segment at that deepest pole, to half its spacing.
+//     pruning left no polygon or segment at that deepest pole, to half its spacing (and
+//     the triangles of the samples bounding the polygons at that pole too).
 //     Steps 2-5 repeat until no triangle is too coarse or max_refinements or max_samples
 //     is reached; the last round with the solid's Betti numbers is returned (axis_round;
 //     later rounds are listed too). What is kept: a sheet survives where its touching
@@ -78,7 +79,7 @@ struct MeshAxisOptions {
 };
 
 struct MeshAxisRound {
-  double spacing = 0;
+  double spacing = 0, max_spacing = 0;  // the finest and the coarsest triangle's
   std::size_t samples = 0, tetrahedra = 0, cells = 0, inner_cells = 0;
   std::size_t interior_samples = 0;  // samples whose Voronoi cell is inside (inner_voronoi.h)
   std::size_t polygons = 0, segments = 0, kept_polygons = 0, kept_segments = 0;
