@@ -12,6 +12,7 @@
 #include "caption_printf.h"
 #include "complex3/builders/mesh_axis.h"
 #include "complex3/exact_predicates3.h"
+#include "fig_4_scene.h"
 #include "fig_5_scene.h"
 #include "figure_registry.h"
 #include "io/mesh_io.h"
@@ -74,8 +75,8 @@ std::vector<FigureFile> fig_mesh_axes(const FigureContext& ctx) {
            "Mesh medial axes (2.1.2; grassfire medial3d --kind mesh at its default options): the inner Voronoi complex "
            "of surface samples, pruned by collapses that keep its homotopy type, refined until its Betti numbers "
            "[b0, b1, b2] are the solid's and its thin parts are resolved; coloured by the medial ball's radius R "
-           "relative to the largest on each axis (blue small, red large), the mesh as a grey wireframe. Along convex "
-           "edges a band about 2 h wide (h the spacing) is pruned by design. Per mesh: " +
+           "relative to the largest on each axis (hue from red, small, to magenta, largest), black lines the "
+           "axis' 1-dimensional parts (Voronoi edges), the mesh as a grey wireframe. Along convex edges a band about 2 h wide (h the spacing) is pruned by design. Per mesh: " +
                rows + "."}};
 }
 

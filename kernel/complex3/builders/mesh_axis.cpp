@@ -226,13 +226,90 @@ PoleSupport pole_support(const InnerVoronoi& vor, const PrunedComplex& pruned) {
   return out;
 }
 
+// Whether the lost pole x is the deepest point of its neighbourhood on the axis: no vertex
+// of V_in within R(x) of x (walking along polygon sides and segments) that keeps a cell of
+// the pruned axis is deeper. A pole near the end of a sheet (a smooth tip, where the
+// object angle goes to 0 and the pruning trims the sheet by design) has a deeper kept
+// vertex next to it; the centre of an octahedron whose sheets were all pruned has none.
+class LostCore {
+ public:
+  LostCore(const InnerVoronoi& vor, const PoleSupport& support) : vor_(vor), support_(support), seen_(vor.vertices.size(), false) {
+    std::vector<std::pair<std::uint32_t, std::uint32_t>> pairs;
+    for (std::uint32_t i = 0; i < vor.polygons.size(); ++i)
+      for (std::uint32_t k = 0; k < vor.polygons.ring_size(i); ++k) {
+        const auto [a, b] = vor.polygons.side(i, k);
+        pairs.push_back({a, b});
+        pairs.push_back({b, a});
+      }
+    for (const InnerVoronoi::Segment& seg : vor.segments) {
+      pairs.push_back({seg.v[0], seg.v[1]});
+      pairs.push_back({seg.v[1], seg.v[0]});
+    }
+    std::sort(pairs.begin(), pairs.end());
+    pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
+    start_.assign(vor.vertices.size() + 1, 0);
+    for (const auto& [a, b] : pairs) ++start_[a + 1];
+    for (std::size_t v = 0; v < vor.vertices.size(); ++v) start_[v + 1] += start_[v];
+    for (const auto& [a, b] : pairs) next_.push_back(b);
+  }
+
+  bool operator()(std::uint32_t x) {
+    if (verdict_[x] < 0) verdict_[x] = deepest(x) ? 1 : 0;
+    return verdict_[x] == 1;
+  }
+
+ private:
+  bool deepest(std::uint32_t x) {
+    const auto cx = centre(x);
+    const double r2 = radius2(x);
+    std::vector<std::uint32_t> stack{x}, visited{x};
+    seen_[x] = true;
+    bool deepest = true;
+    for (std::size_t steps = 0; !stack.empty() && deepest && steps < vor_.vertices.size(); ++steps) {
+      const std::uint32_t v = stack.back();
+      stack.pop_back();
+      for (std::uint32_t i = start_[v]; i < start_[v + 1]; ++i) {
+        const std::uint32_t w = next_[i];
+        if (seen_[w]) continue;
+        const auto cw = centre(w);
+        double d2 = 0;
+        for (int k = 0; k < 3; ++k) d2 += (cw[k] - cx[k]) * (cw[k] - cx[k]);
+        if (d2 > r2) continue;
+        seen_[w] = true;
+        visited.push_back(w);
+        if (support_.kept_cell[w] && radius2(w) > r2) deepest = false;
+        stack.push_back(w);
+      }
+    }
+    for (std::uint32_t v : visited) seen_[v] = false;
+    return deepest;
+  }
+  std::array<double, 3> centre(std::uint32_t v) const {
+    const auto& b = vor_.vertices[v].box;
+    return {b[0].mid(), b[1].mid(), b[2].mid()};
+  }
+  double radius2(std::uint32_t v) const {
+    const LatticeCentre& c = vor_.vertices[v].centre;
+    double n2 = 0;
+    for (int k = 0; k < 3; ++k) n2 += static_cast<double>(c.num[k]) * static_cast<double>(c.num[k]);
+    const double g = vor_.samples.grid / static_cast<double>(c.den);
+    return n2 * g * g;
+  }
+  const InnerVoronoi& vor_;
+  const PoleSupport& support_;
+  std::vector<std::uint32_t> start_, next_;
+  std::vector<bool> seen_;
+  std::vector<signed char> verdict_ = std::vector<signed char>(vor_.vertices.size(), -1);
+};
+
 // The thickness rule, once the Betti numbers are right. Triangle t is too coarse when
 //  (a) lambda h_t > 2 f_t, f_t the largest inner pole distance of its samples (the
 //      half-thickness of the part it bounds: samples across a slab of half-thickness f are
 //      about 2 f apart, and the separation test keeps only pairs at least lambda h apart);
 //      then h_t = max(rho 2 f_t / lambda, h_t / 4), rho = feature_ratio; or
 //  (b) the pruning left no polygon or segment at that deepest pole x although V_in had
-//      some: the sheets through the deepest point of the part were pruned. (a) misses this
+//      some, and no kept vertex within R(x) of x is deeper (LostCore): the sheets through
+//      the deepest point of the part were pruned. (a) misses this
 //      where the sheets are wedges, not slabs: the touching samples of a sheet of object
 //      angle alpha at depth R are 2 R sin(alpha / 2) apart (the octahedron's sheets: 1.15 R,
 //      which kept its axis one vertex). Then t and the triangles of every sample bounding a
@@ -246,6 +323,7 @@ std::size_t refine_thin(const InnerVoronoi& vor, const PrunedComplex& pruned, co
                         std::vector<double>* spacing) {
   if (!(options.separation > 0)) return 0;
   const PoleSupport support = pole_support(vor, pruned);
+  LostCore lost_core(vor, support);
   const SurfaceSamples& s = vor.samples;
   std::vector<std::vector<std::uint32_t>> sample_triangles(s.lattice.size());
   for (std::uint32_t t = 0; t < spacing->size(); ++t)
@@ -268,7 +346,7 @@ std::size_t refine_thin(const InnerVoronoi& vor, const PrunedComplex& pruned, co
     if (limit < h) {
       next[t] = std::max(options.feature_ratio * limit, h / 4);
       ++coarse;
-    } else if (support.had_cell[pole] && !support.kept_cell[pole]) {
+    } else if (support.had_cell[pole] && !support.kept_cell[pole] && lost_core(pole)) {
       lost[pole] = true;
       halve[t] = true;
     }
