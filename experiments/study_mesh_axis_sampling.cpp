@@ -15,8 +15,9 @@
 // missing = reference -> axis (parts of the true axis not found; the separation test
 // prunes sheets whose two touching samples are closer than lambda h = 2 h, so a band of
 // width about 2 h / sin(dihedral) along the convex edges is missing by design),
-// missing_core = the same from the points of the reference with R >= 2 h only (convex
-// meshes; empty otherwise), all also divided by h; hausdorff = max(extra, missing).
+// missing_core = the same from the points of the reference with R >= lambda h_axis = 2 h_axis
+// only (convex meshes; empty otherwise), h_axis the coarsest spacing of the axis' round
+// (the thickness rule refines below h); hausdorff = max(extra, missing), also / h_axis.
 // A mesh refused as open or non-manifold gets one row with its status.
 // Output: OUT/mesh_axis_sampling.csv, OUT/mesh_axis_sampling.svg (Hausdorff / D against h / D,
 // log-log, one series per mesh). CPU seconds per axis in the CSV.
@@ -98,7 +99,7 @@ int main(int argc, char** argv) {
   std::filesystem::create_directories(out);
   const std::vector<double> densities = quick ? std::vector<double>{1, 2} : std::vector<double>{1, 2, 4, 8};
   std::ofstream csv(out + "/mesh_axis_sampling.csv");
-  csv << "mesh,convex,samples_per_edge,h,h_over_D,samples,refinements,axis_round,betti_solid,betti_axis,topology_kept,"
+  csv << "mesh,convex,samples_per_edge,h,h_over_D,h_axis,samples,refinements,axis_round,betti_solid,betti_axis,topology_kept,"
          "axis_vertices,reference,extra,missing,missing_core,hausdorff,hausdorff_over_D,hausdorff_over_h,missing_core_over_h,"
          "status,seconds\n";
   plot::Plot p;
@@ -114,7 +115,7 @@ int main(int argc, char** argv) {
     try {
       mesh = read_triangle_mesh(path);
     } catch (const std::exception& e) {
-      csv << name << ",,,,,,,,,,,,,,,,,,,,\"" << e.what() << "\",\n";
+      csv << name << ",,,,,,,,,,,,,,,,,,,,,\"" << e.what() << "\",\n";
       continue;
     }
     const double diagonal = mesh_bounding_diagonal(mesh), step = diagonal / 400;
@@ -152,7 +153,7 @@ int main(int argc, char** argv) {
       if (!r.axis) {
         std::string status = r.status;
         std::replace(status.begin(), status.end(), ',', ';');
-        std::snprintf(line, sizeof line, "%s,%d,%g,%.6g,%.6g,,,,,,,,,,,,,,,,\"%s\",%.3f\n", name.c_str(), convex ? 1 : 0, r.density, r.h,
+        std::snprintf(line, sizeof line, "%s,%d,%g,%.6g,%.6g,,,,,,,,,,,,,,,,,\"%s\",%.3f\n", name.c_str(), convex ? 1 : 0, r.density, r.h,
                       r.h / diagonal, status.c_str(), r.seconds);
         csv << line;
         continue;
@@ -161,14 +162,15 @@ int main(int argc, char** argv) {
       const RawComplex& reference = convex ? *convex : finest->axis->complex;
       const double extra = directed_complex_distance(a.complex, reference, step);
       const double missing = directed_complex_distance(reference, a.complex, step);
-      const double core = convex ? directed_complex_distance(reference, radii(reference), 2 * r.h, a.complex, step) : NAN;
+      const double h_axis = a.rounds[a.axis_round].max_spacing;
+      const double core = convex ? directed_complex_distance(reference, radii(reference), 2 * h_axis, a.complex, step) : NAN;
       const double d = std::max(extra, missing);
       std::snprintf(line, sizeof line,
-                    "%s,%d,%g,%.6g,%.6g,%zu,%d,%zu,%s,%s,%d,%zu,%s,%.6g,%.6g,%.6g,%.6g,%.6g,%.4g,%.4g,%s,%.3f\n", name.c_str(),
-                    convex ? 1 : 0, r.density, r.h, r.h / diagonal, a.samples.lattice.size(), a.refinements(), a.axis_round,
+                    "%s,%d,%g,%.6g,%.6g,%.6g,%zu,%d,%zu,%s,%s,%d,%zu,%s,%.6g,%.6g,%.6g,%.6g,%.6g,%.4g,%.4g,%s,%.3f\n", name.c_str(),
+                    convex ? 1 : 0, r.density, r.h, r.h / diagonal, h_axis, a.samples.lattice.size(), a.refinements(), a.axis_round,
                     betti_field(a.solid.betti).c_str(), betti_field(a.axis_betti).c_str(), a.axis_betti == a.solid.betti ? 1 : 0,
                     a.complex.vertices.size(), convex ? "exact-convex" : "finest", extra, missing, core, d, d / diagonal,
-                    d / r.h, core / r.h, r.status.c_str(), r.seconds);
+                    d / h_axis, core / h_axis, r.status.c_str(), r.seconds);
       csv << line;
       if (convex || &r != finest) {
         series.x.push_back(r.h / diagonal);

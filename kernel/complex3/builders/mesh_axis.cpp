@@ -87,18 +87,20 @@ class SeparationTest {
   double lambda_;
 };
 
-PrunedComplex prune(const InnerVoronoi& vor, const AngleTest& angle, const SeparationTest& separation) {
-  PolygonalComplex complex;
-  complex.vertex_count = vor.vertices.size();
-  complex.polygons = vor.polygons;
-  for (const auto& s : vor.segments) complex.segments.push_back(s.v);
-  auto keep_polygon = [&](std::uint32_t i) {
+// The tests of the pruning: which polygons and edges may not be collapsed away.
+struct KeepTests {
+  const InnerVoronoi& vor;
+  const AngleTest& angle;
+  const SeparationTest& separation;
+
+  bool polygon(std::uint32_t i) const {
     if (!separation.apart(vor.pq[i][0], vor.pq[i][1])) return false;
     for (std::uint32_t k = 0; k < vor.polygons.ring_size(i); ++k)
       if (!angle.wide(vor.polygons.ring(i)[k], vor.pq[i][0], vor.pq[i][1])) return false;
     return true;
-  };
-  auto keep_edge = [&](const EdgeOrigin& o) {
+  }
+
+  bool edge(const EdgeOrigin& o) const {
     std::array<std::uint32_t, 2> ends;
     std::array<std::uint32_t, 3> t;
     if (o.segment) {
@@ -112,8 +114,16 @@ PrunedComplex prune(const InnerVoronoi& vor, const AngleTest& angle, const Separ
     for (std::uint32_t x : ends)
       if (!angle.wide(x, t[0], t[1]) && !angle.wide(x, t[1], t[2]) && !angle.wide(x, t[2], t[0])) return false;
     return true;
-  };
-  return prune_by_collapse(complex, keep_polygon, keep_edge);
+  }
+};
+
+PrunedComplex prune(const InnerVoronoi& vor, const KeepTests& keep) {
+  PolygonalComplex complex;
+  complex.vertex_count = vor.vertices.size();
+  complex.polygons = vor.polygons;
+  for (const auto& s : vor.segments) complex.segments.push_back(s.v);
+  return prune_by_collapse(complex, [&](std::uint32_t i) { return keep.polygon(i); },
+                           [&](const EdgeOrigin& o) { return keep.edge(o); });
 }
 
 // The kept cells with compact vertex ids: fans of the polygons, bare edges, and every
@@ -203,26 +213,33 @@ void refine(const InnerVoronoi& vor, const MeshAxisOptions& options, std::vector
 }
 
 
-// Whether each inner Voronoi vertex is on the pruned axis with a cell of dimension > 0
-// at it (a kept polygon or a kept segment), and whether V_in had such a cell there at all.
+// Whether each inner Voronoi vertex has a cell of dimension > 0 in V_in (a polygon or a
+// segment), and one that the pruning's tests keep. The tests, not the pruned complex: which
+// cells the collapses also keep (to preserve the topology) follows the sample order, which a
+// rotation changes, and the refinement must not (the same rounds for a moved mesh).
 struct PoleSupport {
   std::vector<bool> had_cell, kept_cell;
 };
 
-PoleSupport pole_support(const InnerVoronoi& vor, const PrunedComplex& pruned) {
+PoleSupport pole_support(const InnerVoronoi& vor, const KeepTests& keep) {
   PoleSupport out;
   out.had_cell.assign(vor.vertices.size(), false);
   out.kept_cell.assign(vor.vertices.size(), false);
-  for (std::uint32_t i = 0; i < vor.polygons.size(); ++i)
+  for (std::uint32_t i = 0; i < vor.polygons.size(); ++i) {
+    const bool kept = keep.polygon(i);
     for (std::uint32_t k = 0; k < vor.polygons.ring_size(i); ++k) {
       const std::uint32_t x = vor.polygons.ring(i)[k];
       out.had_cell[x] = true;
-      if (pruned.polygon_kept[i]) out.kept_cell[x] = true;
+      if (kept) out.kept_cell[x] = true;
     }
-  for (const InnerVoronoi::Segment& seg : vor.segments)
-    for (std::uint32_t x : seg.v) out.had_cell[x] = true;
-  for (const auto& e : pruned.bare_edges)
-    for (std::uint32_t x : e) out.kept_cell[x] = true;
+  }
+  for (std::uint32_t i = 0; i < vor.segments.size(); ++i) {
+    const bool kept = keep.edge({true, i, 0});
+    for (std::uint32_t x : vor.segments[i].v) {
+      out.had_cell[x] = true;
+      if (kept) out.kept_cell[x] = true;
+    }
+  }
   return out;
 }
 
@@ -307,8 +324,8 @@ class LostCore {
 //      half-thickness of the part it bounds: samples across a slab of half-thickness f are
 //      about 2 f apart, and the separation test keeps only pairs at least lambda h apart);
 //      then h_t = max(rho 2 f_t / lambda, h_t / 4), rho = feature_ratio; or
-//  (b) the pruning left no polygon or segment at that deepest pole x although V_in had
-//      some, and no kept vertex within R(x) of x is deeper (LostCore): the sheets through
+//  (b) the pruning's tests keep no polygon or segment at that deepest pole x although V_in
+//      has some, and no kept vertex within R(x) of x is deeper (LostCore): the sheets through
 //      the deepest point of the part were pruned. (a) misses this
 //      where the sheets are wedges, not slabs: the touching samples of a sheet of object
 //      angle alpha at depth R are 2 R sin(alpha / 2) apart (the octahedron's sheets: 1.15 R,
@@ -319,10 +336,10 @@ class LostCore {
 // far as the edge (lfs = 0 there), so the least would refine every sharp edge for ever. The
 // margin 1 / rho of (a) is also the hysteresis that stops the refinement once the estimates
 // of f settle. Returns how many triangles were too coarse.
-std::size_t refine_thin(const InnerVoronoi& vor, const PrunedComplex& pruned, const MeshAxisOptions& options,
+std::size_t refine_thin(const InnerVoronoi& vor, const KeepTests& keep, const MeshAxisOptions& options,
                         std::vector<double>* spacing) {
   if (!(options.separation > 0)) return 0;
-  const PoleSupport support = pole_support(vor, pruned);
+  const PoleSupport support = pole_support(vor, keep);
   LostCore lost_core(vor, support);
   const SurfaceSamples& s = vor.samples;
   std::vector<std::vector<std::uint32_t>> sample_triangles(s.lattice.size());
@@ -396,6 +413,11 @@ MeshAxis mesh_medial_axis(const TriangleMesh3& mesh, const MeshAxisOptions& opti
                                   std::to_string(options.max_samples));
     }
     r.sample_seconds = seconds_since(t);
+    // A thickness round that adds under 2% samples refines a handful of triangles (at
+    // the ends of sheets) for the cost of a whole round: the accepted axis stands.
+    if (accepted && out.rounds.back().betti == out.solid.betti &&
+        static_cast<double>(r.samples) < 1.02 * static_cast<double>(out.rounds.back().samples))
+      break;
     InnerVoronoi vor = inner_voronoi(std::move(samples), solid);
     r.tetrahedra = vor.tetrahedra;
     r.cells = vor.cells;
@@ -409,7 +431,8 @@ MeshAxis mesh_medial_axis(const TriangleMesh3& mesh, const MeshAxisOptions& opti
     t = cpu_seconds();
     const AngleTest angle(vor, options.angle_degrees);
     const SeparationTest separation(vor, spacing, options.separation);
-    const PrunedComplex pruned = prune(vor, angle, separation);
+    const KeepTests keep{vor, angle, separation};
+    const PrunedComplex pruned = prune(vor, keep);
     AxisCells cells = axis_cells(vor, pruned);
     r.kept_polygons = cells.polygons.size();
     r.kept_segments = cells.segments.size();
@@ -420,7 +443,7 @@ MeshAxis mesh_medial_axis(const TriangleMesh3& mesh, const MeshAxisOptions& opti
     const bool right = r.betti == out.solid.betti;
     if (right) {
       std::vector<double> next = spacing;
-      r.coarse_triangles = refine_thin(vor, pruned, options, &next);
+      r.coarse_triangles = refine_thin(vor, keep, options, &next);
       out.rounds.push_back(r);
       accepted = AcceptedAxis{out.rounds.size() - 1, std::move(vor), std::move(cells)};
       if (r.coarse_triangles == 0 || round >= options.max_refinements) break;
