@@ -27,8 +27,9 @@
 //     2 R sin(alpha / 2) apart (the octahedron's sheets: 1.15 R, not 2 R), also when the
 //     pruning left no polygon or segment at that deepest pole, to half its spacing (and
 //     the triangles of the samples bounding the polygons at that pole too).
-//     Steps 2-5 repeat until no triangle is too coarse, the next round would add under 2%
-//     samples, or max_refinements or max_samples is reached; the last round with the solid's Betti numbers is returned (axis_round;
+//     Steps 2-5 repeat until no triangle is too coarse, the next round would add under 5%
+//     samples, a round misses the solid's Betti numbers, or max_refinements or max_samples
+//     is reached; the last round with the solid's Betti numbers is returned (axis_round;
 //     later rounds are listed too). What is kept: a sheet survives where its touching
 //     samples are >= lambda h apart, so the points of depth R >= lambda h are found and a
 //     band along convex edges and corners (within about lambda h / sin(alpha / 2) of them)
