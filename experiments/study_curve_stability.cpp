@@ -3,9 +3,9 @@
 //
 // For each mesh, amplitude a (a fraction of the bounding diagonal D) and seed: the mesh
 // with every vertex moved along its normal by a D u, u uniform in [-1, 1]
-// (complex3/mesh_perturbation.h; Hausdorff distance <= a D), its medial axis from the inner
-// polar balls of its samples (complex3/builders/mesh_pole_axis.h, the subdivision given per
-// mesh), the discrete burning at h = D / 100, and the medial curves (burn3/medial_curves.h)
+// (complex3/mesh_perturbation.h; Hausdorff distance <= a D), its medial axis by the builder
+// `grassfire medial3d` uses for closed meshes (complex3/builders/mesh_axis.h, default
+// options: the solid's Betti numbers checked, thin parts refined), the discrete burning at h = D / 100, and the medial curves (burn3/medial_curves.h)
 // with two significance settings: all path ends ("raw", min_et_fraction 0) and those whose
 // ET reaches a tenth of the axis' largest ("significant", 0.1). Compared with the
 // unperturbed mesh's curves (same settings):
@@ -14,12 +14,12 @@
 //               extra = from the perturbed curves to the original (new branches, hair),
 //               missing = from the original to the perturbed (branches lost or moved);
 //   topology  = whether the curves' (b0, b1) equal the unperturbed ones (they always equal
-//               their own axis'; the pole axis itself may change topology under noise);
+//               their own axis', which has the solid's);
 //   length    = total curve length, against the unperturbed;
 //   axis_hausdorff = the same distance between the two medial axes (the vertices of their
 //               refinements, spacing about h): how far the axis itself moved, the control.
-// A perturbed mesh whose pole axis is refused (not embedded) gives a row with status
-// "axis failed"; nothing is dropped.
+// A perturbed mesh whose axis is refused (a self-intersecting mesh, or the Betti numbers not
+// reached) gives a row with status "axis failed"; nothing is dropped.
 // Output: OUT/curve_stability.csv (one row per run and setting),
 // OUT/curve_stability_summary.csv (per mesh, setting and amplitude: median and max ratio,
 // runs that kept the topology), OUT/curve_stability.svg (median ratio against a, log-log,
@@ -40,7 +40,7 @@
 #include "burn3/curve_distance.h"
 #include "burn3/discrete_burning_field.h"
 #include "burn3/medial_curves.h"
-#include "complex3/builders/mesh_pole_axis.h"
+#include "complex3/builders/mesh_axis.h"
 #include "complex3/mesh_perturbation.h"
 #include "io/mesh_io.h"
 #include "io/progress.h"
@@ -51,10 +51,6 @@ using namespace grassfire;
 
 namespace {
 
-struct MeshCase {
-  std::string name;
-  int subdivision;
-};
 
 struct Curves {
   bool ok = false;
@@ -64,10 +60,10 @@ struct Curves {
   BettiNumbers axis;
 };
 
-Curves analyse(const TriangleMesh3& mesh, int subdivision, double h) {
+Curves analyse(const TriangleMesh3& mesh, double h) {
   Curves c;
   try {
-    const MedialComplex mc(mesh_pole_axis(mesh, subdivision));
+    const MedialComplex mc(mesh_medial_axis(mesh).complex);
     mc.validate();
     const DiscreteBurning d = burn_discrete(mc, {h});
     const DiscreteBurningField field(mc, d);
@@ -116,10 +112,8 @@ int main(int argc, char** argv) {
       out = a;
   }
   std::filesystem::create_directories(out);
-  const std::vector<MeshCase> meshes = experiments::shard_of(
-      quick ? std::vector<MeshCase>{{"tripod", 1}, {"pipe", 1}}
-            : std::vector<MeshCase>{{"tripod", 2}, {"cross", 2}, {"pipe", 1}, {"joint", 1}},
-      shard);
+  const std::vector<std::string> meshes = experiments::shard_of(
+      quick ? std::vector<std::string>{"tripod", "pipe"} : std::vector<std::string>{"tripod", "cross", "pipe", "joint"}, shard);
   const std::vector<double> amplitudes = quick ? std::vector<double>{0.0025, 0.01, 0.04}
                                                : std::vector<double>{0.00125, 0.0025, 0.005, 0.01, 0.02, 0.04};
   const int seeds = quick ? 1 : 3;
@@ -132,26 +126,26 @@ int main(int argc, char** argv) {
   std::map<std::tuple<std::string, std::string, double>, std::vector<double>> ratios;
   std::map<std::tuple<std::string, std::string, double>, std::pair<int, int>> kept;
   std::map<std::tuple<std::string, std::string, double>, std::vector<double>> axis_ratios;
-  for (const MeshCase& m : meshes) {
-    const TriangleMesh3 mesh = read_triangle_mesh(dir + "/" + m.name + ".off");
+  for (const std::string& name : meshes) {
+    const TriangleMesh3 mesh = read_triangle_mesh(dir + "/" + name + ".off");
     const double diagonal = mesh_bounding_diagonal(mesh), h = diagonal / 100;
-    const Curves base = analyse(mesh, m.subdivision, h);
-    progress.item(m.name);
-    note(m.name + ": " + base.status + "; curves " + std::to_string(base.raw.nodes.size()) + " / " +
+    const Curves base = analyse(mesh, h);
+    progress.item(name);
+    note(name + ": " + base.status + "; curves " + std::to_string(base.raw.nodes.size()) + " / " +
          std::to_string(base.significant.nodes.size()) + " nodes, betti [" + std::to_string(base.raw.curve_betti.b0) +
          ", " + std::to_string(base.raw.curve_betti.b1) + "]");
     if (!base.ok) continue;
     for (double a : amplitudes)
       for (int seed = 1; seed <= seeds; ++seed) {
         const auto start = std::chrono::steady_clock::now();
-        const Curves run = analyse(perturb_mesh(mesh, a * diagonal, static_cast<std::uint64_t>(seed)), m.subdivision, h);
+        const Curves run = analyse(perturb_mesh(mesh, a * diagonal, static_cast<std::uint64_t>(seed)), h);
         const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         for (const char* setting : {"raw", "significant"}) {
           const bool raw = std::string(setting) == "raw";
           const MedialCurves& b0 = raw ? base.raw : base.significant;
           char line[512];
           if (!run.ok) {
-            std::snprintf(line, sizeof line, "%s,%s,%g,%.6g,%d,%s,,,,,,,%ld,%ld,,,,,,%.6g,,,%.3f", m.name.c_str(), setting, a,
+            std::snprintf(line, sizeof line, "%s,%s,%g,%.6g,%d,%s,,,,,,,%ld,%ld,,,,,,%.6g,,,%.3f", name.c_str(), setting, a,
                           a * diagonal, seed, run.status.c_str(), b0.curve_betti.b0, b0.curve_betti.b1, b0.total_length(),
                           seconds);
             rows.push_back(line);
@@ -163,13 +157,13 @@ int main(int argc, char** argv) {
           const bool same = c.curve_betti.b0 == b0.curve_betti.b0 && c.curve_betti.b1 == b0.curve_betti.b1;
           const double axis_d = curve_hausdorff(base.axis_points, run.axis_points, h);
           std::snprintf(line, sizeof line, "%s,%s,%g,%.6g,%d,ok,%.6g,%.4g,%.6g,%.6g,%ld,%ld,%ld,%ld,%d,%ld,%ld,%ld,%.6g,%.6g,%zu,%.6g,%.3f",
-                        m.name.c_str(), setting, a, a * diagonal, seed, d, ratio, extra, missing, c.curve_betti.b0, c.curve_betti.b1,
+                        name.c_str(), setting, a, a * diagonal, seed, d, ratio, extra, missing, c.curve_betti.b0, c.curve_betti.b1,
                         b0.curve_betti.b0, b0.curve_betti.b1, same ? 1 : 0, run.axis.b0, run.axis.b1, run.axis.b2,
                         c.total_length(), b0.total_length(), c.nodes.size(), axis_d, seconds);
           rows.push_back(line);
-          ratios[{m.name, setting, a}].push_back(ratio);
-          axis_ratios[{m.name, setting, a}].push_back(axis_d / (a * diagonal));
-          auto& k = kept[{m.name, setting, a}];
+          ratios[{name, setting, a}].push_back(ratio);
+          axis_ratios[{name, setting, a}].push_back(axis_d / (a * diagonal));
+          auto& k = kept[{name, setting, a}];
           k.first += same ? 1 : 0;
           ++k.second;
         }

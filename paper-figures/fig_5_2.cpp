@@ -1,6 +1,6 @@
 // fig_5_2.cpp -- Figure 5.2: burning paths and the medial curves they end on (5.1.2), on
 // the board and fin, on the exact medial axis of a box (.ma) and on the medial axis of a
-// mesh (the tripod, from its inner polar balls).
+// mesh (the tripod, its mesh axis as medial3d builds it).
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -110,7 +110,7 @@ std::vector<FigureFile> fig_5_2(const FigureContext& ctx) {
     draw_paths(r, every(paths_ending_on_curves(*s.field, s.curves), 9), kPath, 0.8, 0.012);
     draw_curves(r, s.curves, kCurve, 3.0);
     r.render(canvas, 1020, 40, 480, 500);
-    canvas.text({1260, 28}, "tripod mesh: medial axis of its inner polar balls", 15, "middle");
+    canvas.text({1260, 28}, "tripod mesh: its medial axis (medial3d)", 15, "middle");
   }
   canvas.save(ctx.out_dir + "/fig5_2.svg");
   std::snprintf(caption, sizeof caption,
@@ -120,7 +120,7 @@ std::vector<FigureFile> fig_5_2(const FigureContext& ctx) {
                 "board and fin the curve is the junction N beyond the kink k, where the back side's fire dies; before k "
                 "that fire passes through N into the front side (grey isochrones every 1; green: N). Middle: a box's "
                 "axis, curves of total length %.2f: the middle rectangle's medial axis and the eight segments to the "
-                "box corners. Right: the tripod's axis (coarse: 25 triangles), curves of length %.3f along the legs "
+                "box corners. Right: the tripod's mesh axis (mesh_axis.h), curves of length %.3f along the legs "
                 "(%zu walls opened to keep b1 = 0).",
                 box_length, tripod_length, tripod_walls);
   return {{"fig5_2.svg", caption}};

@@ -2,13 +2,13 @@
 // perturbed copy, each shown as its surface coloured by the burning time of the medial
 // ball that touches it, its medial axis coloured by BT, and its medial curves. The tripod
 // mesh (data/meshes) and a copy whose vertices moved along their normals by up to 1.5% of
-// its bounding diagonal; axes from the inner polar balls of the meshes' samples
-// (subdivision 2), the discrete baseline at 1/150 of the diagonal.
+// its bounding diagonal; the mesh axes of medial3d (mesh_axis.h, default options), the
+// discrete baseline at 1/150 of the diagonal.
 #include <cmath>
 
 #include "burn3/curve_distance.h"
 #include "caption_printf.h"
-#include "complex3/builders/mesh_pole_axis.h"
+#include "complex3/builders/mesh_axis.h"
 #include "complex3/mesh_perturbation.h"
 #include "fig_4_scene.h"
 #include "fig_5_scene.h"
@@ -31,7 +31,7 @@ std::vector<FigureFile> fig_5_5(const FigureContext& ctx) {
   const TriangleMesh3 original = read_triangle_mesh(ctx.data_dir + "/meshes/tripod.off");
   const double diagonal = mesh_bounding_diagonal(original), h = diagonal / 150;
   const TriangleMesh3 moved = perturb_mesh(original, kAmplitude * diagonal, 5);
-  const CurvesScene a(mesh_pole_axis(original, 2), h), b(mesh_pole_axis(moved, 2), h);
+  const CurvesScene a(mesh_medial_axis(original).complex, h), b(mesh_medial_axis(moved).complex, h);
   const double hi = std::max(max_finite_bt(a.mc, a.burning), max_finite_bt(b.mc, b.burning));
   const Camera cam = framing_camera(std::vector<Vec3d>(original.vertices.begin(), original.vertices.end()), 55, 35, 26);
   SvgCanvas canvas(1500, 960);
@@ -67,10 +67,10 @@ std::vector<FigureFile> fig_5_5(const FigureContext& ctx) {
   return {{"fig5_5.svg",
            caption_printf("Fig. 5.5 style (5.3): the tripod (top) and a copy whose vertices moved along their normals by "
                           "up to %.1f%% of its diagonal (bottom, %.4f): the surface coloured by BT of the medial ball "
-                          "touching each point (left), the medial axis of the inner polar balls coloured by BT (middle; "
+                          "touching each point (left), the mesh axis (medial3d) coloured by BT (middle; "
                           "hue 0..%.3f, shared), and the medial curves (right; b0 = %ld, b1 = %ld on both, as their axes). "
-                          "The pole axis of this blocky mesh is coarse and many of its singular edges are where fronts "
-                          "die, so the curves run along them; the two graphs are %.4f apart in Hausdorff distance "
+                          "Many of the axis' singular edges are where fronts die, so the curves run along them; "
+                          "the two graphs are %.4f apart in Hausdorff distance "
                           "(%.1f x the perturbation), %zu and %zu nodes.",
                           100 * kAmplitude, kAmplitude * diagonal, hi, a.curves.curve_betti.b0, a.curves.curve_betti.b1,
                           distance, distance / (kAmplitude * diagonal), a.curves.nodes.size(), b.curves.nodes.size())}};

@@ -1,11 +1,9 @@
-// The medial axis of a closed mesh through its inner polar balls, mesh solidity checks,
-// and the medial3d command (good and bad inputs).
+// Mesh solidity checks and the medial3d command (good and bad inputs).
 #include <catch2/catch.hpp>
 
 #include <fstream>
 
 #include "complex3/builders/mesh_checks.h"
-#include "complex3/builders/mesh_poles.h"
 #include "complex3/builders/simplicial_homology.h"
 #include "complex3/builders/union_of_balls_axis.h"
 #include "complex3/medial_complex.h"
@@ -35,7 +33,7 @@ TEST_CASE("meshes that do not bound a solid are rejected, naming the file and th
   const TriangleMesh3 cube = project_mesh("cube.off");
   TriangleMesh3 open = cube;
   open.triangles.pop_back();
-  CHECK_THROWS_WITH(inner_polar_balls(open), Catch::Contains("cube.off") && Catch::Contains("edge (") &&
+  CHECK_THROWS_WITH(require_closed_manifold(open), Catch::Contains("cube.off") && Catch::Contains("edge (") &&
                                                  Catch::Contains("not closed"));
   TriangleMesh3 flipped = cube;
   std::swap(flipped.triangles[3][0], flipped.triangles[3][1]);
@@ -51,46 +49,6 @@ TEST_CASE("meshes that do not bound a solid are rejected, naming the file and th
                     Catch::Contains("pinched.off") && Catch::Contains("vertex 0 at (0, 0, 0) is non-manifold"));
   CHECK_NOTHROW(require_closed_manifold(cube));
   CHECK(mesh_orientation(cube) == 1);
-}
-
-TEST_CASE("inner polar balls of the cube: one ball until the faces are sampled", "[builders3]") {
-  // The eight corners are cospherical: every Delaunay tetrahedron has the centre as its
-  // circumcentre, so there is one pole, the ball of radius sqrt 3 (it leaves the cube by
-  // sqrt 3 - 1). Sampling the faces brings the poles towards the faces.
-  const TriangleMesh3 cube = project_mesh("cube.off");
-  const MeshPoles coarse = inner_polar_balls(cube);
-  REQUIRE(coarse.balls.centers.size() == 1);
-  CHECK(coarse.balls.centers[0].x == 0);
-  CHECK(coarse.balls.squared_radii[0] == 3);
-  CHECK(coarse.protrusion == Approx(std::sqrt(3.0) - 1).epsilon(1e-12));
-  MeshPolesOptions o;
-  o.subdivision = 4;
-  const MeshPoles fine = inner_polar_balls(cube, o);
-  CHECK(fine.samples == 8 + 12 * 3 + 6 * 9);
-  CHECK(fine.balls.centers.size() > 1);
-  CHECK(fine.protrusion < coarse.protrusion);
-  const UnionOfBallsAxis a = union_of_balls_axis(fine.balls);
-  CHECK(a.union_betti == BettiNumbers{1, 0, 0});
-  CHECK(betti_numbers(a.complex) == a.union_betti);
-  MedialComplex(a.complex).validate();
-}
-
-TEST_CASE("tripod mesh: polar balls inside, axis with the union's topology", "[builders3]") {
-  const TriangleMesh3 tripod = project_mesh("tripod.off");
-  for (int s : {1, 2}) {
-    MeshPolesOptions o;
-    o.subdivision = s;
-    const MeshPoles p = inner_polar_balls(tripod, o);
-    CAPTURE(s);
-    CHECK(p.balls.centers.size() > 4);
-    CHECK(p.samples_without_pole == 0);
-    const UnionOfBallsAxis a = union_of_balls_axis(p.balls);
-    CHECK(a.union_betti == BettiNumbers{1, 0, 0});
-    CHECK(betti_numbers(a.complex) == a.union_betti);
-    MedialComplex mc(a.complex);
-    mc.validate();
-    CHECK(mc.triangle_count() > 0);
-  }
 }
 
 TEST_CASE("medial3d: outputs for good input, errors and no output for bad input", "[builders3]") {

@@ -127,6 +127,7 @@ class Extractor {
   void estimate_feature_size() {
     const std::size_t n = out_->samples.lattice.size();
     std::vector<double> inner(n, 0), outer(n, 0);
+    out_->inner_pole.assign(n, UINT32_MAX);
     for (auto c = dt_.all_cells_begin(); c != dt_.all_cells_end(); ++c) {
       const bool finite = c->info() != kNone;
       const bool inside = finite && vertex_of(c) != kNone;
@@ -139,7 +140,9 @@ class Extractor {
       }
       for (int k = 0; k < 4; ++k) {
         if (dt_.is_infinite(c->vertex(k))) continue;
-        double& pole = (inside ? inner : outer)[c->vertex(k)->info()];
+        const std::uint32_t i = c->vertex(k)->info();
+        double& pole = (inside ? inner : outer)[i];
+        if (inside && r2 > pole) out_->inner_pole[i] = vertex_of(c);
         pole = std::max(pole, r2);
       }
     }

@@ -79,6 +79,9 @@ struct InnerVoronoi {
   // vertices of its cell; 0 when the cell has none): the local half-thickness of the solid
   // at the sample, which the separation test of the pruning must resolve (mesh_axis.h).
   std::vector<double> inner_pole_distance;
+  // Per sample, the vertex (index into `vertices`) at that distance: its inner pole
+  // (UINT32_MAX when the cell has no inner vertex).
+  std::vector<std::uint32_t> inner_pole;
   // Structure and cost.
   std::size_t tetrahedra = 0, cells = 0, cells_on_boundary = 0, cospherical_pairs = 0;
   std::size_t interior_samples = 0;  // Voronoi cells wholly inside, collapsed through one face

@@ -19,13 +19,22 @@
 //  6. the thickness rule: the separation test (|p - q| >= lambda h) removes every face of a
 //     part thinner than about lambda h / 2, so a coarse sampling of a thin part (a tripod's
 //     arm, a cross's bar) prunes the part away and leaves the right Betti numbers on a
-//     useless axis (a point). So once the Betti numbers are right, every triangle whose
-//     spacing exceeds 2 f / lambda, f the largest inner pole distance of its samples (the
-//     half-thickness of the part it bounds), gets spacing 2 rho f / lambda, rho =
-//     feature_ratio (at most 4 times finer per round)
-//     and steps 2-5 repeat, until no triangle is too coarse or max_refinements or
-//     max_samples is reached; the last round with the solid's Betti numbers is returned
-//     (axis_round; later rounds are listed too).
+//     useless axis (a point). So once the Betti numbers are right, a triangle is refined
+//     when its spacing exceeds 2 f / lambda, f the largest inner pole distance of its
+//     samples (the half-thickness of the part it bounds), to spacing 2 rho f / lambda,
+//     rho = feature_ratio (at most 4 times finer per round); and, since the samples
+//     touching a wedge-shaped sheet of object angle alpha at depth R are only
+//     2 R sin(alpha / 2) apart (the octahedron's sheets: 1.15 R, not 2 R), also when the
+//     pruning left no polygon or segment at that deepest pole, to half its spacing (and
+//     the triangles of the samples bounding the polygons at that pole too).
+//     Steps 2-5 repeat until no triangle is too coarse, the next round would add under 5%
+//     samples, a round misses the solid's Betti numbers, or max_refinements or max_samples
+//     is reached; the last round with the solid's Betti numbers is returned (axis_round;
+//     later rounds are listed too). What is kept: a sheet survives where its touching
+//     samples are >= lambda h apart, so the points of depth R >= lambda h are found and a
+//     band along convex edges and corners (within about lambda h / sin(alpha / 2) of them)
+//     is missing; tests/test_builders3_mesh_axis_convex.cpp checks this against the exact
+//     convex axis (Hausdorff <= 2 lambda h on the cube, octahedron and random hulls).
 // Output: a RawComplex with exact rational vertices (the circumcentres, from the double
 // samples; distinct because equal circumcentres are one Delaunay cell), exact R^2 (the
 // squared circumradius), the Voronoi faces fanned into triangles (they are convex, and
@@ -33,7 +42,7 @@
 // segments, and on every border edge the ignition R(x) = |x - p| (p a sample of the face).
 // The complex is embedded: it is a subcomplex of the Voronoi diagram, triangulated inside
 // its convex faces; nothing is rounded.
-// Approximation (what is known): for an epsilon-sample of a smooth surface, the Voronoi
+// Approximation (what is known; step 6 for what the pruning removes): for an epsilon-sample of a smooth surface, the Voronoi
 // faces passing the angle test lie within O(epsilon) lfs of the medial axis and converge to
 // it in Hausdorff distance as epsilon -> 0 (Dey-Zhao 2004, for theta fixed); every vertex x
 // is the centre of an empty ball of radius R(x) through four samples. Mesh edges have lfs
@@ -65,12 +74,13 @@ struct MeshAxisOptions {
   double angle_degrees = 0;      // theta of the pruning (0: no angle test)
   double separation = 2;         // lambda: pq must be >= lambda local spacings apart; 0: no test
   double feature_ratio = 0.5;    // refinement: spacing <= ratio * (pole distance) where refined;
-                                 // thickness rule: spacing <= ratio * 2 (inner pole distance) / lambda
+                                 // thickness rule: spacing <= ratio * 2 (inner pole distance) / lambda,
+                                 // halved where the deepest pole lost its sheets
   std::size_t max_samples = 2000000;
 };
 
 struct MeshAxisRound {
-  double spacing = 0;
+  double spacing = 0, max_spacing = 0;  // the finest and the coarsest triangle's
   std::size_t samples = 0, tetrahedra = 0, cells = 0, inner_cells = 0;
   std::size_t interior_samples = 0;  // samples whose Voronoi cell is inside (inner_voronoi.h)
   std::size_t polygons = 0, segments = 0, kept_polygons = 0, kept_segments = 0;
