@@ -56,6 +56,21 @@ ExactSum rat(long n, long d = 1) { return ExactSum::rational(make_rational(n, d)
 // nearest-double rounding of their decimals (< 1.2e-16 for coordinates in [-1, 1]), within
 // 1e-12 plus the enclosures, which a different node would exceed by far; and the same edge
 // set, with the same edge kinds.
+// Radii without certified constants (rationals and sums of square roots, whose identity
+// does not depend on the frame) of nodes at the same position are equal exactly: CHECKs
+// that, returns how many nodes it compared.
+int equal_exact_radii(const MedialGraph& a, const MedialGraph& b) {
+  int exact = 0;
+  for (std::uint32_t v = 0; v < a.node_count(); ++v) {
+    const Point2 p = a.node(v).position;
+    const ExactSum ra = a.geometry().exact_radius(v), rb = b.geometry().exact_radius(node_at(b, p.x, p.y));
+    if (!ra.constant_terms().empty() || !rb.constant_terms().empty()) continue;
+    CHECK(equals(ra, rb));
+    ++exact;
+  }
+  return exact;
+}
+
 void require_same_axis(const MedialGraph& a, const MedialGraph& b, bool exact_radii) {
   REQUIRE(a.node_count() == b.node_count());
   REQUIRE(a.edge_count() == b.edge_count());
@@ -348,24 +363,41 @@ TEST_CASE("seeded random star polygons on a binary grid: Boost on exact integers
     CHECK(rb.binary_digits >= 17);
     CHECK(rc.construction == AxisConstruction::CgalSdg);
     require_same_axis(gb, gc, false);
-    // Radii without certified constants (rationals and sums of square roots, whose
-    // identity does not depend on the frame) are equal exactly.
-    int exact = 0;
-    for (std::uint32_t v = 0; v < gb.node_count(); ++v) {
-      const Point2 p = gb.node(v).position;
-      const ExactSum a = gb.geometry().exact_radius(v), b = gc.geometry().exact_radius(node_at(gc, p.x, p.y));
-      if (!a.constant_terms().empty() || !b.constant_terms().empty()) continue;
-      CHECK(equals(a, b));
-      ++exact;
-    }
-    CHECK(exact >= n);  // at least the n apexes (R = 0) and the rational or sqrt circles
+    CHECK(equal_exact_radii(gb, gc) >= n);  // at least the n apexes (R = 0) and the rational or sqrt circles
     require_valid_and_burns_like_oracle(gb);
   }
 }
 
-TEST_CASE("rotated polygons with full-mantissa coordinates (CGAL path) = the decimal axis rotated", "[exact2d]") {
+TEST_CASE("seeded star polygons with full-mantissa doubles: wide Boost axis equals CGAL's", "[exact2d]") {
+  // Coordinates 3 + r cos t as computed (53 significant bits, no decimal or int32 binary
+  // frame; 2^K x them spans under 62 bits): the wide binary policy runs Boost's builder on
+  // 64-bit integers; CGAL's SDG runs on the same doubles.
+  std::mt19937 rng(20261204);
+  std::uniform_real_distribution<double> radius(0.3, 1.0);
+  for (int trial = 0; trial < 8; ++trial) {
+    const int n = 5 + trial * 4;
+    std::vector<Point2> ring;
+    for (int k = 0; k < n; ++k) {
+      const double t = 2 * M_PI * k / n, r = radius(rng);
+      ring.push_back({3 + r * std::cos(t), 3 + r * std::sin(t)});
+    }
+    const Shape2 s = polygon({ring});
+    PolygonAxisOptions cgal_opt;
+    cgal_opt.construction = AxisConstruction::CgalSdg;
+    PolygonAxisReport rb, rc;
+    const MedialGraph gb = exact_polygon_axis(s, {}, &rb), gc = exact_polygon_axis(s, cgal_opt, &rc);
+    INFO("trial " << trial);
+    CHECK(rb.construction == AxisConstruction::BoostPolygonWide);
+    CHECK(rc.construction == AxisConstruction::CgalSdg);
+    require_same_axis(gb, gc, false);
+    CHECK(equal_exact_radii(gb, gc) >= n);
+    require_valid_and_burns_like_oracle(gb);
+  }
+}
+
+TEST_CASE("rotated polygons with full-mantissa coordinates (wide Boost or CGAL) = the decimal axis rotated", "[exact2d]") {
   // A rigid motion by an angle whose sine and cosine have full 53-bit mantissas: no decimal
-  // or int32 binary frame exists, CGAL's SDG runs on the doubles. Every node of the decimal
+  // or int32 binary frame exists. Every node of the decimal
   // polygon's axis, rotated, is a node of the rotated polygon's axis with the same radius
   // (to the rounding of the rotated coordinates, ~1e-16), and the edge kinds agree.
   std::mt19937 rng(7);
@@ -384,7 +416,8 @@ TEST_CASE("rotated polygons with full-mantissa coordinates (CGAL path) = the dec
     PolygonAxisReport rep;
     const MedialGraph g = exact_polygon_axis(s), gr = exact_polygon_axis(sr, {}, &rep);
     INFO("trial " << trial);
-    CHECK(rep.construction == AxisConstruction::CgalSdg);
+    // The wide binary frame when the rotated coordinates span at most 62 bits, else CGAL.
+    CHECK(rep.construction != AxisConstruction::BoostPolygon);
     REQUIRE(g.node_count() == gr.node_count());
     REQUIRE(g.edge_count() == gr.edge_count());
     std::vector<std::uint32_t> to_r(g.node_count());

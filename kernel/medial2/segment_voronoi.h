@@ -66,6 +66,11 @@ struct VoronoiTopology {
 
 // Boost.Polygon construct_voronoi; every frame coordinate must be an integer in int32.
 VoronoiTopology boost_segment_voronoi(const PolygonSites& sites);
+// Boost.Polygon's voronoi builder with the wide coordinate traits (boost_wide_traits.h):
+// every frame coordinate an integer, each within 2^62 of the centre of the frame's bounding
+// box (fits_wide_boost); throws std::invalid_argument otherwise.
+bool fits_wide_boost(const PolygonSites& sites);
+VoronoiTopology boost_segment_voronoi_wide(const PolygonSites& sites);
 // CGAL Segment_Delaunay_graph_2 (filtered exact traits, no intersecting segments).
 VoronoiTopology cgal_segment_voronoi(const PolygonSites& sites);
 

@@ -1,0 +1,97 @@
+// boost_wide_traits.h -- coordinate type traits that run Boost.Polygon's Voronoi builder on
+// integer coordinates of up to 62 bits (the wide binary policy of polygon_axis.h; 2.1.1,
+// DESIGN.md 3). Included by segment_voronoi_boost.cpp only.
+//
+// Boost's predicates are built on three assumptions about the traits (its "Voronoi
+// Predicates" and "advanced tutorial" pages): (a) input coordinates convert to fpt_type
+// exactly; (b) orientation tests and the integer parts of circle events are exact integer
+// arithmetic (int_x2_type, uint_x2_type, big_int_type wide enough never to overflow);
+// (c) fpt_type / efpt_type are IEEE-like with correctly rounded +, -, *, /, sqrt, so that
+// the relative-error bookkeeping of robust_fpt (in ulps) holds, and ulp_cmp_type counts
+// ulps of that type. The default int32 traits meet them with double (53 bits: 21 guard
+// bits beyond the input's 32). These traits meet them for |coordinate| < 2^62 with
+// __float128 (113-bit significand: 51 guard bits beyond the input's 62, more than the
+// default's 21), 96/160-bit integers for differences and cross products, and 4096-bit
+// integers for the exact parts of circle events (the int32 default uses 2048 bits for
+// 32-bit input; every product Boost forms is at most 16 input-width factors deep).
+// Conversions from big integers round once (top 128 bits exact, then one IEEE rounding).
+// Complexity: each predicate is O(1) like the default's, with software quadruple
+// precision (measured: experiments/bench_polygon_axis.cpp, "offset" rows).
+#pragma once
+
+#include <boost/polygon/voronoi_builder.hpp>
+#include <quadmath.h>
+
+#include <cstdint>
+#include <cstring>
+
+namespace grassfire::boost_wide {
+
+using fpt128 = __float128;
+
+// Inputs must satisfy |x| <= kMaxMagnitude (62 bits).
+constexpr std::int64_t kMaxMagnitude = (std::int64_t(1) << 62) - 1;
+
+// 2^e as a __float128, exactly (|e| within the normal exponent range).
+inline fpt128 pow2(int e) {
+  unsigned __int128 bits = static_cast<unsigned __int128>(e + 16383) << 112;
+  fpt128 r;
+  std::memcpy(&r, &bits, sizeof r);
+  return r;
+}
+
+// Ulp distance of __float128 values, as Boost's ulp_comparison<double> does for double:
+// the bit patterns mapped to a monotone unsigned scale.
+struct UlpComparison {
+  enum Result { LESS = -1, EQUAL = 0, MORE = 1 };
+  Result operator()(fpt128 a, fpt128 b, unsigned int max_ulps) const {
+    const unsigned __int128 sign = static_cast<unsigned __int128>(1) << 127;
+    unsigned __int128 ia, ib;
+    std::memcpy(&ia, &a, sizeof a);
+    std::memcpy(&ib, &b, sizeof b);
+    ia = ia < sign ? sign + ia : sign - (ia - sign);  // -0 and +0 both map to `sign`
+    ib = ib < sign ? sign + ib : sign - (ib - sign);
+    if (ia > ib) return ia - ib <= max_ulps ? EQUAL : MORE;
+    return ib - ia <= max_ulps ? EQUAL : LESS;
+  }
+};
+
+// Integers and extended integers to __float128: exact below 2^113, else one rounding.
+struct ToFpt {
+  template <typename T>
+  fpt128 operator()(const T& that) const {
+    return static_cast<fpt128>(that);
+  }
+  template <std::size_t N>
+  fpt128 operator()(const boost::polygon::detail::extended_int<N>& that) const {
+    const std::size_t size = that.size();
+    if (size == 0) return 0;
+    const std::size_t top = size < 4 ? size : 4;
+    unsigned __int128 m = 0;
+    for (std::size_t i = 0; i < top; ++i) m = (m << 32) | that.chunks()[size - 1 - i];
+    fpt128 r = static_cast<fpt128>(m) * pow2(static_cast<int>(32 * (size - top)));
+    return that.count() < 0 ? -r : r;
+  }
+};
+
+struct CtypeTraits {
+  using int_type = std::int64_t;
+  using int_x2_type = boost::polygon::detail::extended_int<3>;
+  using uint_x2_type = boost::polygon::detail::extended_int<5>;
+  using big_int_type = boost::polygon::detail::extended_int<128>;
+  using fpt_type = fpt128;
+  using efpt_type = fpt128;
+  using ulp_cmp_type = UlpComparison;
+  using to_fpt_converter_type = ToFpt;
+  using to_efpt_converter_type = ToFpt;
+};
+
+}  // namespace grassfire::boost_wide
+
+namespace boost::polygon::detail {
+// Boost's generic get_sqrt calls std::sqrt, which has no __float128 overload.
+template <>
+inline grassfire::boost_wide::fpt128 get_sqrt<grassfire::boost_wide::fpt128>(const grassfire::boost_wide::fpt128& x) {
+  return sqrtq(x);
+}
+}  // namespace boost::polygon::detail
