@@ -112,7 +112,11 @@ TEST_CASE("wide Boost = CGAL SDG on 60 seeded star polygons with full-mantissa d
 }
 
 TEST_CASE("wide Boost = CGAL SDG on dense wavy curves with full-mantissa doubles", "[exact2d]") {
-  for (const auto& [n, phase] : {std::pair<int, double>{500, 0.3}, {1500, 0.0}, {3000, 0.3}}) {
+  // Generic phases: no four sites cocircular. (Phase 0 is mirror-symmetric up to rounding
+  // and has exactly cocircular sites, where the two constructions may split a degree-4
+  // vertex along different diagonals: compared after contraction, on the axis, in
+  // test_exact2d_polygon.cpp.)
+  for (const auto& [n, phase] : {std::pair<int, double>{500, 0.3}, {1500, 1.1}, {3000, 0.3}}) {
     CAPTURE(n, phase);
     require_same_topology(wavy(n, 3e6, -2.5e6, 1e6, phase));
   }

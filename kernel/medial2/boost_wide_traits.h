@@ -11,14 +11,20 @@
 // ulps of that type. The default int32 traits meet them with double (53 bits: 21 guard
 // bits beyond the input's 32). These traits meet them for |coordinate| < 2^62 with
 // __float128 (113-bit significand: 51 guard bits beyond the input's 62, more than the
-// default's 21), 96/160-bit integers for differences and cross products, and 4096-bit
-// integers for the exact parts of circle events (the int32 default uses 2048 bits for
-// 32-bit input; every product Boost forms is at most 16 input-width factors deep).
+// default's 21), 128-bit native integers for int_x2_type and uint_x2_type (Boost forms
+// products of two coordinates there, x0 y1 - y0 x1 for segment sites: below 2^125, and
+// cross products of coordinate differences: below 2^127 unsigned), and 4096-bit
+// fixed-width multiprecision integers for the exact parts of circle events (the int32
+// default uses 2048 bits for 32-bit input). Boost's own extended_int is not used: its
+// subtraction leaves a leading zero chunk when |a| >> 32 chunks and |b| have one chunk less
+// and a - b is small, and later comparisons and conversions read such a value wrong (our
+// test against CGAL failed on 48- to 62-bit frames with it, and with its 96-bit int_x2).
 // Conversions from big integers round once (top 128 bits exact, then one IEEE rounding).
 // Complexity: each predicate is O(1) like the default's, with software quadruple
 // precision (measured: experiments/bench_polygon_axis.cpp, "offset" rows).
 #pragma once
 
+#include <boost/multiprecision/cpp_int.hpp>
 #include <boost/polygon/voronoi_builder.hpp>
 #include <quadmath.h>
 
@@ -56,29 +62,34 @@ struct UlpComparison {
   }
 };
 
-// Integers and extended integers to __float128: exact below 2^113, else one rounding.
+// Exact integers for the circle events: 4096-bit fixed-width (stack) integers.
+using BigInt = boost::multiprecision::number<
+    boost::multiprecision::cpp_int_backend<4096, 4096, boost::multiprecision::signed_magnitude,
+                                           boost::multiprecision::unchecked, void>,
+    boost::multiprecision::et_off>;
+
+// Integers to __float128: exact below 2^113, else one rounding of the top 127 bits.
 struct ToFpt {
   template <typename T>
   fpt128 operator()(const T& that) const {
     return static_cast<fpt128>(that);
   }
-  template <std::size_t N>
-  fpt128 operator()(const boost::polygon::detail::extended_int<N>& that) const {
-    const std::size_t size = that.size();
-    if (size == 0) return 0;
-    const std::size_t top = size < 4 ? size : 4;
-    unsigned __int128 m = 0;
-    for (std::size_t i = 0; i < top; ++i) m = (m << 32) | that.chunks()[size - 1 - i];
-    fpt128 r = static_cast<fpt128>(m) * pow2(static_cast<int>(32 * (size - top)));
-    return that.count() < 0 ? -r : r;
+  fpt128 operator()(const BigInt& that) const {
+    if (that.is_zero()) return 0;
+    const BigInt a = abs(that);
+    const unsigned msb = boost::multiprecision::msb(a);
+    const unsigned shift = msb > 126 ? msb - 126 : 0;
+    const auto top = static_cast<unsigned __int128>(a >> shift);
+    const fpt128 r = static_cast<fpt128>(top) * pow2(static_cast<int>(shift));
+    return that.sign() < 0 ? -r : r;
   }
 };
 
 struct CtypeTraits {
   using int_type = std::int64_t;
-  using int_x2_type = boost::polygon::detail::extended_int<3>;
-  using uint_x2_type = boost::polygon::detail::extended_int<5>;
-  using big_int_type = boost::polygon::detail::extended_int<128>;
+  using int_x2_type = __int128;
+  using uint_x2_type = unsigned __int128;
+  using big_int_type = BigInt;
   using fpt_type = fpt128;
   using efpt_type = fpt128;
   using ulp_cmp_type = UlpComparison;
