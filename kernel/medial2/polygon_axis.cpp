@@ -116,6 +116,20 @@ Frame choose_frame(const Shape2& shape, const PolygonAxisOptions& options) {
 }
 
 
+// The frame's Voronoi topology by its construction; the wide traits' overflow of their
+// 4096-bit exact integers (never observed) falls back to CGAL on the same frame.
+VoronoiTopology voronoi_of(Frame& frame) {
+  if (frame.construction == AxisConstruction::BoostPolygon) return boost_segment_voronoi(frame.sites);
+  if (frame.construction == AxisConstruction::BoostPolygonWide) {
+    try {
+      return boost_segment_voronoi_wide(frame.sites);
+    } catch (const std::overflow_error&) {
+      frame.construction = AxisConstruction::CgalSdg;
+    }
+  }
+  return cgal_segment_voronoi(frame.sites);
+}
+
 class Builder {
  public:
   Builder(const Frame& frame, VoronoiTopology topo, PolygonAxisReport& report)
@@ -374,15 +388,13 @@ MedialGraph exact_polygon_axis(const Shape2& shape, const PolygonAxisOptions& op
   if (shape.rings.empty()) throw std::invalid_argument(shape.name + ": the shape has no ring");
   for (const Ring& r : shape.rings)
     if (r.points.size() < 3) throw std::invalid_argument(shape.name + ": a ring has fewer than 3 vertices");
-  const Frame frame = choose_frame(shape, options);
+  Frame frame = choose_frame(shape, options);
+  VoronoiTopology topo = voronoi_of(frame);
   rep.construction = frame.construction;
   rep.decimal_digits = frame.digits;
   rep.binary_digits = frame.binary_digits;
   rep.frame_scale = 1 / frame.to_input.get_d();
   rep.polygon_vertices = frame.sites.vertex_count();
-  VoronoiTopology topo = frame.construction == AxisConstruction::BoostPolygon       ? boost_segment_voronoi(frame.sites)
-                         : frame.construction == AxisConstruction::BoostPolygonWide ? boost_segment_voronoi_wide(frame.sites)
-                                                                                    : cgal_segment_voronoi(frame.sites);
   rep.voronoi_vertices = topo.vertices.size();
   rep.voronoi_seconds = seconds_since(t0);
   const double t1 = thread_seconds();

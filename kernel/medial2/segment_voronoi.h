@@ -68,7 +68,8 @@ struct VoronoiTopology {
 VoronoiTopology boost_segment_voronoi(const PolygonSites& sites);
 // Boost.Polygon's voronoi builder with the wide coordinate traits (boost_wide_traits.h):
 // every frame coordinate an integer, each within 2^62 of the centre of the frame's bounding
-// box (fits_wide_boost); throws std::invalid_argument otherwise.
+// box (fits_wide_boost); throws std::invalid_argument otherwise, std::overflow_error if an
+// exact intermediate exceeds 4096 bits (boost_wide_traits.h).
 bool fits_wide_boost(const PolygonSites& sites);
 VoronoiTopology boost_segment_voronoi_wide(const PolygonSites& sites);
 // CGAL Segment_Delaunay_graph_2 (filtered exact traits, no intersecting segments).
