@@ -61,8 +61,13 @@ class ExactBurning {
   // BT at the point (1 - s) v0 + s v1 of a segment (dangling edge), 0 <= s <= 1: fire runs
   // along it from its burned ends (the 2D rule, 3.3.1).
   Interval segment_burn_time(std::uint32_t e, const mpq_class& s);
+  // BT at a point inside edge e (exact, on the edge): the minimum over its triangles'
+  // closures on a manifold or border edge; on a singular edge with k sides the (k-1)-th
+  // smallest of them (the junction rule: each side's value is its own arrival or the
+  // curve's emission, whichever is earlier).
+  Interval edge_burn_time(std::uint32_t e, const ExactPoint3& x);
   // BT at a located point (vertex, edge, triangle; any edge stratum): the minimum over the
-  // closed cells that contain it.
+  // closed cells that contain it (edge_burn_time inside edges).
   Interval burn_time(const ComplexPoint& x);
   std::vector<Interval> vertex_burn_times();
 
