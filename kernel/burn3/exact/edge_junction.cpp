@@ -37,8 +37,6 @@
 // (B = O(R^2) crossings at worst; R is small: the windows of one triangle per side).
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
-#include <cstdlib>
 
 #include "burn3/exact/junction_kinks.h"
 #include "burn3/exact/window_propagation.h"
@@ -138,26 +136,47 @@ std::vector<WindowPropagation::Break> WindowPropagation::junction_breaks(std::ui
 // elementary interval), or kNoIndex when fewer than k - 1 sides have arrived there.
 std::uint32_t WindowPropagation::realising_record(std::uint32_t edge, const std::vector<std::uint32_t>& recs,
                                                   double at) {
-  const ExactPoint3 p = edge_point3(edge, at);
-  const Target x{kNoIndex, &p};
-  const auto& sides = mc_.edge_triangles(edge);
-  std::vector<std::uint32_t> best(sides.size(), kNoIndex);  // per side: its earliest record
-  auto earlier = [&](std::uint32_t r, std::uint32_t q) {   // r before q (ties: older first)
-    const int c = cert_.compare_times(records_[r].window, x, records_[q].window, x);
-    return c == -1 || ((c == 0 || c == kUndecided) && r < q);
+  // The double filter first (enclosures of each record's time there); the staged
+  // comparison at the exact rational point only where those overlap.
+  std::optional<ExactPoint3> p;
+  std::vector<Interval> value(recs.size());
+  for (std::size_t i = 0; i < recs.size(); ++i) value[i] = record_time(edge, recs[i], at);
+  auto earlier = [&](std::size_t ri, std::size_t qi) {  // record ri before qi (ties: older first)
+    int c = certified_sign(value[ri] - value[qi]);
+    if (c == kUndecided) {
+      if (!p) p = edge_point3(edge, at);
+      const Target x{kNoIndex, &*p};
+      c = cert_.compare_times(records_[recs[ri]].window, x, records_[recs[qi]].window, x);
+    } else {
+      ++cert_.counts.filter;
+    }
+    return c == -1 || ((c == 0 || c == kUndecided) && recs[ri] < recs[qi]);
   };
-  for (std::uint32_t r : recs) {
+  const auto& sides = mc_.edge_triangles(edge);
+  std::vector<std::size_t> best(sides.size(), kNoIndex);  // per side: its earliest record
+  for (std::size_t ri = 0; ri < recs.size(); ++ri) {
+    const std::uint32_t r = recs[ri];
     const JunctionRecord& rec = records_[r];
     if (!(std::min(rec.at[0], rec.at[1]) < at && at < std::max(rec.at[0], rec.at[1]))) continue;
     const std::size_t i = std::find(sides.begin(), sides.end(), rec.side) - sides.begin();
-    if (best[i] == kNoIndex || earlier(r, best[i])) best[i] = r;
+    if (best[i] == kNoIndex || earlier(ri, best[i])) best[i] = ri;
   }
-  std::vector<std::uint32_t> arrived;
-  for (std::uint32_t r : best)
-    if (r != kNoIndex) arrived.push_back(r);
+  std::vector<std::size_t> arrived;
+  for (std::size_t ri : best)
+    if (ri != kNoIndex) arrived.push_back(ri);
   if (arrived.size() + 1 < sides.size()) return kNoIndex;
   std::sort(arrived.begin(), arrived.end(), earlier);
-  return arrived[sides.size() - 2];
+  return recs[arrived[sides.size() - 2]];
+}
+
+// A record's time at the point of parameter `at` of the edge, as a double enclosure.
+Interval WindowPropagation::record_time(std::uint32_t edge, std::uint32_t r, double at) const {
+  const Window& W = s_.windows[records_[r].window];
+  const auto& ev = mc_.edge(edge).v;
+  const DiscPoint A = u_.vertex_image(W.triangle, ev[0]), B = u_.vertex_image(W.triangle, ev[1]);
+  const Interval l(at);
+  const Approx t = approx_time(W, DiscPoint::from_intervals(A.ix() + l * (B.ix() - A.ix()), A.iy() + l * (B.iy() - A.iy())));
+  return {round_down(t.v - t.e), round_up(t.v + t.e)};
 }
 
 std::vector<WindowPropagation::Piece> WindowPropagation::junction_pieces(std::uint32_t edge) {
@@ -180,30 +199,19 @@ std::vector<WindowPropagation::Piece> WindowPropagation::junction_pieces(std::ui
 
 // The upper end of a piece's times: at one of its ends (a window's time along a line is
 // convex: a distance, or linear for a plane wave).
-double WindowPropagation::piece_time_hi(std::uint32_t edge, const Piece& p) {
-  const Window& W = s_.windows[records_[p.record].window];
-  const auto& ev = mc_.edge(edge).v;
-  const DiscPoint A = u_.vertex_image(W.triangle, ev[0]), B = u_.vertex_image(W.triangle, ev[1]);
-  double hi = 0.0;
-  for (const double at : {p.lo.at, p.hi.at}) {
-    const Interval l(at);
-    const DiscPoint x = DiscPoint::from_intervals(A.ix() + l * (B.ix() - A.ix()), A.iy() + l * (B.iy() - A.iy()));
-    const Approx t = approx_time(W, x);
-    hi = std::max(hi, round_up(t.v + t.e));
-  }
-  return hi;
+double WindowPropagation::piece_time_hi(std::uint32_t edge, const Piece& p) const {
+  return std::max(record_time(edge, p.record, p.lo.at).hi, record_time(edge, p.record, p.hi.at).hi);
 }
 
 void WindowPropagation::process_junction(std::uint32_t edge, double key) {
   JunctionState& st = junctions_[junction_of_[edge]];
   st.pending = kInf;
   ++stats_.junction_passes;
-  const std::vector<Piece> pieces = junction_pieces(edge);
-  if (getenv("JDEBUG")) for (std::uint32_t r : st.records) fprintf(stderr, "  rec %u side %u win %u origin %d dead %d at [%g %g] on_edge %d\n", r, records_[r].side, records_[r].window, (int)s_.pseudo[s_.windows[records_[r].window].pseudo].origin, (int)s_.windows[records_[r].window].dead(), records_[r].at[0], records_[r].at[1], (int)records_[r].on_edge);
+  if (st.dirty) st.pieces = junction_pieces(edge), st.dirty = false;
+  const std::vector<Piece> pieces = st.pieces;
   double next = kInf;
   for (std::size_t i = 0; i < pieces.size(); ++i) {
     const Piece& p = pieces[i];
-    if (getenv("JDEBUG")) fprintf(stderr, "edge %u key %g piece %zu rec %u [%g,%g] on_edge %d side %u\n", edge, key, i, p.record, p.lo.at, p.hi.at, p.record==kNoIndex?-1:(int)records_[p.record].on_edge, p.record==kNoIndex?0:records_[p.record].side);
     if (p.record == kNoIndex) continue;
     const double hi = piece_time_hi(edge, p);
     if (hi > key) {  // not final yet: arrivals below its times may still come
@@ -342,7 +350,6 @@ void WindowPropagation::edge_point_source(std::uint32_t edge, const Break& b, st
   s_.pseudo[p].root_count = static_cast<std::uint32_t>(s_.windows.size()) - ps.first_root;
   ++stats_.pseudo_sources;
   ++(kind == SweepEvent::Kind::Kink ? stats_.kinks : stats_.stretch_ends);
-  if (getenv("JDEBUG")) fprintf(stderr, "SOURCE kind %d edge %u at %g id %llx rec %u time [%g %g]\n", (int)kind, edge, b.at, (unsigned long long)b.id, record, s_.times[time].value.lo, s_.times[time].value.hi);
   events_.push_back({kind, ep, time});
 }
 

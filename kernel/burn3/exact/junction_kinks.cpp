@@ -2,8 +2,6 @@
 #include "burn3/exact/junction_kinks.h"
 
 #include <cmath>
-#include <cstdio>
-#include <cstdlib>
 #include <functional>
 #include <stdexcept>
 
@@ -22,11 +20,14 @@ ExactPoint3 point_on(const MedialComplex& mc, std::uint32_t edge, const mpq_clas
   return a + l * (mc.vertex(mc.edge(edge).v[1]).exact - a);
 }
 
-double approx_time_on(const Unfolding& u, const WindowStore& s, std::uint32_t edge, std::uint32_t w, double l) {
+// A window's time at the point with parameter l of the edge, as an enclosure.
+Interval time_on(const Unfolding& u, const WindowStore& s, std::uint32_t edge, std::uint32_t w, double l) {
   const Window& W = s.windows[w];
   const auto& ev = u.complex().edge(edge).v;
   const DiscPoint A = u.vertex_image(W.triangle, ev[0]), B = u.vertex_image(W.triangle, ev[1]);
-  return approx_time(W, DiscPoint{A.x + l * (B.x - A.x), A.y + l * (B.y - A.y), 0.0}).v;
+  const Interval L(l);
+  const Approx t = approx_time(W, DiscPoint::from_intervals(A.ix() + L * (B.ix() - A.ix()), A.iy() + L * (B.iy() - A.iy())));
+  return {round_down(t.v - t.e), round_up(t.v + t.e)};
 }
 
 // A certified bracket [l1, l2] around `at` where sign_at changes sign (each sign certified,
@@ -109,6 +110,19 @@ std::optional<EdgeTime> edge_time(const Unfolding& u, const WindowStore& s, Cert
   return t;
 }
 
+// The exact stage is for small data (planar sheets with short rational coordinates): past
+// this many bits in all the coefficients, field inverses cost too much and the certified
+// enclosure is the answer.
+constexpr std::size_t kMaxExactBits = 2048;
+std::size_t bits(const mpq_class& q) {
+  return mpz_sizeinbase(q.get_num_mpz_t(), 2) + mpz_sizeinbase(q.get_den_mpz_t(), 2);
+}
+std::size_t bits(const ExactSum& x) {
+  std::size_t b = bits(x.rational_part());
+  for (const SqrtTerm& t : x.sqrt_terms()) b += bits(t.coef) + bits(t.radicand);
+  return b;
+}
+
 // ExactSums (without constants) as elements of one multiquadratic field.
 class Field {
  public:
@@ -151,9 +165,14 @@ std::vector<ExactSum> quadratic_roots(const Field& f, const Multiquadratic& a, c
 
 std::optional<ExactSum> exact_crossing(const EdgeTime& p, const EdgeTime& q, const Bracket& br) {
   Field f;
-  for (const EdgeTime* t : {&p, &q})
-    for (const ExactSum* x : {&t->sigma, &t->gamma, &t->beta, &t->c0, &t->c1})
-      if (!f.add(*x)) return std::nullopt;
+  std::size_t total = 0;
+  for (const EdgeTime* t : {&p, &q}) {
+    total += bits(t->l2);
+    for (const ExactSum* x : {&t->sigma, &t->gamma, &t->beta, &t->c0, &t->c1}) {
+      total += bits(*x);
+      if (total > kMaxExactBits || !f.add(*x)) return std::nullopt;
+    }
+  }
   std::vector<ExactSum> roots;
   if (p.line && q.line) {
     roots = quadratic_roots(f, f.q(0), f.of(p.c1) - f.of(q.c1), f.of(p.c0) - f.of(q.c0));
@@ -177,13 +196,27 @@ std::optional<ExactSum> exact_crossing(const EdgeTime& p, const EdgeTime& q, con
     }
   }
   // The crossing is the only candidate inside the certified bracket.
+  // Roots with a certified constant (a square root that does not denest) are placed by
+  // their enclosure only, and not kept as exact values (exact_sign cannot take them).
   std::optional<ExactSum> found;
+  bool irrational = false;
   for (ExactSum& r : roots) {
     r.simplify();
-    if (exact_sign(r - ExactSum::rational(br.lo)) <= 0 || exact_sign(ExactSum::rational(br.hi) - r) <= 0) continue;
+    int in;
+    if (r.constant_terms().empty()) {
+      in = exact_sign(r - ExactSum::rational(br.lo)) > 0 && exact_sign(ExactSum::rational(br.hi) - r) > 0;
+    } else {
+      const Interval e = r.approx(), lo = enclose(br.lo), hi = enclose(br.hi);
+      if (e.lo > lo.hi && e.hi < hi.lo) in = 1;
+      else if (e.hi < lo.lo || e.lo > hi.hi) in = 0;
+      else return std::nullopt;
+    }
+    if (!in) continue;
     if (found) return std::nullopt;
+    irrational = !r.constant_terms().empty();
     found = std::move(r);
   }
+  if (irrational) return std::nullopt;
   return found;
 }
 
@@ -191,22 +224,27 @@ std::optional<ExactSum> exact_crossing(const EdgeTime& p, const EdgeTime& q, con
 
 std::vector<double> approx_crossings(const Unfolding& u, const WindowStore& s, std::uint32_t edge, std::uint32_t wa,
                                      std::uint32_t wb, double lo, double hi) {
+  // Only certified sign changes count: two windows equal along a stretch (ties, e.g. a
+  // kink's own source beyond the kink) have no crossing there, whatever the rounding says.
   constexpr int kSamples = 32;
-  auto g = [&](double l) { return approx_time_on(u, s, edge, wa, l) - approx_time_on(u, s, edge, wb, l); };
+  auto g = [&](double l) { return certified_sign(time_on(u, s, edge, wa, l) - time_on(u, s, edge, wb, l)); };
   std::vector<double> roots;
-  double x0 = lo, g0 = g(lo);
+  double x0 = lo;
+  int g0 = g(lo);
   for (int i = 1; i <= kSamples; ++i) {
-    const double x1 = lo + (hi - lo) * i / kSamples, g1 = g(x1);
-    if ((g0 < 0 && g1 > 0) || (g0 > 0 && g1 < 0)) {
-      double a = x0, b = x1, ga = g0;
-      for (int k = 0; k < 80 && a < b; ++k) {
+    const double x1 = lo + (hi - lo) * i / kSamples;
+    const int g1 = g(x1);
+    if (g1 == kUndecided || g1 == 0) continue;
+    if (g0 != kUndecided && g0 != 0 && g1 != g0) {
+      double a = x0, b = x1;
+      for (int k = 0; k < 80; ++k) {
         const double m = 0.5 * (a + b);
         if (m <= a || m >= b) break;
-        const double gm = g(m);
-        if ((gm < 0) == (ga < 0)) a = m, ga = gm;
-        else b = m;
+        const int gm = g(m);
+        if (gm == kUndecided || gm == 0) break;
+        (gm == g0 ? a : b) = m;
       }
-      if (a > lo && a < hi) roots.push_back(0.5 * (a + b));
+      if (a > lo && b < hi) roots.push_back(0.5 * (a + b));
     }
     x0 = x1, g0 = g1;
   }
@@ -232,7 +270,6 @@ KinkParameter kink_parameter(const Unfolding& u, const WindowStore& s, Certifier
   k.lambda = rational_enclosure(br.lo, br.hi);
   const auto p = edge_time(u, s, cert, edge, wa);
   const auto q = p ? edge_time(u, s, cert, edge, wb) : std::nullopt;
-  if (getenv("JDEBUG")) fprintf(stderr, "KINK edge %u wa %u wb %u at %g p %d q %d\n", edge, wa, wb, at, (int)bool(p), (int)bool(q));
   if (!p || !q) return k;
   try {
     k.exact = exact_crossing(*p, *q, br);
@@ -274,7 +311,7 @@ KinkParameter ray_parameter(const Unfolding& u, const WindowStore& s, Certifier&
     }
     num.simplify(), den.simplify();
     Field f;
-    if (f.add(num) && f.add(den)) {
+    if (bits(num) + bits(den) <= kMaxExactBits && f.add(num) && f.add(den)) {
       try {
         const Multiquadratic dn = f.of(den);
         if (!dn.is_zero()) {

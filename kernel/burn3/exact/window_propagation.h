@@ -165,6 +165,7 @@ class WindowPropagation {
     std::vector<std::array<std::uint64_t, 3>> emitted;  // (record, lo id, hi id)
     std::vector<std::uint64_t> sources;                 // break ids with an edge-point source
     std::vector<std::pair<std::uint64_t, std::uint32_t>> points;  // break id -> edge point
+    std::vector<Piece> pieces;  // of the last pass (recomputed when records arrived)
     bool dirty = false;
     double pending = std::numeric_limits<double>::infinity();
   };
@@ -202,7 +203,8 @@ class WindowPropagation {
   std::vector<Break> junction_breaks(std::uint32_t edge, const std::vector<std::uint32_t>& recs);
   std::uint32_t realising_record(std::uint32_t edge, const std::vector<std::uint32_t>& recs, double at);
   std::vector<Piece> junction_pieces(std::uint32_t edge);
-  double piece_time_hi(std::uint32_t edge, const Piece& p);
+  double piece_time_hi(std::uint32_t edge, const Piece& p) const;
+  Interval record_time(std::uint32_t edge, std::uint32_t r, double at) const;
   Bound piece_bound(std::uint32_t edge, const JunctionRecord& r, const Break& b);
   std::uint32_t break_point(std::uint32_t edge, const Break& b);
   void emit_piece(std::uint32_t edge, const Piece& p);
