@@ -353,4 +353,15 @@ void WindowPropagation::edge_point_source(std::uint32_t edge, const Break& b, st
   events_.push_back({kind, ep, time});
 }
 
+// Arrivals that realise no emitted piece: fronts that end at the curve (they meet the other
+// sheets' fronts there, or arrive after the curve burned).
+void WindowPropagation::count_quenched() {
+  for (const JunctionState& st : junctions_)
+    for (std::uint32_t r : st.records) {
+      bool used = false;
+      for (const auto& name : st.emitted) used = used || name[0] == r;
+      stats_.quenched += !used;
+    }
+}
+
 }  // namespace grassfire

@@ -229,6 +229,7 @@ void WindowPropagation::run() {
       case EventKind::Junction: process_junction(top.id, top.key); break;
     }
   }
+  count_quenched();
   stats_.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 

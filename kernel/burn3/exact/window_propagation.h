@@ -2,9 +2,12 @@
 // propagated across the sheets of a medial complex (4.2.3, 5.2; DESIGN.md 5).
 //
 // Computes: every window that can realise the burning time BT inside the sheets, from the
-// caller's point sources and the border ignition rules, with singular edges as walls
-// (issue 8, part 1). The arrival of fire at a wall through one of its sheet sides t is the
-// minimum of t's windows along the edge (fronts often graze a wall rather than cross it).
+// caller's point sources and the border ignition rules, with Definition 9 at singular
+// edges (the junction rule, edge_junction.cpp: arrivals recorded per sheet side, including
+// fronts that only graze the edge; the edge burns at the (k-1)-th arrival; its pieces
+// continue into the other sides as child windows across the edge, kinks and stretch ends
+// as EdgePoint point sources) and at vertices with segments or singular poles (the link
+// rule, vertex_burning.cpp); ExactBurningOptions::singular_walls keeps issue 8's walls.
 // The method is Chen and Han's window propagation with the improvements of Xin and Wang
 // 2009 (ICH, as in CGAL's Surface_mesh_shortest_path): a priority queue ordered by a
 // certified lower bound of each window's times (so that, as in Dijkstra's algorithm, every
@@ -63,7 +66,7 @@ struct PropagationStats {
   std::uint64_t pseudo_sources = 0;
   std::uint64_t ties_absorbed = 0;    // unprovable ties folded into an existing vertex source
   std::uint64_t vertex_events = 0;    // a window reaching a vertex
-  std::uint64_t wall_arrivals = 0;    // children stopped by a wall (singular edge)
+  std::uint64_t wall_arrivals = 0;    // children reaching a singular edge (walls: stopped there)
   std::uint64_t vertex_burns = 0;     // vertices burned by the link rule
   std::uint64_t segment_arrivals = 0; // fire reaching a vertex along a segment
   std::uint64_t border_arrivals = 0;  // children that reached a border edge
@@ -212,6 +215,7 @@ class WindowPropagation {
   void enter_child(std::uint32_t w, std::uint32_t edge, std::uint32_t t2, const Bound& b0, const Bound& b1, double key);
   bool source_on_edge(std::uint32_t w, std::uint32_t edge) const;
   bool same_point_as_source(std::uint32_t edge, std::uint32_t ep);
+  void count_quenched();
   ExactPoint3 edge_point3(std::uint32_t edge, double at) const;
 
   void init_links();
