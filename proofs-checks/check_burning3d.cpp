@@ -214,13 +214,13 @@ std::vector<CheckRow> corpus_rows(const Corpus3& c, const Tally& p7, const Tally
   none.instances = c.instances.size();
   CheckRow s = tally_row("Prop 4 in a sheet (|BT(x) - BT(y)| <= d)", c.name, "none on the baseline", "-", none, "length",
                    "on the baseline it holds by Dijkstra's relaxation up to snapping the segment xy to graph points, "
-                   "so it is no evidence for BT; needs the exact engine (issue 9)");
+                   "so it is no evidence for BT; on the exact BT see the exact-chapter4 rows");
   s.verdict = Verdict::NotChecked;
   rows.push_back(s);
   CheckRow k = tally_row("Prop 4 on singular curves (|BT(x) - BT(y)| <= arclength)", c.name, "none on the baseline", "-",
                    none, "length",
                    "on the baseline it holds by its rule (an arrival along a curve burns the point), so it is no "
-                   "evidence for BT; needs the exact engine (issue 9)");
+                   "evidence for BT; on the exact BT see the exact-chapter4 rows");
   k.verdict = Verdict::NotChecked;
   rows.push_back(k);
   return rows;

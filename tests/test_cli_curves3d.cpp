@@ -96,3 +96,34 @@ TEST_CASE("curves3d and paths3d: bad input gives one message and no output", "[c
   CHECK(r.code == 1);
   std::remove(points.c_str());
 }
+
+TEST_CASE("curves3d and paths3d --method exact: the exact engine's field; singular edges need --singular-walls",
+          "[cli_curves][exact3]") {
+  const std::string json = temp_path("exact_curves.json"), paths = temp_path("exact_paths.json");
+  auto r = run_cli("curves3d annulus --method exact --spacing 0.25 --json " + json);
+  INFO(r.output);
+  REQUIRE(r.code == 0);
+  nlohmann::json j = read_json(json);
+  CHECK(j["betti"] == nlohmann::json::array({1, 1}));
+  CHECK(j["method"].get<std::string>().find("exact") != std::string::npos);
+  // The tube burns from both rims: BT = distance to the nearer rim, the path straight down
+  // or up to it (the side unrolls into a strip).
+  r = run_cli("paths3d tube --method exact --from vertices --json " + paths);
+  REQUIRE(r.code == 0);
+  j = read_json(paths);
+  REQUIRE(j["paths"].size() > 50);
+  for (const auto& p : j["paths"]) {
+    const double z = p["points"][0][2].get<double>(), end = p["points"].back()[2].get<double>();
+    CHECK(p["bt"].get<double>() == Approx(std::min(z, 8 - z)).margin(1e-9));
+    CHECK(std::min(end, 8 - end) == Approx(0).margin(1e-9));
+  }
+  r = run_cli("curves3d board-fin --method exact --json " + json);
+  CHECK(r.code == 1);
+  CHECK(r.output.find("--singular-walls") != std::string::npos);
+  r = run_cli("paths3d board-fin --method exact --singular-walls --from vertices --json " + paths);
+  CHECK(r.code == 0);
+  r = run_cli("curves3d annulus --singular-walls --json " + json);
+  CHECK(r.code == 1);
+  CHECK(r.output.find("--singular-walls needs --method exact") != std::string::npos);
+  for (const std::string& f : {json, paths}) std::remove(f.c_str());
+}

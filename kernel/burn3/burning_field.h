@@ -43,8 +43,9 @@
 // curve: the arriving window rotated about the curve, DESIGN.md 5), down to its origin on
 // the border or at a source. edge_points may be any subdivision (e.g. ceil(|e| / h) - 1
 // points, as the baseline) and edge_point_burn_time is the engine's BT at those points.
-// Nothing else changes: medial_curves.h, shape_analysis.h and the commands only see this
-// interface (`--method exact` picks the implementation).
+// That implementation is burn3/exact/exact_burning_field.h. Nothing else changes:
+// medial_curves.h, shape_analysis.h and the commands only see this interface (`--method
+// exact` picks the implementation, tools/field_input.h).
 #pragma once
 
 #include <cstdint>
