@@ -386,19 +386,20 @@ std::vector<CheckRow> exact_rows(const Corpus3& corpus, const CorpusRun& c) {
   CheckRow sheet = tally_row("Prop 4 in a sheet on the exact BT (|BT(x) - BT(y)| <= d, no allowance)", corpus.name,
                              "d: the straight length between two points of one sequence (a segment inside one triangle)",
                              "the engine's certified enclosures; rounding of d only", c.exact.prop4_sheet, "length", note);
-  if (c.exact.prop4_sheet.points == 0 && c.exact.usc.instances > 0) {
-    sheet.verdict = Verdict::NotChecked;
-    sheet.note = "no sheet in the instances the exact engine burns here (graphs only); " + note;
-  }
-  rows.push_back(sheet);
+  // A Prop 4 row with no point in instances the engine did burn: nothing of that kind there.
+  const auto push_unless_empty = [&](CheckRow row, const auto& tally, const std::string& why) {
+    if (tally.points == 0 && c.exact.usc.instances > 0) {
+      row.verdict = Verdict::NotChecked;
+      row.note = why + note;
+    }
+    rows.push_back(std::move(row));
+  };
+  push_unless_empty(sheet, c.exact.prop4_sheet, "no sheet in the instances the exact engine burns here (graphs only); ");
   CheckRow curves = tally_row("Prop 4 on singular curves on the exact BT (|BT(x) - BT(y)| <= arclength)", corpus.name,
                               "BT at 1/4, 1/2, 3/4 of every singular edge; d: their distance along the edge",
                               "the engine's certified enclosures; rounding of d only", c.exact.prop4_curve, "length", note);
-  if (c.exact.prop4_curve.points == 0 && c.exact.usc.instances > 0) {
-    curves.verdict = Verdict::NotChecked;
-    curves.note = "no singular curve in the instances the exact engine burns today (it refuses singular edges); " + note;
-  }
-  rows.push_back(curves);
+  push_unless_empty(curves, c.exact.prop4_curve,
+                    "no singular curve in the instances the exact engine burns today (it refuses singular edges); ");
   if (c.exact.usc.instances == 0)
     for (CheckRow& r : rows) {
       r.verdict = Verdict::NotChecked;
