@@ -25,8 +25,10 @@
 //  - poles: a piece ending at a vertex of E is an arrival along the curve at that vertex
 //    (its link rule, vertex_burning.cpp), which decides the singular points.
 // Finality (Dijkstra): a record's times are at least its key, so when the queue reaches T
-// every arrival below T is known; a piece is emitted once the upper end of its times is at
-// most T, and recomputed (junction_passes) while records still arrive. Every emission is
+// every arrival below T is known; a piece is emitted as soon as T reaches the lower bound
+// of its times (so that no window is made after the sweep passed its key: the link rule's
+// decisions at singular points rely on it), kinks and stretch ends once T passes their
+// time, and pieces are recomputed (junction_passes) while records still arrive. Every emission is
 // fire of a real burning path (an upper bound of BT); every decision is certified: the
 // order of arrivals at a rational point of each elementary interval by
 // Certifier::compare_times (ties: the earlier record realises, so sources made on the edge
@@ -109,6 +111,25 @@ void WindowPropagation::schedule_junction(std::uint32_t edge, double key) {
 
 // ---- the (k-1)-th arrival along the edge ---------------------------------------------------
 
+// The crossings of every new record with every earlier one (a pair's crossings never
+// change, so each pair is computed once: the passes only filter out dead records).
+void WindowPropagation::pair_new_records(std::uint32_t edge) {
+  JunctionState& st = junctions_[junction_of_[edge]];
+  for (std::size_t i = st.paired; i < st.records.size(); ++i)
+    for (std::size_t j = 0; j < i; ++j) {
+      const std::uint32_t ra = st.records[j], rb = st.records[i];
+      const JunctionRecord &a = records_[ra], &b = records_[rb];
+      if (s_.windows[a.window].dead() || s_.windows[b.window].dead()) continue;  // dead stays dead
+      const double lo = std::max(std::min(a.at[0], a.at[1]), std::min(b.at[0], b.at[1]));
+      const double hi = std::min(std::max(a.at[0], a.at[1]), std::max(b.at[0], b.at[1]));
+      if (!(lo < hi)) continue;
+      const std::vector<double> roots = approx_crossings(u_, s_, edge, a.window, b.window, lo, hi);
+      for (std::size_t k = 0; k < roots.size(); ++k)
+        st.crossings.push_back({{roots[k], crossing_id(ra, rb, static_cast<int>(k))}, ra, rb});
+    }
+  st.paired = st.records.size();
+}
+
 std::vector<WindowPropagation::Break> WindowPropagation::junction_breaks(std::uint32_t edge,
                                                                           const std::vector<std::uint32_t>& recs) {
   std::vector<Break> br{{0.0, kEdgeEnd | 0}, {1.0, kEdgeEnd | 1}};
@@ -116,16 +137,9 @@ std::vector<WindowPropagation::Break> WindowPropagation::junction_breaks(std::ui
     for (int j = 0; j < 2; ++j)
       if (records_[r].at[j] > 0.0 && records_[r].at[j] < 1.0)
         br.push_back({records_[r].at[j], kRecordEnd | (std::uint64_t(r) << 1) | std::uint64_t(j)});
-  for (std::size_t i = 0; i < recs.size(); ++i)
-    for (std::size_t j = i + 1; j < recs.size(); ++j) {
-      const JunctionRecord &a = records_[recs[i]], &b = records_[recs[j]];
-      const double lo = std::max(std::min(a.at[0], a.at[1]), std::min(b.at[0], b.at[1]));
-      const double hi = std::min(std::max(a.at[0], a.at[1]), std::max(b.at[0], b.at[1]));
-      if (!(lo < hi)) continue;
-      const std::vector<double> roots = approx_crossings(u_, s_, edge, a.window, b.window, lo, hi);
-      for (std::size_t k = 0; k < roots.size(); ++k)
-        br.push_back({roots[k], crossing_id(recs[i], recs[j], static_cast<int>(k))});
-    }
+  pair_new_records(edge);
+  for (const Crossing& c : junctions_[junction_of_[edge]].crossings)
+    if (!s_.windows[records_[c.a].window].dead() && !s_.windows[records_[c.b].window].dead()) br.push_back(c.at);
   // Equal parameters name one point: keep the smallest name (stable as records arrive).
   std::sort(br.begin(), br.end(), [](const Break& x, const Break& y) { return x.at < y.at || (x.at == y.at && x.id < y.id); });
   br.erase(std::unique(br.begin(), br.end(), [](const Break& x, const Break& y) { return x.at == y.at; }), br.end());
@@ -197,12 +211,28 @@ std::vector<WindowPropagation::Piece> WindowPropagation::junction_pieces(std::ui
   return pieces;
 }
 
-// The upper end of a piece's times: at one of its ends (a window's time along a line is
-// convex: a distance, or linear for a plane wave).
-double WindowPropagation::piece_time_hi(std::uint32_t edge, const Piece& p) const {
-  return std::max(record_time(edge, p.record, p.lo.at).hi, record_time(edge, p.record, p.hi.at).hi);
+// A certified lower bound of a piece's times (its record's time along the piece).
+double WindowPropagation::piece_time_lo(std::uint32_t edge, const Piece& p) const {
+  const Window& W = s_.windows[records_[p.record].window];
+  const auto& ev = mc_.edge(edge).v;
+  const DiscPoint A = u_.vertex_image(W.triangle, ev[0]), B = u_.vertex_image(W.triangle, ev[1]);
+  auto at = [&](double l) {
+    const Interval L(l);
+    return DiscPoint::from_intervals(A.ix() + L * (B.ix() - A.ix()), A.iy() + L * (B.iy() - A.iy()));
+  };
+  return approx_lower_bound(W, at(p.lo.at), at(p.hi.at));
 }
 
+// Timing (Dijkstra finality, as for windows): every window must be made before the sweep
+// passes its key. So a piece is continued across the edge as soon as the sweep reaches the
+// lower bound of its times, with the records known then: its fire is real (the (k-1)-th
+// arrival of the known records is never below the true one) and its children's keys are
+// not below the sweep. A record arriving later can lower the (k-1)-th arrival only where it
+// is above the sweep (every arrival below the sweep is known), so a later pass emits the
+// new pieces there, and the fire emitted before is dominated, never wrong. Parts of a piece
+// already continued for the same record are not emitted twice (unemitted_parts). A kink or
+// stretch end is a burned point: it emits once the sweep passes the upper end of its time
+// there, when that time is final.
 void WindowPropagation::process_junction(std::uint32_t edge, double key) {
   JunctionState& st = junctions_[junction_of_[edge]];
   st.pending = kInf;
@@ -210,20 +240,21 @@ void WindowPropagation::process_junction(std::uint32_t edge, double key) {
   if (st.dirty) st.pieces = junction_pieces(edge), st.dirty = false;
   const std::vector<Piece> pieces = st.pieces;
   double next = kInf;
+  auto due = [&](double t) {
+    if (t <= key) return true;
+    next = std::min(next, t);
+    return false;
+  };
+  auto burned_at = [&](const Piece& p, const Break& b) { return due(record_time(edge, p.record, b.at).hi); };
   for (std::size_t i = 0; i < pieces.size(); ++i) {
     const Piece& p = pieces[i];
     if (p.record == kNoIndex) continue;
-    const double hi = piece_time_hi(edge, p);
-    if (hi > key) {  // not final yet: arrivals below its times may still come
-      next = std::min(next, hi);
-      continue;
-    }
-    emit_piece(edge, p);
+    if (due(piece_time_lo(edge, p))) emit_piece(edge, p);
     const bool left_gap = i > 0 && pieces[i - 1].record == kNoIndex;
     const bool right_gap = i + 1 < pieces.size() && pieces[i + 1].record == kNoIndex;
-    if (left_gap) edge_point_source(edge, p.lo, p.record, SweepEvent::Kind::StretchEnd);
-    if (right_gap) edge_point_source(edge, p.hi, p.record, SweepEvent::Kind::StretchEnd);
-    if (i + 1 < pieces.size() && pieces[i + 1].record != kNoIndex && (p.hi.id >> 60) != 0)
+    if (left_gap && burned_at(p, p.lo)) edge_point_source(edge, p.lo, p.record, SweepEvent::Kind::StretchEnd);
+    if (right_gap && burned_at(p, p.hi)) edge_point_source(edge, p.hi, p.record, SweepEvent::Kind::StretchEnd);
+    if (i + 1 < pieces.size() && pieces[i + 1].record != kNoIndex && (p.hi.id >> 60) != 0 && burned_at(p, p.hi))
       edge_point_source(edge, p.hi, p.record, SweepEvent::Kind::Kink);
   }
   if (next < kInf) schedule_junction(edge, next);
@@ -278,32 +309,50 @@ WindowPropagation::Bound WindowPropagation::piece_bound(std::uint32_t edge, cons
   return {ep | kEdgePointBound, edge_point_image(u_, s_, W.triangle, ep), W.depth};
 }
 
+// The parts of piece p (between its ends and the ends of earlier emissions of the same
+// record, ordered by parameter) that no earlier emission of its record covers.
+std::vector<WindowPropagation::Piece> WindowPropagation::unemitted_parts(const JunctionState& st, const Piece& p) const {
+  std::vector<const Piece*> done;
+  for (const Piece& e : st.emitted)
+    if (e.record == p.record && e.hi.at > p.lo.at && e.lo.at < p.hi.at) done.push_back(&e);
+  std::sort(done.begin(), done.end(), [](const Piece* a, const Piece* b) { return a->lo.at < b->lo.at; });
+  std::vector<Piece> parts;
+  Break from = p.lo;
+  for (const Piece* e : done) {
+    if (e->lo.at > from.at) parts.push_back({p.record, from, e->lo});
+    if (e->hi.at > from.at) from = e->hi;
+  }
+  if (from.at < p.hi.at) parts.push_back({p.record, from, p.hi});
+  return parts;
+}
+
 void WindowPropagation::emit_piece(std::uint32_t edge, const Piece& p) {
   JunctionState& st = junctions_[junction_of_[edge]];
-  const std::array<std::uint64_t, 3> name{p.record, p.lo.id, p.hi.id};
-  if (std::find(st.emitted.begin(), st.emitted.end(), name) != st.emitted.end()) return;
-  st.emitted.push_back(name);
+  const std::vector<Piece> parts = unemitted_parts(st, p);
+  if (parts.empty()) return;
+  st.emitted.push_back(p);
   const JunctionRecord r = records_[p.record];
   const std::uint32_t w = r.window;
-  // Arrivals along the curve at the edge's end vertices (their link rule).
-  for (const Break& b : {p.lo, p.hi})
-    if ((b.id >> 60) == 0) {
-      const std::uint32_t v = mc_.edge(edge).v[b.id & 1];
-      if (is_link_vertex(v)) link_arrival(v, mc_.edge_end_element(edge, static_cast<int>(b.id & 1)), window_time_at(w, v));
+  const Window W = s_.windows[w];  // a copy: enter_child grows the store
+  const bool increasing = r.at[0] < r.at[1];  // the record's clockwise end has parameter at[0]
+  for (const Piece& part : parts) {
+    // Arrivals along the curve at the edge's end vertices (their link rule).
+    for (const Break& b : {part.lo, part.hi})
+      if ((b.id >> 60) == 0) {
+        const std::uint32_t v = mc_.edge(edge).v[b.id & 1];
+        if (is_link_vertex(v)) link_arrival(v, mc_.edge_end_element(edge, static_cast<int>(b.id & 1)), window_time_at(w, v));
+      }
+    if (r.on_edge || r.grazing) continue;  // its source emits into every side itself; a grazing
+                                           // front's rays run along the edge (its ends' sources emit)
+    const Bound lo = piece_bound(edge, r, part.lo), hi = piece_bound(edge, r, part.hi);
+    const Bound& b0 = increasing ? lo : hi;
+    const Bound& b1 = increasing ? hi : lo;
+    const double key = std::max(W.key, approx_lower_bound(W, lo.image, hi.image));
+    for (std::uint32_t t2 : mc_.edge_triangles(edge)) {
+      if (t2 == r.side) continue;
+      enter_child(w, edge, t2, b0, b1, key);
+      ++stats_.merges;
     }
-  if (r.on_edge || r.grazing) return;  // its source emits into every side itself; a grazing
-                                       // front's rays run along the edge (its ends' sources emit)
-  const Bound lo = piece_bound(edge, r, p.lo), hi = piece_bound(edge, r, p.hi);
-  // The record's clockwise end has parameter at[0]: orient the piece the same way.
-  const bool increasing = r.at[0] < r.at[1];
-  const Bound& b0 = increasing ? lo : hi;
-  const Bound& b1 = increasing ? hi : lo;
-  const Window& W = s_.windows[w];
-  const double key = std::max(W.key, approx_lower_bound(W, lo.image, hi.image));
-  for (std::uint32_t t2 : mc_.edge_triangles(edge)) {
-    if (t2 == r.side) continue;
-    enter_child(w, edge, t2, b0, b1, key);
-    ++stats_.merges;
   }
 }
 
@@ -359,7 +408,7 @@ void WindowPropagation::count_quenched() {
   for (const JunctionState& st : junctions_)
     for (std::uint32_t r : st.records) {
       bool used = false;
-      for (const auto& name : st.emitted) used = used || name[0] == r;
+      for (const Piece& e : st.emitted) used = used || e.record == r;
       stats_.quenched += !used;
     }
 }

@@ -163,11 +163,18 @@ class WindowPropagation {
     std::uint32_t record;  // kNoIndex: fewer than k - 1 sides arrived
     Break lo, hi;
   };
+  // Where two records' times cross along the edge (computed once per pair of records).
+  struct Crossing {
+    Break at;
+    std::uint32_t a, b;  // the records
+  };
   struct JunctionState {
     std::vector<std::uint32_t> records;
-    std::vector<std::array<std::uint64_t, 3>> emitted;  // (record, lo id, hi id)
-    std::vector<std::uint64_t> sources;                 // break ids with an edge-point source
+    std::vector<Piece> emitted;          // (record, interval) already continued across the edge
+    std::vector<std::uint64_t> sources;  // break ids with an edge-point source
     std::vector<std::pair<std::uint64_t, std::uint32_t>> points;  // break id -> edge point
+    std::vector<Crossing> crossings;     // of every pair among records[0, paired)
+    std::size_t paired = 0;
     std::vector<Piece> pieces;  // of the last pass (recomputed when records arrived)
     bool dirty = false;
     double pending = std::numeric_limits<double>::infinity();
@@ -206,7 +213,9 @@ class WindowPropagation {
   std::vector<Break> junction_breaks(std::uint32_t edge, const std::vector<std::uint32_t>& recs);
   std::uint32_t realising_record(std::uint32_t edge, const std::vector<std::uint32_t>& recs, double at);
   std::vector<Piece> junction_pieces(std::uint32_t edge);
-  double piece_time_hi(std::uint32_t edge, const Piece& p) const;
+  double piece_time_lo(std::uint32_t edge, const Piece& p) const;
+  std::vector<Piece> unemitted_parts(const JunctionState& st, const Piece& p) const;
+  void pair_new_records(std::uint32_t edge);
   Interval record_time(std::uint32_t edge, std::uint32_t r, double at) const;
   Bound piece_bound(std::uint32_t edge, const JunctionRecord& r, const Break& b);
   std::uint32_t break_point(std::uint32_t edge, const Break& b);
