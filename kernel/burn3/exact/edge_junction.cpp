@@ -155,12 +155,21 @@ std::uint32_t WindowPropagation::realising_record(std::uint32_t edge, const std:
   std::optional<ExactPoint3> p;
   std::vector<Interval> value(recs.size());
   for (std::size_t i = 0; i < recs.size(); ++i) value[i] = record_time(edge, recs[i], at);
+  std::vector<std::array<std::size_t, 3>> staged;  // (ri, qi, outcome): each pair decided once
   auto earlier = [&](std::size_t ri, std::size_t qi) {  // record ri before qi (ties: older first)
     int c = certified_sign(value[ri] - value[qi]);
     if (c == kUndecided) {
-      if (!p) p = edge_point3(edge, at);
-      const Target x{kNoIndex, &*p};
-      c = cert_.compare_times(records_[recs[ri]].window, x, records_[recs[qi]].window, x);
+      const auto [a, b] = std::minmax(ri, qi);
+      const auto it = std::find_if(staged.begin(), staged.end(), [&](const auto& s) { return s[0] == a && s[1] == b; });
+      if (it != staged.end()) {
+        c = static_cast<int>((*it)[2]) - 2;
+      } else {
+        if (!p) p = edge_point3(edge, at);
+        const Target x{kNoIndex, &*p};
+        c = cert_.compare_times(records_[recs[a]].window, x, records_[recs[b]].window, x);
+        staged.push_back({a, b, static_cast<std::size_t>(c + 2)});
+      }
+      if (ri != a && c != kUndecided) c = -c;
     } else {
       ++cert_.counts.filter;
     }
@@ -193,21 +202,47 @@ Interval WindowPropagation::record_time(std::uint32_t edge, std::uint32_t r, dou
   return {round_down(t.v - t.e), round_up(t.v + t.e)};
 }
 
+// The (k-1)-th arrival at a point depends only on the records whose range covers it, so a
+// pass recomputes it only inside the ranges of the records added (or dead) since the last
+// pass, and elsewhere takes the realising record of the last pass's piece there (no
+// breakpoint appears outside those ranges, so each elementary interval there lies inside
+// one old piece).
 std::vector<WindowPropagation::Piece> WindowPropagation::junction_pieces(std::uint32_t edge) {
+  JunctionState& st = junctions_[junction_of_[edge]];
   std::vector<std::uint32_t> recs;
-  for (std::uint32_t r : junctions_[junction_of_[edge]].records)
+  for (std::uint32_t r : st.records)
     if (!s_.windows[records_[r].window].dead()) recs.push_back(r);
+  std::vector<std::array<double, 2>> changed;
+  auto range_of = [&](std::uint32_t r) {
+    const auto& at = records_[r].at;
+    changed.push_back({std::min(at[0], at[1]), std::max(at[0], at[1])});
+  };
+  for (std::size_t i = st.counted; i < st.records.size(); ++i) range_of(st.records[i]);
+  for (std::uint32_t r : st.alive)
+    if (s_.windows[records_[r].window].dead()) range_of(r);
+  const std::vector<Piece> old = std::move(st.pieces);
+  constexpr std::uint32_t kRecompute = kNoIndex - 1;
+  auto previous = [&](double m) {
+    for (const auto& c : changed)
+      if (c[0] <= m && m <= c[1]) return kRecompute;
+    const auto it = std::lower_bound(old.begin(), old.end(), m, [](const Piece& p, double x) { return p.hi.at < x; });
+    return it != old.end() && it->lo.at < m && m < it->hi.at ? it->record : kRecompute;
+  };
   const std::vector<Break> br = junction_breaks(edge, recs);
   std::vector<Piece> pieces;
   for (std::size_t i = 0; i + 1 < br.size(); ++i) {
     if (!(br[i].at < br[i + 1].at)) continue;
-    const std::uint32_t r = realising_record(edge, recs, 0.5 * (br[i].at + br[i + 1].at));
+    const double m = 0.5 * (br[i].at + br[i + 1].at);
+    std::uint32_t r = previous(m);
+    if (r == kRecompute) r = realising_record(edge, recs, m);
     if (!pieces.empty() && pieces.back().record == r) {
       pieces.back().hi = br[i + 1];
       continue;
     }
     pieces.push_back({r, br[i], br[i + 1]});
   }
+  st.counted = st.records.size();
+  st.alive = std::move(recs);
   return pieces;
 }
 

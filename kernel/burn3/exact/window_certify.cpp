@@ -190,19 +190,38 @@ int Certifier::escalate(long cap, F&& sign_at_precision) {
 
 // ---- stage 2: structural equality ------------------------------------------------------
 
+// One point source, or the sources a vertex emits into its sectors at one time expression
+// (the link rule and vertex burns give every sector the same expression).
+bool Certifier::same_point_source(std::uint32_t pa, std::uint32_t pb) const {
+  const PseudoSource &a = s_.pseudo[pa], &b = s_.pseudo[pb];
+  if (pa == pb)
+    return a.origin == SourceOrigin::Vertex || a.origin == SourceOrigin::GivenPoint || a.origin == SourceOrigin::EdgePoint;
+  return a.origin == SourceOrigin::Vertex && b.origin == SourceOrigin::Vertex && a.vertex == b.vertex &&
+         a.time == b.time && a.time != kNoIndex;
+}
+
 bool Certifier::same_expression(std::uint32_t w1, std::uint32_t w2, const Target& x) const {
   const Window &a0 = s_.windows[w1], &b0 = s_.windows[w2];
+  if (a0.parent == kNoIndex && b0.parent == kNoIndex && same_point_source(a0.pseudo, b0.pseudo)) {
+    // Two first windows of one point S (closed in both triangles): at a point x of both
+    // closed triangles the time is sigma + |x - S| measured in 3D (a straight segment inside
+    // each triangle): a vertex of both, or a point of an edge of both.
+    const MedialComplex& mc = u_.complex();
+    const ComplexTriangle &ta = mc.triangle(a0.triangle), &tb = mc.triangle(b0.triangle);
+    if (!x.point) {
+      if (corner_of(ta, x.vertex) >= 0 && corner_of(tb, x.vertex) >= 0) return true;
+    } else {
+      for (std::uint32_t e : ta.e) {
+        if (std::find(tb.e.begin(), tb.e.end(), e) == tb.e.end()) continue;
+        const ExactPoint3 &p = mc.vertex(mc.edge(e).v[0]).exact, &q = mc.vertex(mc.edge(e).v[1]).exact;
+        if (cross(q - p, *x.point - p) == ExactPoint3{} && sgn(dot(*x.point - p, *x.point - q)) <= 0) return true;
+      }
+    }
+  }
   if (a0.pseudo != b0.pseudo) return false;
   const SourceOrigin origin = s_.pseudo[a0.pseudo].origin;
   const bool point_kind =
       origin == SourceOrigin::Vertex || origin == SourceOrigin::GivenPoint || origin == SourceOrigin::EdgePoint;
-  if (a0.parent == kNoIndex && b0.parent == kNoIndex && !x.point && point_kind) {
-    // Two first windows of one point source: at a vertex of both triangles the time is
-    // sigma + |x - S| measured in 3D (a straight segment inside each triangle).
-    const MedialComplex& mc = u_.complex();
-    if (corner_of(mc.triangle(a0.triangle), x.vertex) >= 0 && corner_of(mc.triangle(b0.triangle), x.vertex) >= 0)
-      return true;
-  }
   // Equal sequences of frame changes give the same source image.
   std::uint32_t p = a0.anchor, q = b0.anchor;
   for (;;) {

@@ -98,6 +98,7 @@ class Certifier {
   Ball sigma_ball(std::uint32_t pseudo);
   void trim_memos();  // only between decisions: pointers into the memo stay valid within one
   bool same_expression(std::uint32_t w1, std::uint32_t w2, const Target& x) const;
+  bool same_point_source(std::uint32_t pa, std::uint32_t pb) const;
   bool bound_fixed(std::uint32_t w, int j, std::uint32_t v) const;
   std::optional<ExactVector> target_uv(std::uint32_t f, const Target& x) const;
   int exact_side(const ExactWindow& e, int j, const Target& x) const;

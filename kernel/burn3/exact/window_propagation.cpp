@@ -2,6 +2,7 @@
 #include "burn3/exact/window_propagation.h"
 
 #include <chrono>
+#include <cmath>
 #include <limits>
 #include <stdexcept>
 
@@ -98,6 +99,14 @@ std::uint32_t WindowPropagation::window_time_at(std::uint32_t w, std::uint32_t v
   e.kind = TimeExpr::Kind::WindowAt;
   e.a = w, e.b = v;
   e.value = cert_.time_interval(w, Target{v, nullptr});
+  // A chain through an ill-conditioned unfolding (a tiny edge, a crossing of a singular
+  // curve at a small angle) widens the double enclosure; this value becomes a vertex's BT,
+  // a source's offset, an arrival on a curve: re-evaluate it in Arb then.
+  if (e.value.hi - e.value.lo > 0x1p-32 * std::max(1.0, std::fabs(e.value.lo))) {
+    BallPrecision bits(128);
+    const Interval tight = intersect(e.value, cert_.time_ball(w, Target{v, nullptr}).to_interval());
+    if (tight.lo <= tight.hi) e.value = tight;
+  }
   return new_time(e);
 }
 

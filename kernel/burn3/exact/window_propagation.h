@@ -176,6 +176,8 @@ class WindowPropagation {
     std::vector<Crossing> crossings;     // of every pair among records[0, paired)
     std::size_t paired = 0;
     std::vector<Piece> pieces;  // of the last pass (recomputed when records arrived)
+    std::size_t counted = 0;            // records[0, counted) were known to that pass
+    std::vector<std::uint32_t> alive;   // the records alive then
     bool dirty = false;
     double pending = std::numeric_limits<double>::infinity();
   };
