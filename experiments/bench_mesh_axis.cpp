@@ -1,7 +1,8 @@
 // bench_mesh_axis -- the medial axis of closed meshes against CGAL's Delaunay triangulation
 // alone on the same sample points.
 //
-// usage: bench_mesh_axis [--repeat K] [--samples S] [--angle DEG] [--complex] MESH...
+// usage: bench_mesh_axis [--repeat K] [--samples S] [--angle DEG] [--min-growth G] [--complex] MESH...
+// (--min-growth: MeshAxisOptions::min_thickness_growth, to compare the round-skip rule)
 // For each mesh (in its own child process, so that peak memory is that mesh's VmHWM):
 // build the axis (mesh_axis.h: solid topology, every sampling round, inner Voronoi
 // complex, pruning, Betti check, exact assembly), then time CGAL Delaunay_triangulation_3
@@ -101,11 +102,12 @@ int main(int argc, char** argv) {
     if (a == "--repeat" && i + 1 < argc) repeat = std::atoi(argv[++i]);
     else if (a == "--samples" && i + 1 < argc) options.samples_per_edge = std::atof(argv[++i]);
     else if (a == "--angle" && i + 1 < argc) options.angle_degrees = std::atof(argv[++i]);
+    else if (a == "--min-growth" && i + 1 < argc) options.min_thickness_growth = std::atof(argv[++i]);
     else if (a == "--complex") complex = true;
     else meshes.push_back(a);
   }
   if (meshes.empty() || repeat < 1 || !(options.samples_per_edge > 0)) {
-    std::fprintf(stderr, "usage: bench_mesh_axis [--repeat K] [--samples S] [--angle DEG] [--complex] MESH...\n");
+    std::fprintf(stderr, "usage: bench_mesh_axis [--repeat K] [--samples S] [--angle DEG] [--min-growth G] [--complex] MESH...\n");
     return 2;
   }
   std::printf("mesh,vertices,samples,delaunay_s,axis_s,ratio,peak_mem_mb,betti_solid,betti_axis,faces,refinements,"

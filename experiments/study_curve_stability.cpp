@@ -140,6 +140,8 @@ int main(int argc, char** argv) {
         const auto start = std::chrono::steady_clock::now();
         const Curves run = analyse(perturb_mesh(mesh, a * diagonal, static_cast<std::uint64_t>(seed)), h);
         const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        note(name + " a=" + std::to_string(a) + " seed " + std::to_string(seed) + ": " + run.status + ", " +
+             std::to_string(seconds) + " s");
         for (const char* setting : {"raw", "significant"}) {
           const bool raw = std::string(setting) == "raw";
           const MedialCurves& b0 = raw ? base.raw : base.significant;

@@ -242,10 +242,10 @@ int main(int argc, char** argv) {
       points.push_back(point);
     }
     csv.flush();
+    sampling_plot::save(points, out + "/mesh_axis_sampling.svg");  // after every mesh: a cut-short run has both files
     progress.advance();
   }
   progress.done();
-  sampling_plot::save(points, out + "/mesh_axis_sampling.svg");
   note("wrote " + out + "/mesh_axis_sampling.csv and mesh_axis_sampling.svg");
   return 0;
 }

@@ -158,6 +158,9 @@ AxisCells axis_cells(const InnerVoronoi& vor, const PrunedComplex& pruned) {
 RawComplex assemble(const InnerVoronoi& vor, const AxisCells& cells, const std::string& source) {
   RawComplex raw;
   raw.source = source + " (inner Voronoi medial axis)";
+  raw.vertices.reserve(cells.voronoi_vertex.size());
+  raw.radius_squared.reserve(cells.voronoi_vertex.size());
+  raw.triangles.reserve(cells.rings.vertex.size());
   for (std::uint32_t v : cells.voronoi_vertex) {
     mpq_class r2;
     raw.vertices.push_back(exact_point(vor.samples, vor.vertices[v].centre, &r2));

@@ -28,7 +28,7 @@
 //     pruning left no polygon or segment at that deepest pole, to half its spacing (and
 //     the triangles of the samples bounding the polygons at that pole too).
 //     Steps 2-5 repeat until no triangle is too coarse, the next round would add under
-//     min_thickness_growth (5%) samples, a round misses the solid's Betti numbers, or max_refinements or max_samples
+//     min_thickness_growth (10%) samples, a round misses the solid's Betti numbers, or max_refinements or max_samples
 //     is reached; the last round with the solid's Betti numbers is returned (axis_round;
 //     later rounds are listed too). What is kept: a sheet survives where its touching
 //     samples are >= lambda h apart, so the points of depth R >= lambda h are found and a
@@ -77,7 +77,7 @@ struct MeshAxisOptions {
                                  // thickness rule: spacing <= ratio * 2 (inner pole distance) / lambda,
                                  // halved where the deepest pole lost its sheets
   std::size_t max_samples = 2000000;
-  double min_thickness_growth = 0.05;  // a thickness round adding fewer samples (a fraction) is not run
+  double min_thickness_growth = 0.10;  // a thickness round adding fewer samples (a fraction) is not run
 };
 
 struct MeshAxisRound {
