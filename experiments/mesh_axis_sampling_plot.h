@@ -4,7 +4,8 @@
 //
 // Computes: two panels in one SVG, one series per mesh:
 //  1. Hausdorff distance / D between the mesh axis and its reference (the exact convex axis
-//     of a convex mesh, the finest axis otherwise; the finest row itself is not drawn)
+//     of a convex mesh, the finest axis otherwise; the finest row itself is not drawn, nor
+//     a distance under 1e-9 D: the same axis, counted "not shown")
 //     against h_axis / D, log-log; for convex meshes also the distance from the reference's
 //     points of depth R >= 2 h_axis (dashed), the part the separation test promises;
 //  2. the Betti number error of the first round (sum over b0, b1, b2 of |b - b(solid)|,
@@ -88,6 +89,10 @@ inline std::vector<Point> read_csv(const std::string& path) {
   return out;
 }
 
+// Below this Hausdorff / D two axes are the same up to rounding (the same round at two
+// densities): not drawn on the log scale, counted as "not shown" in the legend.
+constexpr double kSameAxis = 1e-9;
+
 // The points in the order given (a mesh's rows together, coarse to fine).
 inline void save(const std::vector<Point>& points, const std::string& path) {
   plot::Plot distance;
@@ -114,7 +119,7 @@ inline void save(const std::vector<Point>& points, const std::string& path) {
       hausdorff.name = meshes[m] + (p.convex ? " (exact convex axis)" : " (finest axis)");
       if (!p.reference) {
         hausdorff.x.push_back(p.h_axis_over_d);
-        hausdorff.y.push_back(p.hausdorff_over_d);
+        hausdorff.y.push_back(p.hausdorff_over_d < kSameAxis ? 0 : p.hausdorff_over_d);
       }
       if (p.convex) {
         core.x.push_back(p.h_axis_over_d);
