@@ -1,5 +1,7 @@
 // Exact burning engine on the synthetic complexes with singular edges as walls (issue 8,
-// part 1): exact closed forms where the walls do not change BT, and per-side arrivals.
+// part 1; ExactBurningOptions::singular_walls, `burn3d --singular-walls`): exact closed
+// forms where the walls do not change BT, and per-side arrivals. The junction rule itself
+// is tested in test_burn3_junction.cpp.
 #include <catch2/catch.hpp>
 
 #include <random>
@@ -33,6 +35,12 @@ BoardFinSide side_of(const MedialComplex& mc, std::uint32_t t) {
   return y > x && x > 3 ? BoardFinSide::Front : BoardFinSide::Back;  // centroid: x > 1 in units of 1/3
 }
 
+ExactBurningOptions walls() {
+  ExactBurningOptions o;
+  o.singular_walls = true;
+  return o;
+}
+
 ExactSum board_fin_part1(BoardFinSide side, const ExactPoint3& p) {
   if (side == BoardFinSide::Fin) return root(2 * (p.x - 1) * (p.x - 1));
   if (side == BoardFinSide::Front && p.x > 1)
@@ -46,7 +54,7 @@ TEST_CASE("board and fin with N as a wall: exact BT on board and fin, arrivals o
   BoardFinOptions o;
   o.extent = 5;
   const MedialComplex mc = built(board_fin(o));
-  ExactBurning eb(mc);
+  ExactBurning eb(mc, walls());
   eb.add_border_ignition();
   eb.run();
   CHECK(eb.certification().uncertified == 0);
@@ -87,7 +95,7 @@ TEST_CASE("board and fin with N as a wall: exact BT on board and fin, arrivals o
 TEST_CASE("book and Y with the spine as a wall: each page burns from its own border", "[exact3]") {
   for (const BookOptions& o : {y_junction_options(2), BookOptions{4, {1, 2, 2, 3}, 0, 1}}) {
     const MedialComplex mc = built(book(o));
-    ExactBurning eb(mc);
+    ExactBurning eb(mc, walls());
     eb.add_border_ignition();
     eb.run();
     CHECK(eb.certification().uncertified == 0);

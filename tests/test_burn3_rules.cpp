@@ -235,7 +235,6 @@ TEST_CASE("grassfire burn3d: JSON report, and clear errors with a non-zero exit"
   std::remove(json.c_str());
   for (const std::string& bad : {std::string(" burn3d no-such-thing"), std::string(" burn3d board-fin --spacing -1"),
                                  " burn3d " + std::string(GF_TEST_DATA) + "/3d/bad_index.ma",
-                                 std::string(" burn3d board-fin --method exact"),
                                  " burn3d " + std::string(GF_TEST_DATA) + "/builders3/open_cube.off",
                                  " burn3d " + std::string(GF_TEST_DATA) + "/builders3/empty.balls",
                                  " burn3d " + std::string(GF_TEST_DATA) + "/builders3/nan.balls",

@@ -6,12 +6,14 @@
 // vertices and at the queries as certified enclosures [lo, hi] of the exact value; each is
 // returned as its midpoint with the half-width rounded up as bt_error, so that
 // |bt - BT| <= bt_error holds for every finite value. Complexes this part of the engine
-// cannot burn by Definition 9 (singular edges, singular points without segments) are
-// refused with a message naming the input's count (exact_engine_unsupported), before any
-// burning, unless the request asks for singular walls (part 1's semantics: fronts stop at
-// every singular edge; the report and the summary say that this is not Definition 9). The report holds the propagation's counters and one counter per certification
-// stage; "uncertified" counts the wedge decisions no stage certified (each taken as
-// collinear and reported, DESIGN.md 3).
+// Singular edges follow the junction rule of Definition 9 and singular points the link rule
+// (issue 9); --singular-walls asks for part 1's semantics instead (fronts stop at every
+// singular edge: an upper bound of BT off the curves; the report and the summary say so).
+// The report holds the propagation's counters, the events by type, one counter per
+// certification stage ("uncertified" counts the wedge decisions no stage certified, each
+// taken as collinear and reported, DESIGN.md 3), and the kinks of the junction rule, each
+// a point of a singular edge with BT there: {"x","y","z","bt","error"}, |coordinate or bt -
+// exact| <= error (exact parameters are enclosed from their closed form).
 #include <chrono>
 #include <cmath>
 #include <limits>
@@ -39,7 +41,43 @@ nlohmann::json propagation_report(const PropagationStats& s) {
           {"vertex_burns", s.vertex_burns},
           {"segment_arrivals", s.segment_arrivals},
           {"border_arrivals", s.border_arrivals},
-          {"undecided_angles", s.undecided_angles}};
+          {"undecided_angles", s.undecided_angles},
+          {"junction_passes", s.junction_passes},
+          {"uncertified_breaks", s.uncertified_breaks}};
+}
+
+// Events by type (issue 9): windows reaching a vertex or a singular edge, kinks, merges
+// (fronts continued across a burned curve), quenched arrivals, vertices burned by the link
+// rule (singular points and curve vertices included), ends of burned stretches.
+nlohmann::json event_report(const PropagationStats& s) {
+  return {{"vertex_reached", s.vertex_events},    {"edge_reached", s.junction_records},
+          {"kinks", s.kinks},                     {"merges", s.merges},
+          {"quenched", s.quenched},               {"link_rule_burns", s.vertex_burns},
+          {"stretch_ends", s.stretch_ends}};
+}
+
+nlohmann::json kink_report(ExactBurning& eb) {
+  nlohmann::json r = nlohmann::json::array();
+  const WindowStore& s = eb.propagation().store();
+  const MedialComplex& mc = eb.complex();
+  for (const SweepEvent& ev : eb.propagation().events()) {
+    if (ev.kind != SweepEvent::Kind::Kink) continue;
+    const EdgePoint& ep = s.edge_points[ev.id];
+    const Interval l = ep.exact >= 0 ? s.exact_times[ep.exact].approx() : ep.lambda;
+    const ExactPoint3 &a = mc.vertex(mc.edge(ep.edge).v[0]).exact, &b = mc.vertex(mc.edge(ep.edge).v[1]).exact;
+    double error = 0.0;
+    std::array<double, 3> x{};
+    for (int i = 0; i < 3; ++i) {
+      const Interval ai = enclose(i == 0 ? a.x : i == 1 ? a.y : a.z), bi = enclose(i == 0 ? b.x : i == 1 ? b.y : b.z);
+      const Interval c = ai + l * (bi - ai);
+      x[i] = c.mid();
+      error = std::max(error, round_up(std::max(c.hi - x[i], x[i] - c.lo)));
+    }
+    const Interval bt = s.times[ev.time].value;
+    error = std::max(error, round_up(std::max(bt.hi - bt.mid(), bt.mid() - bt.lo)));
+    r.push_back({{"x", x[0]}, {"y", x[1]}, {"z", x[2]}, {"bt", bt.mid()}, {"error", error}});
+  }
+  return r;
 }
 
 nlohmann::json certification_report(const CertificationCounts& c) {
@@ -62,11 +100,14 @@ double seconds_since(std::chrono::steady_clock::time_point start) {
 BurnOutcome burn_by_exact(const BurnRequest& request) {
   const MedialComplex& mc = request.mc;
   const std::optional<std::string> why = exact_engine_unsupported(mc);
-  if (why && !request.singular_walls)
-    throw std::runtime_error(request.input + ": method 'exact' cannot burn this complex yet: it has " + *why +
-                             "; use --method discrete, or --singular-walls for fronts that stop at singular edges");
+  if (why)
+    throw std::runtime_error(request.input + ": method 'exact' cannot burn this complex: it has " + *why +
+                             "; use --method discrete");
+  const bool walls = request.singular_walls && mc.count(EdgeStratum::Singular) > 0;
   const auto start = std::chrono::steady_clock::now();
-  ExactBurning eb(mc);
+  ExactBurningOptions options;
+  options.singular_walls = request.singular_walls;
+  ExactBurning eb(mc, options);
   for (std::size_t i = 0; i < request.sources.size(); ++i) {
     try {
       eb.add_point_source(request.sources[i].location, request.sources[i].t0);
@@ -103,11 +144,14 @@ BurnOutcome burn_by_exact(const BurnRequest& request) {
                 {"query_candidates", q.candidates},
                 {"query_widened", q.widened},
                 {"max_vertex_bt_error", max_error},
-                {"singular_edges", why ? "walls (not Definition 9: fronts stop at singular edges)" : "none"}};
+                {"events", event_report(eb.propagation().stats())},
+                {"kinks", kink_report(eb)},
+                {"singular_edges", walls ? "walls (not Definition 9: fronts stop at singular edges)"
+                                         : mc.count(EdgeStratum::Singular) > 0 ? "junction rule (Definition 9)" : "none"}};
   std::ostringstream s;
   s << "exact: " << eb.propagation().stats().windows << " windows, " << c.uncertified << " uncertified decisions, "
     << "max vertex error " << max_error << ", " << out.report["seconds"].get<double>() << " s";
-  if (why) s << "; singular edges burned as walls, not Definition 9";
+  if (walls) s << "; singular edges burned as walls, not Definition 9";
   out.summary = s.str();
   return out;
 }

@@ -32,9 +32,11 @@ namespace {
 void load_exact_field(FieldInput& in, bool singular_walls, double spacing, const std::string& input) {
   const std::optional<std::string> why = exact_engine_unsupported(*in.complex);
   if (why && !singular_walls)
-    throw std::runtime_error(input + ": method 'exact' cannot burn this complex yet: it has " + *why +
-                             "; use --method discrete, or --singular-walls for fronts that stop at singular edges");
-  in.exact = std::make_unique<ExactBurning>(*in.complex);
+    throw std::runtime_error(input + ": method 'exact' cannot burn this complex: it has " + *why +
+                             "; use --method discrete");
+  ExactBurningOptions options;
+  options.singular_walls = singular_walls;  // else Definition 9 (the junction rule)
+  in.exact = std::make_unique<ExactBurning>(*in.complex, options);
   in.exact->add_border_ignition();
   in.exact->run();
   in.field = std::make_unique<ExactBurningField>(*in.exact, spacing);

@@ -160,41 +160,36 @@ Interval ExactBurning::segment_burn_time(std::uint32_t e, const mpq_class& s) {
   return best;
 }
 
+Interval ExactBurning::edge_burn_time(std::uint32_t e, const ExactPoint3& x) {
+  std::vector<Interval> sides;
+  for (std::uint32_t t : mc_.edge_triangles(e)) sides.push_back(burn_time(t, x));
+  if (sides.empty()) throw std::invalid_argument("edge_burn_time: edge " + std::to_string(e) + " has no triangle");
+  // The j-th smallest of enclosures: lower ends and upper ends sorted separately.
+  const std::size_t j = mc_.edge(e).stratum == EdgeStratum::Singular && !prop_->walls() ? sides.size() - 2 : 0;
+  std::vector<double> lo, hi;
+  for (const Interval& i : sides) lo.push_back(i.lo), hi.push_back(i.hi);
+  std::nth_element(lo.begin(), lo.begin() + j, lo.end());
+  std::nth_element(hi.begin(), hi.begin() + j, hi.end());
+  return {lo[j], hi[j]};
+}
+
 Interval ExactBurning::burn_time(const ComplexPoint& x) {
   switch (x.kind) {
     case ComplexPoint::Kind::Vertex:
       return vertex_burn_time(x.id);
-    case ComplexPoint::Kind::Edge: {
+    case ComplexPoint::Kind::Edge:
       if (mc_.edge(x.id).stratum == EdgeStratum::Dangling) return segment_burn_time(x.id, x.parameter);
-      Interval best = Interval::infinity();
-      for (std::uint32_t t : mc_.edge_triangles(x.id)) {
-        const Interval b = burn_time(t, x.point);
-        best = best.is_infinite() ? b : Interval(std::min(best.lo, b.lo), std::min(best.hi, b.hi));
-      }
-      return best;
-    }
+      return edge_burn_time(x.id, x.point);
     case ComplexPoint::Kind::Triangle:
       break;
   }
   return burn_time(x.id, x.point);
 }
 
-std::optional<std::string> exact_engine_unsupported(const MedialComplex& mc) {
-  const std::size_t singular_edges = mc.count(EdgeStratum::Singular);
-  if (singular_edges > 0)
-    return std::to_string(singular_edges) + (singular_edges == 1 ? " singular edge" : " singular edges") + " (curves where three or more sheets meet); the exact "
-           "engine does not yet apply the junction rule of Definition 9 there (issue 9)";
-  std::size_t points = 0;
-  for (std::uint32_t v = 0; v < mc.vertex_count(); ++v) {
-    if (mc.vertex(v).kind != VertexKind::SingularPoint) continue;
-    bool segment = false;
-    for (const LinkElement& el : mc.link_elements(v))
-      segment = segment || (el.is_pole && mc.edge(el.id).stratum == EdgeStratum::Dangling);
-    if (!segment) ++points;
-  }
-  if (points > 0)
-    return std::to_string(points) + (points == 1 ? " singular point" : " singular points") + " where sheets meet at a point; the exact engine applies the "
-           "link rule only at vertices with segments (issue 9)";
+std::optional<std::string> exact_engine_unsupported(const MedialComplex&) {
+  // Singular edges follow the junction rule (edge_junction.cpp) and singular points the
+  // link rule (vertex_burning.cpp) since issue 9: every validated complex is burned. What
+  // stays unsupported is per source, not per complex: a point source inside a segment.
   return std::nullopt;
 }
 

@@ -3,8 +3,11 @@
 //
 // Computes BT as an exact piecewise function: per triangle, the windows that can realise
 // it (each a pseudo-source image, an offset and a wedge; windows.h), built by
-// WindowPropagation from point sources and the border ignition rules, with singular edges
-// as walls in this part. From it:
+// WindowPropagation from point sources and the border ignition rules, with the junction
+// rule of Definition 9 on singular edges (edge_junction.cpp: the (k-1)-th arrival, pieces
+// rotated into the other sheet sides, kinks as point sources) and the link rule at vertices
+// on singular curves, singular points and segment ends (vertex_burning.cpp); or with
+// singular edges as walls when ExactBurningOptions::singular_walls asks. From it:
 //  - burn_time(t, x): a certified enclosure of BT at a point of a triangle (the minimum of
 //    the enclosures of every window whose closed wedge contains x; membership certified
 //    by Certifier::side, and an undecided membership widens the upper end by twice the
@@ -35,9 +38,9 @@ struct QueryCounts {
   std::uint64_t widened = 0;     // memberships no stage decided (enclosure widened)
 };
 
-// What this part of the engine cannot burn as Definition 9 asks, or none: singular edges
-// (walls here; the junction rule is issue 9) and singular points that are not link-rule
-// vertices (no segment at them). The message names the count and the reason.
+// What the engine cannot burn as Definition 9 asks, or none. Since issue 9 nothing
+// structural: every validated complex (singular edges and points included) is burned; kept
+// for callers that ask (sources inside segments are refused by add_point_source instead).
 std::optional<std::string> exact_engine_unsupported(const MedialComplex& mc);
 
 class ExactBurning {
@@ -61,8 +64,13 @@ class ExactBurning {
   // BT at the point (1 - s) v0 + s v1 of a segment (dangling edge), 0 <= s <= 1: fire runs
   // along it from its burned ends (the 2D rule, 3.3.1).
   Interval segment_burn_time(std::uint32_t e, const mpq_class& s);
+  // BT at a point inside edge e (exact, on the edge): the minimum over its triangles'
+  // closures on a manifold or border edge; on a singular edge with k sides the (k-1)-th
+  // smallest of them (the junction rule: each side's value is its own arrival or the
+  // curve's emission, whichever is earlier).
+  Interval edge_burn_time(std::uint32_t e, const ExactPoint3& x);
   // BT at a located point (vertex, edge, triangle; any edge stratum): the minimum over the
-  // closed cells that contain it.
+  // closed cells that contain it (edge_burn_time inside edges).
   Interval burn_time(const ComplexPoint& x);
   std::vector<Interval> vertex_burn_times();
 

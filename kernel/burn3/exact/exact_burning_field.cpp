@@ -57,7 +57,7 @@ bool starts_fire(SourceOrigin o) {
 }  // namespace
 
 ExactBurningField::ExactBurningField(ExactBurning& eb, double edge_spacing)
-    : eb_(eb), mc_(eb.complex()), h_(edge_spacing), definition9_(!exact_engine_unsupported(eb.complex())) {
+    : eb_(eb), mc_(eb.complex()), h_(edge_spacing), definition9_(!exact_engine_unsupported(eb.complex()) && !eb.propagation().walls()) {
   if (!(h_ > 0) || !std::isfinite(h_)) throw std::invalid_argument("ExactBurningField: the edge spacing must be positive");
   method_ = definition9_ ? "exact (window propagation, Definition 9)"
                          : "exact (window propagation, singular edges as walls: an upper bound of BT, not Definition 9)";

@@ -101,6 +101,25 @@ std::optional<ExactSum> exact_vertex_ignition(const MedialComplex& mc, std::uint
   return best;
 }
 
+Ball edge_point_lambda_ball(const WindowStore& s, std::uint32_t id) {
+  const EdgePoint& ep = s.edge_points[id];
+  return ep.exact >= 0 ? ball_of(s.exact_times[ep.exact]) : Ball::from_interval(ep.lambda);
+}
+
+DiscPoint edge_point_image(const Unfolding& u, const WindowStore& s, std::uint32_t t, std::uint32_t id) {
+  const EdgePoint& ep = s.edge_points[id];
+  const auto& ev = u.complex().edge(ep.edge).v;
+  const DiscPoint a = u.vertex_image(t, ev[0]), b = u.vertex_image(t, ev[1]);
+  return DiscPoint::from_intervals(a.ix() + ep.lambda * (b.ix() - a.ix()), a.iy() + ep.lambda * (b.iy() - a.iy()));
+}
+
+BallVec2 edge_point_ball(const Unfolding& u, const WindowStore& s, std::uint32_t t, std::uint32_t id) {
+  const auto& ev = u.complex().edge(s.edge_points[id].edge).v;
+  const BallVec2 a = u.vertex_ball(t, ev[0]), b = u.vertex_ball(t, ev[1]);
+  const Ball l = edge_point_lambda_ball(s, id);
+  return {a.x + l * (b.x - a.x), a.y + l * (b.y - a.y)};
+}
+
 RootDisc root_disc(const Unfolding& u, const WindowStore& s, std::uint32_t p, std::uint32_t t) {
   const PseudoSource& ps = s.pseudo[p];
   const MedialComplex& mc = u.complex();
@@ -112,6 +131,10 @@ RootDisc root_disc(const Unfolding& u, const WindowStore& s, std::uint32_t p, st
       return r;
     case SourceOrigin::Vertex:
       r.source = u.vertex_image(t, ps.vertex);
+      r.offset = ps.sigma;
+      return r;
+    case SourceOrigin::EdgePoint:
+      r.source = edge_point_image(u, s, t, ps.data);
       r.offset = ps.sigma;
       return r;
     case SourceOrigin::BorderPoint:
@@ -148,6 +171,10 @@ RootBall root_ball(const Unfolding& u, const WindowStore& s, std::uint32_t p, st
       return r;
     case SourceOrigin::Vertex:
       r.source = u.vertex_ball(t, ps.vertex);
+      r.offset = sigma;
+      return r;
+    case SourceOrigin::EdgePoint:
+      r.source = edge_point_ball(u, s, t, ps.data);
       r.offset = sigma;
       return r;
     case SourceOrigin::BorderPoint:

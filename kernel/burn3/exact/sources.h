@@ -13,6 +13,7 @@
 //    sheet's plane, on the far side of the edge: S = a + alpha (b - a) - h n, n the unit
 //    normal into the triangle, alpha = (p - a).(b - a) / |b - a|^2, h^2 = |p - a|^2 - alpha^2 |b - a|^2
 //    (both rational), so that |S - y| = |p - y| for y on the edge's line;
+//  - the image of a point of an edge (a kink of the junction rule) in a triangle's frame;
 //  - the root image of a pseudo-source in a triangle's frame, as a double disc (with an
 //    Interval offset) or an Arb ball (for the certified re-evaluation): the point S (with
 //    offset sigma), or for a plane wave the unit direction u with time c + u . X,
@@ -52,6 +53,13 @@ struct RootBall {
 // current precision (the caller evaluates vertex offsets along their spawning chain).
 RootDisc root_disc(const Unfolding& u, const WindowStore& s, std::uint32_t p, std::uint32_t t);
 RootBall root_ball(const Unfolding& u, const WindowStore& s, std::uint32_t p, std::uint32_t t, const Ball& sigma);
+
+// The image of edge point `id` (an index into s.edge_points) in the frame of triangle t,
+// which contains its edge: (1 - lambda) A + lambda B from the edge ends' images.
+DiscPoint edge_point_image(const Unfolding& u, const WindowStore& s, std::uint32_t t, std::uint32_t id);
+BallVec2 edge_point_ball(const Unfolding& u, const WindowStore& s, std::uint32_t t, std::uint32_t id);
+// lambda as a ball at the current precision (exact: from its ExactSum; else its enclosure).
+Ball edge_point_lambda_ball(const WindowStore& s, std::uint32_t id);
 
 // The border edge's only triangle (the sheet side that a border rule ignites).
 std::uint32_t border_triangle(const MedialComplex& mc, std::uint32_t e);

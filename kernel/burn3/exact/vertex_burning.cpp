@@ -32,8 +32,8 @@ std::vector<std::uint32_t> sectors_of(const MedialComplex& mc, std::uint32_t v) 
 
 }  // namespace
 
-// Part 1: the link rule runs where segments meet; singular curves are walls, so a vertex
-// with a singular pole is left to the junction rules (part 2).
+// The link rule runs where segments or singular curves meet the vertex; the poles along a
+// singular curve receive their arrivals from the edge's junction rule (edge_junction.cpp).
 void WindowPropagation::init_links() {
   link_of_.assign(mc_.vertex_count(), kNoIndex);
   for (std::uint32_t v = 0; v < mc_.vertex_count(); ++v) {
@@ -43,7 +43,9 @@ void WindowPropagation::init_links() {
       (mc_.edge(el.id).stratum == EdgeStratum::Dangling ? segment : singular) = true;
     }
     if (mc_.vertex(v).kind == VertexKind::Isolated) segment = true;  // burns at f alone
-    if (!segment || singular) continue;
+    if (mc_.is_singular_point(v)) singular = true;  // sheets meeting at a point: Prop 6's link rule
+    if (o_.singular_walls && singular) continue;  // part 1: the curve is a wall, no link rule
+    if (!segment && !singular) continue;
     link_of_[v] = static_cast<std::uint32_t>(links_.size());
     LinkState l;
     l.arrival.assign(mc_.link_elements(v).size(), kNoIndex);

@@ -65,7 +65,15 @@ int ball_sign(const Ball& b) {
 }  // namespace
 
 DiscPoint Certifier::target_disc(std::uint32_t t, const Target& x) const {
-  return x.point ? u_.point_image(t, *x.point) : u_.vertex_image(t, x.vertex);
+  if (x.point) return u_.point_image(t, *x.point);
+  if (is_edge_point(x.vertex)) return edge_point_image(u_, s_, t, x.vertex & ~kEdgePointBound);
+  return u_.vertex_image(t, x.vertex);
+}
+
+BallVec2 Certifier::target_ball(std::uint32_t t, const Target& x) const {
+  if (x.point) return u_.point_ball(t, *x.point);
+  if (is_edge_point(x.vertex)) return edge_point_ball(u_, s_, t, x.vertex & ~kEdgePointBound);
+  return u_.vertex_ball(t, x.vertex);
 }
 
 Interval Certifier::time_interval(std::uint32_t w, const Target& x) const {
@@ -74,8 +82,18 @@ Interval Certifier::time_interval(std::uint32_t w, const Target& x) const {
   return {round_down(a.v - a.e), round_up(a.v + a.e)};
 }
 
-XV Certifier::target_uv(std::uint32_t f, const Target& x) const {
-  return xv(x.point ? u_.point_uv(f, *x.point) : u_.vertex_uv(f, x.vertex));
+std::optional<XV> Certifier::target_uv(std::uint32_t f, const Target& x) const {
+  if (x.point) return xv(u_.point_uv(f, *x.point));
+  if (!is_edge_point(x.vertex)) return xv(u_.vertex_uv(f, x.vertex));
+  // (1 - lambda) a + lambda b with lambda exact.
+  const EdgePoint& ep = s_.edge_points[x.vertex & ~kEdgePointBound];
+  if (ep.exact < 0) return std::nullopt;
+  const auto& ev = u_.complex().edge(ep.edge).v;
+  const auto a = u_.vertex_uv(f, ev[0]), b = u_.vertex_uv(f, ev[1]);
+  const ExactSum& l = s_.exact_times[ep.exact];
+  XV r{q(a[0]) + scaled(l, mpq_class(b[0] - a[0])), q(a[1]) + scaled(l, mpq_class(b[1] - a[1]))};
+  r[0].simplify(), r[1].simplify();
+  return r;
 }
 
 // ---- stage 4: Arb re-evaluation of the chain -------------------------------------------
@@ -94,6 +112,7 @@ Ball Certifier::expr_ball(std::uint32_t i) {
     case TimeExpr::Kind::Exact: r = ball_of(s_.exact_times[e.a]); break;
     case TimeExpr::Kind::WindowAt: r = time_ball(e.a, Target{e.b, nullptr}); break;
     case TimeExpr::Kind::Plus: r = expr_ball(e.a) + sqrt(ball_of(edge_length2(e.b))); break;
+    case TimeExpr::Kind::Enclosure: r = Ball::from_interval(e.value); break;
     case TimeExpr::Kind::Min: {
       const Ball x = expr_ball(e.a), y = expr_ball(e.b);
       arb_min(r.get(), x.get(), y.get(), BallPrecision::bits());
@@ -115,9 +134,8 @@ WindowBall Certifier::evaluate(std::uint32_t w, bool with_offset) {
   std::reverse(chain.begin(), chain.end());
   const Window& first = s_.windows[chain[0]];
   const Window& last = s_.windows[w];
-  const bool point_kind = s_.pseudo[first.pseudo].origin == SourceOrigin::GivenPoint ||
-                          s_.pseudo[first.pseudo].origin == SourceOrigin::Vertex ||
-                          s_.pseudo[first.pseudo].origin == SourceOrigin::BorderPoint;
+  const SourceOrigin origin = s_.pseudo[first.pseudo].origin;
+  const bool point_kind = origin != SourceOrigin::BorderPlane;
   const RootBall r =
       root_ball(u_, s_, first.pseudo, first.triangle, point_kind && with_offset ? sigma_ball(first.pseudo) : Ball(0.0));
   WindowBall b{r.source, r.offset, {}, r.plane};
@@ -140,7 +158,7 @@ WindowBall Certifier::evaluate(std::uint32_t w, bool with_offset) {
     }
     for (int j = 0; j < 2; ++j)
       if (!taken[j] && last.bound[j] != kNoIndex && last.bound_depth[j] == i) {
-        b.image[j] = u_.vertex_ball(wi.triangle, last.bound[j]);
+        b.image[j] = target_ball(wi.triangle, Target{last.bound[j], nullptr});
         taken[j] = true;
       }
   }
@@ -150,7 +168,7 @@ WindowBall Certifier::evaluate(std::uint32_t w, bool with_offset) {
 Ball Certifier::time_ball(std::uint32_t w, const Target& x) {
   const WindowBall b = evaluate(w, true);
   const std::uint32_t t = s_.windows[w].triangle;
-  const BallVec2 p = x.point ? u_.point_ball(t, *x.point) : u_.vertex_ball(t, x.vertex);
+  const BallVec2 p = target_ball(t, x);
   if (b.plane) return b.offset + b.source.x * p.x + b.source.y * p.y;
   const BallVec2 d = ball_sub(p, b.source);
   return b.offset + sqrt(d.x * d.x + d.y * d.y);
@@ -172,18 +190,38 @@ int Certifier::escalate(long cap, F&& sign_at_precision) {
 
 // ---- stage 2: structural equality ------------------------------------------------------
 
+// One point source, or the sources a vertex emits into its sectors at one time expression
+// (the link rule and vertex burns give every sector the same expression).
+bool Certifier::same_point_source(std::uint32_t pa, std::uint32_t pb) const {
+  const PseudoSource &a = s_.pseudo[pa], &b = s_.pseudo[pb];
+  if (pa == pb)
+    return a.origin == SourceOrigin::Vertex || a.origin == SourceOrigin::GivenPoint || a.origin == SourceOrigin::EdgePoint;
+  return a.origin == SourceOrigin::Vertex && b.origin == SourceOrigin::Vertex && a.vertex == b.vertex &&
+         a.time == b.time && a.time != kNoIndex;
+}
+
 bool Certifier::same_expression(std::uint32_t w1, std::uint32_t w2, const Target& x) const {
   const Window &a0 = s_.windows[w1], &b0 = s_.windows[w2];
+  if (a0.parent == kNoIndex && b0.parent == kNoIndex && same_point_source(a0.pseudo, b0.pseudo)) {
+    // Two first windows of one point S (closed in both triangles): at a point x of both
+    // closed triangles the time is sigma + |x - S| measured in 3D (a straight segment inside
+    // each triangle): a vertex of both, or a point of an edge of both.
+    const MedialComplex& mc = u_.complex();
+    const ComplexTriangle &ta = mc.triangle(a0.triangle), &tb = mc.triangle(b0.triangle);
+    if (!x.point) {
+      if (corner_of(ta, x.vertex) >= 0 && corner_of(tb, x.vertex) >= 0) return true;
+    } else {
+      for (std::uint32_t e : ta.e) {
+        if (std::find(tb.e.begin(), tb.e.end(), e) == tb.e.end()) continue;
+        const ExactPoint3 &p = mc.vertex(mc.edge(e).v[0]).exact, &q = mc.vertex(mc.edge(e).v[1]).exact;
+        if (cross(q - p, *x.point - p) == ExactPoint3{} && sgn(dot(*x.point - p, *x.point - q)) <= 0) return true;
+      }
+    }
+  }
   if (a0.pseudo != b0.pseudo) return false;
   const SourceOrigin origin = s_.pseudo[a0.pseudo].origin;
-  const bool point_kind = origin == SourceOrigin::Vertex || origin == SourceOrigin::GivenPoint;
-  if (a0.parent == kNoIndex && b0.parent == kNoIndex && !x.point && point_kind) {
-    // Two first windows of one point source: at a vertex of both triangles the time is
-    // sigma + |x - S| measured in 3D (a straight segment inside each triangle).
-    const MedialComplex& mc = u_.complex();
-    if (corner_of(mc.triangle(a0.triangle), x.vertex) >= 0 && corner_of(mc.triangle(b0.triangle), x.vertex) >= 0)
-      return true;
-  }
+  const bool point_kind =
+      origin == SourceOrigin::Vertex || origin == SourceOrigin::GivenPoint || origin == SourceOrigin::EdgePoint;
   // Equal sequences of frame changes give the same source image.
   std::uint32_t p = a0.anchor, q = b0.anchor;
   for (;;) {
@@ -229,6 +267,7 @@ const ExactSum* Certifier::exact_expr(std::uint32_t i) {
     case TimeExpr::Kind::Plus:
       if (const ExactSum* x = exact_expr(e.a)) r = *x + ExactSum::sqrt_of(edge_length2(e.b));
       break;
+    case TimeExpr::Kind::Enclosure: break;
     case TimeExpr::Kind::Min: {
       const ExactSum* x = exact_expr(e.a);
       const ExactSum* y = x ? exact_expr(e.b) : nullptr;
@@ -308,6 +347,10 @@ std::unique_ptr<Certifier::ExactWindow> Certifier::build_exact_window(std::uint3
     e->d = sub(xv(u_.vertex_uv(e->frame, ev[1])), e->p);
     const XV c = xv(u_.vertex_uv(e->frame, third_vertex(mc.triangle(border_triangle(mc, edge)), ev)));
     e->inner = exact_sign(cross_xv(e->d, sub(c, e->p)));
+  } else if (ps.origin == SourceOrigin::EdgePoint) {
+    const std::optional<XV> p = target_uv(e->frame, Target{ps.data | kEdgePointBound, nullptr});
+    if (!p) return nullptr;
+    e->s = *p;
   } else {
     e->s = xv(ps.origin == SourceOrigin::Vertex ? u_.vertex_uv(e->frame, ps.vertex)
                                                  : u_.point_uv(e->frame, s_.given[ps.data].point));
@@ -338,7 +381,9 @@ std::unique_ptr<Certifier::ExactWindow> Certifier::build_exact_window(std::uint3
     }
     for (int j = 0; j < 2; ++j)
       if (!taken[j] && last.bound[j] != kNoIndex && last.bound_depth[j] == i) {
-        e->image[j] = xv(u_.vertex_uv(e->frame, last.bound[j]));
+        const std::optional<XV> b = target_uv(e->frame, Target{last.bound[j], nullptr});
+        if (!b) return nullptr;
+        e->image[j] = *b;
         taken[j] = true;
       }
   }
@@ -346,7 +391,9 @@ std::unique_ptr<Certifier::ExactWindow> Certifier::build_exact_window(std::uint3
 }
 
 int Certifier::exact_side(const ExactWindow& e, int j, const Target& x) const {
-  const XV p = target_uv(e.frame, x);
+  const std::optional<XV> px = target_uv(e.frame, x);
+  if (!px) return kUndecided;
+  const XV& p = *px;
   if (!e.line) return exact_sign(cross_xv(sub(e.image[j], e.s), sub(p, e.s)));
   // side = cross(u, X - B) with u the inner unit normal: sign = -inner * sign(E . (X - B)),
   // the dot product in the frame's metric.
@@ -358,7 +405,9 @@ std::optional<ExactSum> Certifier::exact_time(std::uint32_t w, const Target& x) 
   if (!e) return std::nullopt;
   const ExactSum* sigma = exact_sigma(s_.windows[w].pseudo);
   if (!sigma) return std::nullopt;
-  const XV p = target_uv(e->frame, x);
+  const std::optional<XV> px = target_uv(e->frame, x);
+  if (!px) return std::nullopt;
+  const XV& p = *px;
   const mpq_class &g1 = u_.g1(e->frame), &g2 = u_.g2(e->frame);
   ExactSum r = *sigma;
   if (!e->line) {
@@ -415,13 +464,15 @@ int Certifier::side(std::uint32_t w, int j, const Target& x) {
   }
   if (const ExactWindow* ew = exact_window(w)) {
     const int e = exact_side(*ew, j, x);
-    ++(e == 0 ? counts.exact_equal : counts.exact);
-    return e;
+    if (e != kUndecided) {
+      ++(e == 0 ? counts.exact_equal : counts.exact);
+      return e;
+    }
   }
   const int a = escalate(max_bits_, [&] {
     const WindowBall b = evaluate(w, false);
     const std::uint32_t t = win.triangle;
-    const BallVec2 p = x.point ? u_.point_ball(t, *x.point) : u_.vertex_ball(t, x.vertex);
+    const BallVec2 p = target_ball(t, x);
     if (b.plane) return ball_sign(ball_cross(b.source, ball_sub(p, b.image[j])));
     return ball_sign(ball_cross(ball_sub(b.image[j], b.source), ball_sub(p, b.source)));
   });

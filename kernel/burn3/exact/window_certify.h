@@ -35,7 +35,8 @@
 
 namespace grassfire {
 
-// A point where a window is evaluated: a vertex of the window's triangle, or an exact point.
+// A point where a window is evaluated: a vertex of the window's triangle, an exact point,
+// or a point of one of its edges (vertex = kEdgePointBound | edge point index).
 struct Target {
   std::uint32_t vertex = kNoIndex;
   const ExactPoint3* point = nullptr;
@@ -60,6 +61,7 @@ class Certifier {
 
   // Enclosures at the double stage and at the current BallPrecision.
   DiscPoint target_disc(std::uint32_t t, const Target& x) const;
+  BallVec2 target_ball(std::uint32_t t, const Target& x) const;
   Interval time_interval(std::uint32_t w, const Target& x) const;
   Ball time_ball(std::uint32_t w, const Target& x);
   // The chain re-evaluated in Arb; the offset only when asked (it recurses through the
@@ -96,8 +98,9 @@ class Certifier {
   Ball sigma_ball(std::uint32_t pseudo);
   void trim_memos();  // only between decisions: pointers into the memo stay valid within one
   bool same_expression(std::uint32_t w1, std::uint32_t w2, const Target& x) const;
+  bool same_point_source(std::uint32_t pa, std::uint32_t pb) const;
   bool bound_fixed(std::uint32_t w, int j, std::uint32_t v) const;
-  ExactVector target_uv(std::uint32_t f, const Target& x) const;
+  std::optional<ExactVector> target_uv(std::uint32_t f, const Target& x) const;
   int exact_side(const ExactWindow& e, int j, const Target& x) const;
   int exact_direction_cross(const ExactWindow& a, const ExactWindow& b, std::uint32_t v) const;
   std::unique_ptr<ExactWindow> build_exact_window(std::uint32_t w);

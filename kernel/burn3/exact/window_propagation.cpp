@@ -2,6 +2,7 @@
 #include "burn3/exact/window_propagation.h"
 
 #include <chrono>
+#include <cmath>
 #include <limits>
 #include <stdexcept>
 
@@ -24,6 +25,12 @@ WindowPropagation::WindowPropagation(const Unfolding& u, const ExactBurningOptio
   sector_source_.assign(S, kNoIndex);
   stats_.undecided_angles = sectors_.undecided_angles;
   init_links();
+  junction_of_.assign(mc_.edge_count(), kNoIndex);
+  for (std::uint32_t e = 0; e < mc_.edge_count(); ++e)
+    if (mc_.edge(e).stratum == EdgeStratum::Singular) {
+      junction_of_[e] = static_cast<std::uint32_t>(junctions_.size());
+      junctions_.emplace_back();
+    }
   s_.windows.reserve(16 * mc_.triangle_count() + 64);
 }
 
@@ -92,6 +99,14 @@ std::uint32_t WindowPropagation::window_time_at(std::uint32_t w, std::uint32_t v
   e.kind = TimeExpr::Kind::WindowAt;
   e.a = w, e.b = v;
   e.value = cert_.time_interval(w, Target{v, nullptr});
+  // A chain through an ill-conditioned unfolding (a tiny edge, a crossing of a singular
+  // curve at a small angle) widens the double enclosure; this value becomes a vertex's BT,
+  // a source's offset, an arrival on a curve: re-evaluate it in Arb then.
+  if (e.value.hi - e.value.lo > 0x1p-32 * std::max(1.0, std::fabs(e.value.lo))) {
+    BallPrecision bits(128);
+    const Interval tight = intersect(e.value, cert_.time_ball(w, Target{v, nullptr}).to_interval());
+    if (tight.lo <= tight.hi) e.value = tight;
+  }
   return new_time(e);
 }
 
@@ -220,8 +235,10 @@ void WindowPropagation::run() {
       case EventKind::SegmentArrival: process_segment_arrival(top.id); break;
       case EventKind::VertexSource: process_vertex_source(top.id, top.key); break;
       case EventKind::VertexBurn: process_burn(top.id, top.key); break;
+      case EventKind::Junction: process_junction(top.id, top.key); break;
     }
   }
+  count_quenched();
   stats_.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
@@ -244,7 +261,9 @@ void WindowPropagation::process_root(std::uint32_t w) {
   for (int i = 0; i < 3; ++i)
     if (tr.v[i] != at) vertex_arrival(w, tr.v[i], sectors_.corner_sector[3 * W.triangle + i]);
   for (int k = 0; k < 3; ++k) {
-    if (!((W.exits >> k) & 1)) continue;
+    // A root covers its whole triangle: every singular edge of it receives an arrival.
+    const bool junction = !o_.singular_walls && mc_.edge(tr.e[k]).stratum == EdgeStratum::Singular;
+    if (!((W.exits >> k) & 1) && !junction) continue;
     const int ia = (k + 1) % 3, ib = (k + 2) % 3;
     // Seen from S (on the side of corner k), corner ia is clockwise of ib iff
     // cross(a - S, b - S) > 0, iff the triangle turns counter-clockwise.
@@ -279,17 +298,41 @@ void WindowPropagation::process_entered(std::uint32_t w) {
   const int s0 = cert_.side(w, 0, Target{o, nullptr});
   if (s0 < 0) {  // o clockwise of the wedge: everything leaves through (o, q)
     make_child(w, ip, k, iq, B0, B1, third_p, tr.v[ip]);
+    graze_singular_edges(w, k, ip);
     return;
   }
   const int s1 = cert_.side(w, 1, Target{o, nullptr});
   if (s1 > 0) {  // o counter-clockwise of the wedge: everything leaves through (p, o)
     make_child(w, iq, ip, k, B0, B1, third_q, tr.v[iq]);
+    graze_singular_edges(w, k, iq);
     return;
   }
   const auto [left, right] = reach_opposite(w, k);
   if (s0 > 0 && left) make_child(w, iq, ip, k, B0, O, third_q, tr.v[iq]);
   if (s1 < 0 && right) make_child(w, ip, k, iq, O, B1, third_p, tr.v[ip]);
   stats_.split_pruned += (s0 > 0 && !left) + (s1 < 0 && !right);
+  if (s0 == 0) graze_singular_edges(w, k, ip);  // the ray through o may run along (p, o)
+  if (s1 == 0) graze_singular_edges(w, k, iq);  // ... or along (o, q)
+}
+
+// A front that grazes a singular edge of its triangle (a wedge ray runs along it: the plane
+// wave from the fin's border along N) arrives there without crossing it: record it when
+// both ends of the edge lie in the closed wedge (certified), for the edge slots other than
+// the entry slot and the slot exited through.
+void WindowPropagation::graze_singular_edges(std::uint32_t w, int entry_slot, int exit_slot) {
+  if (o_.singular_walls) return;
+  const Window W = s_.windows[w];
+  const ComplexTriangle& tr = mc_.triangle(W.triangle);
+  for (int m = 0; m < 3; ++m) {
+    if (m == entry_slot || m == exit_slot || mc_.edge(tr.e[m]).stratum != EdgeStratum::Singular) continue;
+    const auto& ev = mc_.edge(tr.e[m]).v;
+    bool inside = true;
+    for (std::uint32_t v : ev)
+      inside = inside && cert_.side(w, 0, Target{v, nullptr}) >= 0 && cert_.side(w, 1, Target{v, nullptr}) <= 0;
+    if (!inside) continue;
+    const Bound a{ev[0], u_.vertex_image(W.triangle, ev[0]), W.depth}, b{ev[1], u_.vertex_image(W.triangle, ev[1]), W.depth};
+    junction_arrival(w, tr.e[m], a, b, a.image, b.image, true);
+  }
 }
 
 // Window w reaches the vertex o opposite its entry edge (corner k): the occupier rule of
@@ -413,6 +456,21 @@ void WindowPropagation::make_child(std::uint32_t w, int exit_slot, int icw, int 
     ++stats_.border_arrivals;
     return;
   }
+  if (ed.stratum == EdgeStratum::Singular) {  // an arrival at a junction (edge_junction.cpp)
+    ++stats_.wall_arrivals;
+    if (!o_.singular_walls) junction_arrival(w, E, b0, b1, x0, x1, false);
+    return;
+  }
+  const auto& ts = mc_.edge_triangles(E);
+  enter_child(w, E, ts[0] == t ? ts[1] : ts[0], b0, b1, std::max(W.key, approx_lower_bound(W, x0, x1)));
+}
+
+// The child of w entering t2 across edge E, its wedge bounded by b0 (clockwise) and b1 in
+// w's frame: unfolded into t2's frame (a reflection swaps the bounds).
+void WindowPropagation::enter_child(std::uint32_t w, std::uint32_t E, std::uint32_t t2, const Bound& b0,
+                                    const Bound& b1, double key) {
+  const Window W = s_.windows[w];
+  const std::uint32_t t = W.triangle;
   Window c;
   c.pseudo = W.pseudo;
   c.parent = w;
@@ -420,15 +478,9 @@ void WindowPropagation::make_child(std::uint32_t w, int exit_slot, int icw, int 
   c.edge = E;
   c.bound = {b0.vertex, b1.vertex};
   c.bound_depth = {b0.depth, b1.depth};
-  c.key = std::max(W.key, approx_lower_bound(W, x0, x1));
+  c.key = key;
   c.flags = static_cast<std::uint8_t>(W.flags & Window::kPlane);
   c.anchor = W.anchor;
-  if (ed.stratum == EdgeStratum::Singular) {  // a wall (part 1): the front stops here
-    ++stats_.wall_arrivals;
-    return;
-  }
-  const auto& ts = mc_.edge_triangles(E);
-  const std::uint32_t t2 = ts[0] == t ? ts[1] : ts[0];
   c.triangle = t2;
   if (u_.same_frame(t, t2)) {
     c.source = W.source;

@@ -2,9 +2,12 @@
 // propagated across the sheets of a medial complex (4.2.3, 5.2; DESIGN.md 5).
 //
 // Computes: every window that can realise the burning time BT inside the sheets, from the
-// caller's point sources and the border ignition rules, with singular edges as walls
-// (issue 8, part 1). The arrival of fire at a wall through one of its sheet sides t is the
-// minimum of t's windows along the edge (fronts often graze a wall rather than cross it).
+// caller's point sources and the border ignition rules, with Definition 9 at singular
+// edges (the junction rule, edge_junction.cpp: arrivals recorded per sheet side, including
+// fronts that only graze the edge; the edge burns at the (k-1)-th arrival; its pieces
+// continue into the other sides as child windows across the edge, kinks and stretch ends
+// as EdgePoint point sources) and at vertices with segments or singular poles (the link
+// rule, vertex_burning.cpp); ExactBurningOptions::singular_walls keeps issue 8's walls.
 // The method is Chen and Han's window propagation with the improvements of Xin and Wang
 // 2009 (ICH, as in CGAL's Surface_mesh_shortest_path): a priority queue ordered by a
 // certified lower bound of each window's times (so that, as in Dijkstra's algorithm, every
@@ -34,6 +37,7 @@
 #pragma once
 
 #include <cstdint>
+#include <limits>
 #include <queue>
 #include <vector>
 
@@ -46,6 +50,9 @@ namespace grassfire {
 struct ExactBurningOptions {
   bool vertex_filter = true;          // the vertex filter (tests switch it off to compare)
   bool one_angle_one_split = true;
+  // Singular edges as walls (issue 8 part 1; `burn3d --singular-walls`): fronts stop there and
+  // no junction rule runs. Not Definition 9: an upper bound of BT (fire from the curves is left out).
+  bool singular_walls = false;
   long max_bits = 512;                // Arb precision cap of the certified stages
   std::uint64_t max_windows = 400'000'000;  // iteration bound (std::runtime_error beyond)
 };
@@ -59,11 +66,19 @@ struct PropagationStats {
   std::uint64_t pseudo_sources = 0;
   std::uint64_t ties_absorbed = 0;    // unprovable ties folded into an existing vertex source
   std::uint64_t vertex_events = 0;    // a window reaching a vertex
-  std::uint64_t wall_arrivals = 0;    // children stopped by a wall (singular edge)
+  std::uint64_t wall_arrivals = 0;    // children reaching a singular edge (walls: stopped there)
   std::uint64_t vertex_burns = 0;     // vertices burned by the link rule
   std::uint64_t segment_arrivals = 0; // fire reaching a vertex along a segment
   std::uint64_t border_arrivals = 0;  // children that reached a border edge
   std::uint64_t undecided_angles = 0; // sectors taken to bend without a certified angle
+  // Junction rule on singular edges (4.2.1; edge_junction.cpp):
+  std::uint64_t junction_records = 0; // arrivals of a window at a singular edge (per sheet side)
+  std::uint64_t junction_passes = 0;  // recomputations of an edge's (k-1)-th arrival
+  std::uint64_t merges = 0;           // pieces emitted: a front continued across a burned curve
+  std::uint64_t quenched = 0;         // arrivals that realise no piece (the front ends at the curve)
+  std::uint64_t kinks = 0;            // kink points: point sources where the (k-1)-th arrival switches
+  std::uint64_t stretch_ends = 0;     // ends of burned stretches next to unburned ones
+  std::uint64_t uncertified_breaks = 0;  // piece ends located only by an enclosure no stage certified
   double seconds = 0.0;
 };
 
@@ -90,12 +105,13 @@ class WindowPropagation {
     return link_of_[v] == kNoIndex ? kNoIndex : links_[link_of_[v]].burned;
   }
   bool is_link_rule_vertex(std::uint32_t v) const { return link_of_[v] != kNoIndex; }
+  bool walls() const { return o_.singular_walls; }
 
  private:
   // Events: a window to propagate, fire arriving at a vertex along a segment, a vertex
   // burning by the link rule. At equal keys arrivals come before burns (a burn's key is an
   // upper bound of its time: every arrival below it must have been seen).
-  enum class EventKind : std::uint8_t { Window = 0, SegmentArrival = 1, VertexSource = 2, VertexBurn = 3 };
+  enum class EventKind : std::uint8_t { Window = 0, SegmentArrival = 1, VertexSource = 2, VertexBurn = 3, Junction = 4 };
   struct QueueEntry {
     double key;
     std::uint32_t id;
@@ -124,6 +140,47 @@ class WindowPropagation {
     DiscPoint image;
     std::uint32_t depth;
   };
+  // An arrival of fire at a singular edge through one of its sheet sides (4.2.1): a window
+  // of that side's triangle, its wedge bounds (clockwise, counter-clockwise) in its frame,
+  // and where its rays through them meet the edge (parameter along v[0] -> v[1], doubles:
+  // only to order the breakpoints; every decision is certified at rational points).
+  struct JunctionRecord {
+    std::uint32_t window;
+    std::uint32_t side;     // the window's triangle (one sheet side of the edge)
+    std::array<Bound, 2> end;
+    std::array<double, 2> at;
+    bool on_edge = false;   // its source lies on the edge (emits into every side already)
+    bool grazing = false;   // a wedge ray runs along the edge: nothing to emit beyond the edge
+  };
+  // A breakpoint of an edge's (k-1)-th arrival: an end of the edge, a record's end, or a
+  // crossing of two records' times; `id` names it (edge-point sources and emitted pieces
+  // are made once per name).
+  struct Break {
+    double at;
+    std::uint64_t id;
+  };
+  struct Piece {
+    std::uint32_t record;  // kNoIndex: fewer than k - 1 sides arrived
+    Break lo, hi;
+  };
+  // Where two records' times cross along the edge (computed once per pair of records).
+  struct Crossing {
+    Break at;
+    std::uint32_t a, b;  // the records
+  };
+  struct JunctionState {
+    std::vector<std::uint32_t> records;
+    std::vector<Piece> emitted;          // (record, interval) already continued across the edge
+    std::vector<std::uint64_t> sources;  // break ids with an edge-point source
+    std::vector<std::pair<std::uint64_t, std::uint32_t>> points;  // break id -> edge point
+    std::vector<Crossing> crossings;     // of every pair among records[0, paired)
+    std::size_t paired = 0;
+    std::vector<Piece> pieces;  // of the last pass (recomputed when records arrived)
+    std::size_t counted = 0;            // records[0, counted) were known to that pass
+    std::vector<std::uint32_t> alive;   // the records alive then
+    bool dirty = false;
+    double pending = std::numeric_limits<double>::infinity();
+  };
 
   void process(std::uint32_t w);
   void process_root(std::uint32_t w);
@@ -148,6 +205,29 @@ class WindowPropagation {
   void kill_subtree(std::uint32_t w);
   void kill_child_through(std::uint32_t w, std::uint32_t edge);
   double vertex_bound(std::uint32_t t, std::uint32_t v) const;
+
+  // The junction rule on singular edges (edge_junction.cpp).
+  void junction_arrival(std::uint32_t w, std::uint32_t edge, const Bound& b0, const Bound& b1, const DiscPoint& x0,
+                        const DiscPoint& x1, bool grazing);
+  void graze_singular_edges(std::uint32_t w, int entry_slot, int exit_slot);
+  void schedule_junction(std::uint32_t edge, double key);
+  void process_junction(std::uint32_t edge, double key);
+  std::vector<Break> junction_breaks(std::uint32_t edge, const std::vector<std::uint32_t>& recs);
+  std::uint32_t realising_record(std::uint32_t edge, const std::vector<std::uint32_t>& recs, double at);
+  std::vector<Piece> junction_pieces(std::uint32_t edge);
+  double piece_time_lo(std::uint32_t edge, const Piece& p) const;
+  std::vector<Piece> unemitted_parts(const JunctionState& st, const Piece& p) const;
+  void pair_new_records(std::uint32_t edge);
+  Interval record_time(std::uint32_t edge, std::uint32_t r, double at) const;
+  Bound piece_bound(std::uint32_t edge, const JunctionRecord& r, const Break& b);
+  std::uint32_t break_point(std::uint32_t edge, const Break& b);
+  void emit_piece(std::uint32_t edge, const Piece& p);
+  void edge_point_source(std::uint32_t edge, const Break& b, std::uint32_t record, SweepEvent::Kind kind);
+  void enter_child(std::uint32_t w, std::uint32_t edge, std::uint32_t t2, const Bound& b0, const Bound& b1, double key);
+  bool source_on_edge(std::uint32_t w, std::uint32_t edge) const;
+  bool same_point_as_source(std::uint32_t edge, std::uint32_t ep);
+  void count_quenched();
+  ExactPoint3 edge_point3(std::uint32_t edge, double at) const;
 
   void init_links();
   bool is_link_vertex(std::uint32_t v) const { return link_of_[v] != kNoIndex; }
@@ -176,6 +256,9 @@ class WindowPropagation {
   std::vector<LinkState> links_;
   std::vector<SegmentArrival> segment_arrivals_;
   std::vector<SweepEvent> events_;
+  std::vector<std::uint32_t> junction_of_;   // edge -> index into junctions_, or kNoIndex
+  std::vector<JunctionState> junctions_;
+  std::vector<JunctionRecord> records_;
 };
 
 }  // namespace grassfire

@@ -35,17 +35,34 @@ enum class SourceOrigin : std::uint8_t {
   GivenPoint,   // a caller's point source (point location: data = given source index)
   Vertex,       // a vertex: `vertex`, sigma given (spawn == kNoIndex) or a window's value there
   BorderPoint,  // DistanceToPoint: the rule point rotated into the sheet (data = border edge)
-  BorderPlane   // Linear with |slope| < 1: a plane wave (data = border edge)
+  BorderPlane,  // Linear with |slope| < 1: a plane wave (data = border edge)
+  EdgePoint     // a burned point of a singular edge (a kink of the junction rule, or the end
+                // of a burned stretch): a point source into every sheet side (data = edge point)
 };
+
+// A point of an edge, (1 - lambda) v[0] + lambda v[1]: the kinks and piece ends of the
+// junction rule (4.2.1). lambda is exact (exact_times[exact]: a sum of square roots, e.g.
+// the board-and-fin kink's sqrt2 - 1) or, where no closed form was found, only a certified
+// enclosure (exact < 0; the decisions that depend on it then stop at the Arb stage).
+struct EdgePoint {
+  std::uint32_t edge = kNoIndex;
+  Interval lambda;
+  std::int32_t exact = -1;
+};
+// A wedge bound or a TimeExpr::WindowAt target with this bit set names edge_points[id & ~bit]
+// instead of a vertex.
+constexpr std::uint32_t kEdgePointBound = 0x80000000u;
+inline bool is_edge_point(std::uint32_t id) { return id != kNoIndex && (id & kEdgePointBound); }
 
 // A time as an exact expression (the offsets of vertex sources, the burn times of
 // vertices): evaluated as an Interval (cached), in Arb, and exactly when its parts are.
 struct TimeExpr {
   enum class Kind : std::uint8_t {
     Exact,     // exact_times[a]: an ignition f(v), a source's start, 0
-    WindowAt,  // the time of window a at vertex b
+    WindowAt,  // the time of window a at vertex b (or at an edge point: kEdgePointBound)
     Plus,      // time a plus the length of edge b (fire along a segment)
-    Min        // min(time a, time b): an unprovable tie kept as both
+    Min,       // min(time a, time b): an unprovable tie kept as both
+    Enclosure  // known only as its certified enclosure `value` (no exact or Arb refinement)
   };
   Kind kind = Kind::Exact;
   std::uint32_t a = kNoIndex, b = kNoIndex;
@@ -119,14 +136,18 @@ struct WindowStore {
   std::vector<GivenSource> given;
   std::vector<TimeExpr> times;
   std::vector<ExactSum> exact_times;
+  std::vector<EdgePoint> edge_points;
 };
 
 // An event of the sweep: a vertex source made (fire restarts at a vertex, through one
-// sector) or a vertex burned by the link rule; its time as a TimeExpr.
+// sector), a vertex burned by the link rule, a kink of a singular edge (the (k-1)-th
+// arrival switches window there: a point source into every side), or the end of a burned
+// stretch of a singular edge next to a stretch with fewer than k - 1 arrivals (fire runs on
+// along the curve from there); its time as a TimeExpr.
 struct SweepEvent {
-  enum class Kind : std::uint8_t { VertexSource, VertexBurn };
+  enum class Kind : std::uint8_t { VertexSource, VertexBurn, Kink, StretchEnd };
   Kind kind = Kind::VertexSource;
-  std::uint32_t id = 0;  // sector (VertexSource), vertex (VertexBurn)
+  std::uint32_t id = 0;  // sector (VertexSource), vertex (VertexBurn), edge point (Kink, StretchEnd)
   std::uint32_t time = 0;
 };
 

@@ -1,0 +1,451 @@
+// edge_junction.cpp -- the junction rule of Definition 9 on singular edges (4.2.1, 4.2.3;
+// DESIGN.md 5; part of WindowPropagation, window_propagation.h).
+//
+// A singular edge E with k sheet sides (triangles) keeps every arrival of fire through
+// each side: a window of that side's triangle whose wedge meets E (a record). With a_i(x)
+// the earliest arrival through side i at the point x of E, x burns at A(x), the (k-1)-th
+// smallest a_i(x), or earlier if fire runs along the curve to it (MedialComplex::
+// edge_link_burns). A is 1-Lipschitz along E (order statistics of 1-Lipschitz functions
+// are), so fire along the curve matters only next to stretches where fewer than k - 1
+// sides ever arrive; the point sources below supply it.
+// From the burned curve fire enters every sheet side (entering a side that arrived earlier
+// is harmless: those times never realise the minimum there):
+//  - piece: a maximal interval of E on which one record w realises A. w's front, unfolded
+//    across E into each other side (the same source, rotated about E), with its wedge cut
+//    to the rays through the piece's ends, is a child window there (a front continues
+//    across the curve: a merge);
+//  - kink: where the realising record changes, the two pieces' wedges leave a gap where A
+//    has a convex corner (Fig. 4.4: the board-and-fin kink at s = 2 + sqrt2); the point
+//    itself burns at A there and emits as a point source into every side (an EdgePoint
+//    pseudo-source), which fills the gap with A(k) + |x - k|; where the pieces overlap
+//    instead, the source is dominated and harmless;
+//  - stretch end: the end of a burned stretch next to one with fewer than k - 1 arrivals
+//    emits the same way; its own arrivals on E (every side) are A(k) + |x - k|, so the
+//    unburned stretch then burns by fire along the curve;
+//  - poles: a piece ending at a vertex of E is an arrival along the curve at that vertex
+//    (its link rule, vertex_burning.cpp), which decides the singular points.
+// Finality (Dijkstra): a record's times are at least its key, so when the queue reaches T
+// every arrival below T is known; a piece is emitted as soon as T reaches the lower bound
+// of its times (so that no window is made after the sweep passed its key: the link rule's
+// decisions at singular points rely on it), kinks and stretch ends once T passes their
+// time, and pieces are recomputed (junction_passes) while records still arrive. Every emission is
+// fire of a real burning path (an upper bound of BT); every decision is certified: the
+// order of arrivals at a rational point of each elementary interval by
+// Certifier::compare_times (ties: the earlier record realises, so sources made on the edge
+// never re-realise their own pieces); the pieces' ends are edge points whose parameter is
+// exact where a closed form is found (junction_kinks.h) and a certified enclosure
+// otherwise (counted: uncertified_breaks when not even the enclosure was certified).
+// Complexity: per pass O(B R) certified comparisons for R records and B breakpoints
+// (B = O(R^2) crossings at worst; R is small: the windows of one triangle per side).
+#include <algorithm>
+#include <cmath>
+
+#include "burn3/exact/junction_kinks.h"
+#include "burn3/exact/window_propagation.h"
+#include "complex3/exact_predicates3.h"
+#include "number/sqrt_field.h"
+
+namespace grassfire {
+
+namespace {
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+constexpr std::uint64_t kEdgeEnd = 0, kRecordEnd = 1ull << 60, kCrossing = 2ull << 60;
+
+std::uint64_t crossing_id(std::uint32_t a, std::uint32_t b, int root) {
+  return kCrossing | (std::uint64_t(std::min(a, b)) << 30) | (std::uint64_t(std::max(a, b)) << 1) | std::uint64_t(root);
+}
+
+}  // namespace
+
+ExactPoint3 WindowPropagation::edge_point3(std::uint32_t edge, double at) const {
+  const ExactPoint3& a = mc_.vertex(mc_.edge(edge).v[0]).exact;
+  const ExactPoint3& b = mc_.vertex(mc_.edge(edge).v[1]).exact;
+  const mpq_class l(at);  // exact value of the double
+  return a + l * (b - a);
+}
+
+bool WindowPropagation::source_on_edge(std::uint32_t w, std::uint32_t edge) const {
+  const Window& W = s_.windows[w];
+  if (!W.root()) return false;
+  const PseudoSource& ps = s_.pseudo[W.pseudo];
+  const auto& ev = mc_.edge(edge).v;
+  switch (ps.origin) {
+    case SourceOrigin::Vertex: return ps.vertex == ev[0] || ps.vertex == ev[1];
+    case SourceOrigin::EdgePoint: return s_.edge_points[ps.data].edge == edge;
+    case SourceOrigin::GivenPoint: {
+      const ExactPoint3& p = s_.given[ps.data].point;
+      const ExactPoint3& a = mc_.vertex(ev[0]).exact;
+      return cross(mc_.vertex(ev[1]).exact - a, p - a) == ExactPoint3{};
+    }
+    default: return false;
+  }
+}
+
+void WindowPropagation::junction_arrival(std::uint32_t w, std::uint32_t edge, const Bound& b0, const Bound& b1,
+                                         const DiscPoint& x0, const DiscPoint& x1, bool grazing) {
+  const Window& W = s_.windows[w];
+  const auto& ev = mc_.edge(edge).v;
+  const DiscPoint A = u_.vertex_image(W.triangle, ev[0]), B = u_.vertex_image(W.triangle, ev[1]);
+  auto param = [&](const DiscPoint& x, const Bound& b) {
+    if (b.vertex == ev[0]) return 0.0;
+    if (b.vertex == ev[1]) return 1.0;
+    const double dx = B.x - A.x, dy = B.y - A.y;
+    return std::clamp(((x.x - A.x) * dx + (x.y - A.y) * dy) / (dx * dx + dy * dy), 0.0, 1.0);
+  };
+  JunctionRecord r{w, W.triangle, {b0, b1}, {param(x0, b0), param(x1, b1)}, source_on_edge(w, edge), grazing};
+  JunctionState& st = junctions_[junction_of_[edge]];
+  st.records.push_back(static_cast<std::uint32_t>(records_.size()));
+  records_.push_back(r);
+  ++stats_.junction_records;
+  st.dirty = true;
+  schedule_junction(edge, std::max(W.key, approx_lower_bound(W, x0, x1)));
+}
+
+void WindowPropagation::schedule_junction(std::uint32_t edge, double key) {
+  JunctionState& st = junctions_[junction_of_[edge]];
+  if (key >= st.pending) return;
+  st.pending = key;
+  queue_.push({key, edge, EventKind::Junction});
+}
+
+// ---- the (k-1)-th arrival along the edge ---------------------------------------------------
+
+// The crossings of every new record with every earlier one (a pair's crossings never
+// change, so each pair is computed once: the passes only filter out dead records).
+void WindowPropagation::pair_new_records(std::uint32_t edge) {
+  JunctionState& st = junctions_[junction_of_[edge]];
+  for (std::size_t i = st.paired; i < st.records.size(); ++i)
+    for (std::size_t j = 0; j < i; ++j) {
+      const std::uint32_t ra = st.records[j], rb = st.records[i];
+      const JunctionRecord &a = records_[ra], &b = records_[rb];
+      if (s_.windows[a.window].dead() || s_.windows[b.window].dead()) continue;  // dead stays dead
+      const double lo = std::max(std::min(a.at[0], a.at[1]), std::min(b.at[0], b.at[1]));
+      const double hi = std::min(std::max(a.at[0], a.at[1]), std::max(b.at[0], b.at[1]));
+      if (!(lo < hi)) continue;
+      const std::vector<double> roots = approx_crossings(u_, s_, edge, a.window, b.window, lo, hi);
+      for (std::size_t k = 0; k < roots.size(); ++k)
+        st.crossings.push_back({{roots[k], crossing_id(ra, rb, static_cast<int>(k))}, ra, rb});
+    }
+  st.paired = st.records.size();
+}
+
+std::vector<WindowPropagation::Break> WindowPropagation::junction_breaks(std::uint32_t edge,
+                                                                          const std::vector<std::uint32_t>& recs) {
+  std::vector<Break> br{{0.0, kEdgeEnd | 0}, {1.0, kEdgeEnd | 1}};
+  for (std::uint32_t r : recs)
+    for (int j = 0; j < 2; ++j)
+      if (records_[r].at[j] > 0.0 && records_[r].at[j] < 1.0)
+        br.push_back({records_[r].at[j], kRecordEnd | (std::uint64_t(r) << 1) | std::uint64_t(j)});
+  pair_new_records(edge);
+  for (const Crossing& c : junctions_[junction_of_[edge]].crossings)
+    if (!s_.windows[records_[c.a].window].dead() && !s_.windows[records_[c.b].window].dead()) br.push_back(c.at);
+  // Equal parameters name one point: keep the smallest name (stable as records arrive).
+  std::sort(br.begin(), br.end(), [](const Break& x, const Break& y) { return x.at < y.at || (x.at == y.at && x.id < y.id); });
+  br.erase(std::unique(br.begin(), br.end(), [](const Break& x, const Break& y) { return x.at == y.at; }), br.end());
+  return br;
+}
+
+// The record realising the (k-1)-th arrival at the parameter `at` (strictly inside an
+// elementary interval), or kNoIndex when fewer than k - 1 sides have arrived there.
+std::uint32_t WindowPropagation::realising_record(std::uint32_t edge, const std::vector<std::uint32_t>& recs,
+                                                  double at) {
+  // The double filter first (enclosures of each record's time there); the staged
+  // comparison at the exact rational point only where those overlap.
+  std::optional<ExactPoint3> p;
+  std::vector<Interval> value(recs.size());
+  for (std::size_t i = 0; i < recs.size(); ++i) value[i] = record_time(edge, recs[i], at);
+  std::vector<std::array<std::size_t, 3>> staged;  // (ri, qi, outcome): each pair decided once
+  auto earlier = [&](std::size_t ri, std::size_t qi) {  // record ri before qi (ties: older first)
+    int c = certified_sign(value[ri] - value[qi]);
+    if (c == kUndecided) {
+      const auto [a, b] = std::minmax(ri, qi);
+      const auto it = std::find_if(staged.begin(), staged.end(), [&](const auto& s) { return s[0] == a && s[1] == b; });
+      if (it != staged.end()) {
+        c = static_cast<int>((*it)[2]) - 2;
+      } else {
+        if (!p) p = edge_point3(edge, at);
+        const Target x{kNoIndex, &*p};
+        c = cert_.compare_times(records_[recs[a]].window, x, records_[recs[b]].window, x);
+        staged.push_back({a, b, static_cast<std::size_t>(c + 2)});
+      }
+      if (ri != a && c != kUndecided) c = -c;
+    } else {
+      ++cert_.counts.filter;
+    }
+    return c == -1 || ((c == 0 || c == kUndecided) && recs[ri] < recs[qi]);
+  };
+  const auto& sides = mc_.edge_triangles(edge);
+  std::vector<std::size_t> best(sides.size(), kNoIndex);  // per side: its earliest record
+  for (std::size_t ri = 0; ri < recs.size(); ++ri) {
+    const std::uint32_t r = recs[ri];
+    const JunctionRecord& rec = records_[r];
+    if (!(std::min(rec.at[0], rec.at[1]) < at && at < std::max(rec.at[0], rec.at[1]))) continue;
+    const std::size_t i = std::find(sides.begin(), sides.end(), rec.side) - sides.begin();
+    if (best[i] == kNoIndex || earlier(ri, best[i])) best[i] = ri;
+  }
+  std::vector<std::size_t> arrived;
+  for (std::size_t ri : best)
+    if (ri != kNoIndex) arrived.push_back(ri);
+  if (arrived.size() + 1 < sides.size()) return kNoIndex;
+  std::sort(arrived.begin(), arrived.end(), earlier);
+  return recs[arrived[sides.size() - 2]];
+}
+
+// A record's time at the point of parameter `at` of the edge, as a double enclosure.
+Interval WindowPropagation::record_time(std::uint32_t edge, std::uint32_t r, double at) const {
+  const Window& W = s_.windows[records_[r].window];
+  const auto& ev = mc_.edge(edge).v;
+  const DiscPoint A = u_.vertex_image(W.triangle, ev[0]), B = u_.vertex_image(W.triangle, ev[1]);
+  const Interval l(at);
+  const Approx t = approx_time(W, DiscPoint::from_intervals(A.ix() + l * (B.ix() - A.ix()), A.iy() + l * (B.iy() - A.iy())));
+  return {round_down(t.v - t.e), round_up(t.v + t.e)};
+}
+
+// The (k-1)-th arrival at a point depends only on the records whose range covers it, so a
+// pass recomputes it only inside the ranges of the records added (or dead) since the last
+// pass, and elsewhere takes the realising record of the last pass's piece there (no
+// breakpoint appears outside those ranges, so each elementary interval there lies inside
+// one old piece).
+std::vector<WindowPropagation::Piece> WindowPropagation::junction_pieces(std::uint32_t edge) {
+  JunctionState& st = junctions_[junction_of_[edge]];
+  std::vector<std::uint32_t> recs;
+  for (std::uint32_t r : st.records)
+    if (!s_.windows[records_[r].window].dead()) recs.push_back(r);
+  std::vector<std::array<double, 2>> changed;
+  auto range_of = [&](std::uint32_t r) {
+    const auto& at = records_[r].at;
+    changed.push_back({std::min(at[0], at[1]), std::max(at[0], at[1])});
+  };
+  for (std::size_t i = st.counted; i < st.records.size(); ++i) range_of(st.records[i]);
+  for (std::uint32_t r : st.alive)
+    if (s_.windows[records_[r].window].dead()) range_of(r);
+  const std::vector<Piece> old = std::move(st.pieces);
+  constexpr std::uint32_t kRecompute = kNoIndex - 1;
+  auto previous = [&](double m) {
+    for (const auto& c : changed)
+      if (c[0] <= m && m <= c[1]) return kRecompute;
+    const auto it = std::lower_bound(old.begin(), old.end(), m, [](const Piece& p, double x) { return p.hi.at < x; });
+    return it != old.end() && it->lo.at < m && m < it->hi.at ? it->record : kRecompute;
+  };
+  const std::vector<Break> br = junction_breaks(edge, recs);
+  std::vector<Piece> pieces;
+  for (std::size_t i = 0; i + 1 < br.size(); ++i) {
+    if (!(br[i].at < br[i + 1].at)) continue;
+    const double m = 0.5 * (br[i].at + br[i + 1].at);
+    std::uint32_t r = previous(m);
+    if (r == kRecompute) r = realising_record(edge, recs, m);
+    if (!pieces.empty() && pieces.back().record == r) {
+      pieces.back().hi = br[i + 1];
+      continue;
+    }
+    pieces.push_back({r, br[i], br[i + 1]});
+  }
+  st.counted = st.records.size();
+  st.alive = std::move(recs);
+  return pieces;
+}
+
+// A certified lower bound of a piece's times (its record's time along the piece).
+double WindowPropagation::piece_time_lo(std::uint32_t edge, const Piece& p) const {
+  const Window& W = s_.windows[records_[p.record].window];
+  const auto& ev = mc_.edge(edge).v;
+  const DiscPoint A = u_.vertex_image(W.triangle, ev[0]), B = u_.vertex_image(W.triangle, ev[1]);
+  auto at = [&](double l) {
+    const Interval L(l);
+    return DiscPoint::from_intervals(A.ix() + L * (B.ix() - A.ix()), A.iy() + L * (B.iy() - A.iy()));
+  };
+  return approx_lower_bound(W, at(p.lo.at), at(p.hi.at));
+}
+
+// Timing (Dijkstra finality, as for windows): every window must be made before the sweep
+// passes its key. So a piece is continued across the edge as soon as the sweep reaches the
+// lower bound of its times, with the records known then: its fire is real (the (k-1)-th
+// arrival of the known records is never below the true one) and its children's keys are
+// not below the sweep. A record arriving later can lower the (k-1)-th arrival only where it
+// is above the sweep (every arrival below the sweep is known), so a later pass emits the
+// new pieces there, and the fire emitted before is dominated, never wrong. Parts of a piece
+// already continued for the same record are not emitted twice (unemitted_parts). A kink or
+// stretch end is a burned point: it emits once the sweep passes the upper end of its time
+// there, when that time is final.
+void WindowPropagation::process_junction(std::uint32_t edge, double key) {
+  JunctionState& st = junctions_[junction_of_[edge]];
+  st.pending = kInf;
+  ++stats_.junction_passes;
+  if (st.dirty) st.pieces = junction_pieces(edge), st.dirty = false;
+  const std::vector<Piece> pieces = st.pieces;
+  double next = kInf;
+  auto due = [&](double t) {
+    if (t <= key) return true;
+    next = std::min(next, t);
+    return false;
+  };
+  auto burned_at = [&](const Piece& p, const Break& b) { return due(record_time(edge, p.record, b.at).hi); };
+  for (std::size_t i = 0; i < pieces.size(); ++i) {
+    const Piece& p = pieces[i];
+    if (p.record == kNoIndex) continue;
+    if (due(piece_time_lo(edge, p))) emit_piece(edge, p);
+    const bool left_gap = i > 0 && pieces[i - 1].record == kNoIndex;
+    const bool right_gap = i + 1 < pieces.size() && pieces[i + 1].record == kNoIndex;
+    if (left_gap && burned_at(p, p.lo)) edge_point_source(edge, p.lo, p.record, SweepEvent::Kind::StretchEnd);
+    if (right_gap && burned_at(p, p.hi)) edge_point_source(edge, p.hi, p.record, SweepEvent::Kind::StretchEnd);
+    if (i + 1 < pieces.size() && pieces[i + 1].record != kNoIndex && (p.hi.id >> 60) != 0 && burned_at(p, p.hi))
+      edge_point_source(edge, p.hi, p.record, SweepEvent::Kind::Kink);
+  }
+  if (next < kInf) schedule_junction(edge, next);
+}
+
+// ---- emission -------------------------------------------------------------------------------
+
+std::uint32_t WindowPropagation::break_point(std::uint32_t edge, const Break& b) {
+  JunctionState& st = junctions_[junction_of_[edge]];
+  for (const auto& [id, ep] : st.points)
+    if (id == b.id) return ep;
+  EdgePoint ep;
+  ep.edge = edge;
+  if ((b.id >> 60) == (kCrossing >> 60)) {
+    const std::uint32_t ra = static_cast<std::uint32_t>((b.id >> 30) & 0x3fffffff);
+    const std::uint32_t rb = static_cast<std::uint32_t>((b.id >> 1) & 0x1fffffff);
+    const KinkParameter k = kink_parameter(u_, s_, cert_, edge, records_[ra].window, records_[rb].window, b.at);
+    ep.lambda = k.lambda;
+    if (k.exact) {
+      s_.exact_times.push_back(*k.exact);
+      ep.exact = static_cast<std::int32_t>(s_.exact_times.size() - 1);
+    }
+    if (!k.certified) ++stats_.uncertified_breaks;
+  } else {  // a record's ray through its bound vertex meets the edge there
+    const std::uint32_t r = static_cast<std::uint32_t>((b.id >> 1) & 0x7fffffff);
+    const int j = static_cast<int>(b.id & 1);
+    const KinkParameter k = ray_parameter(u_, s_, cert_, edge, records_[r].window, records_[r].end[j].vertex, b.at);
+    ep.lambda = k.lambda;
+    if (k.exact) {
+      s_.exact_times.push_back(*k.exact);
+      ep.exact = static_cast<std::int32_t>(s_.exact_times.size() - 1);
+    }
+    if (!k.certified) ++stats_.uncertified_breaks;
+  }
+  s_.edge_points.push_back(ep);
+  const auto id = static_cast<std::uint32_t>(s_.edge_points.size() - 1);
+  st.points.emplace_back(b.id, id);
+  return id;
+}
+
+// The bound of a piece end in the realising record's frame: an end vertex of the edge, the
+// record's own wedge bound, or an edge point.
+WindowPropagation::Bound WindowPropagation::piece_bound(std::uint32_t edge, const JunctionRecord& r, const Break& b) {
+  const Window& W = s_.windows[r.window];
+  if ((b.id >> 60) == 0) {
+    const std::uint32_t v = mc_.edge(edge).v[b.id & 1];
+    return {v, u_.vertex_image(W.triangle, v), W.depth};
+  }
+  for (int j = 0; j < 2; ++j)
+    if (b.id == (kRecordEnd | (std::uint64_t(&r - records_.data()) << 1) | std::uint64_t(j))) return r.end[j];
+  const std::uint32_t ep = break_point(edge, b);
+  return {ep | kEdgePointBound, edge_point_image(u_, s_, W.triangle, ep), W.depth};
+}
+
+// The parts of piece p (between its ends and the ends of earlier emissions of the same
+// record, ordered by parameter) that no earlier emission of its record covers.
+std::vector<WindowPropagation::Piece> WindowPropagation::unemitted_parts(const JunctionState& st, const Piece& p) const {
+  std::vector<const Piece*> done;
+  for (const Piece& e : st.emitted)
+    if (e.record == p.record && e.hi.at > p.lo.at && e.lo.at < p.hi.at) done.push_back(&e);
+  std::sort(done.begin(), done.end(), [](const Piece* a, const Piece* b) { return a->lo.at < b->lo.at; });
+  std::vector<Piece> parts;
+  Break from = p.lo;
+  for (const Piece* e : done) {
+    if (e->lo.at > from.at) parts.push_back({p.record, from, e->lo});
+    if (e->hi.at > from.at) from = e->hi;
+  }
+  if (from.at < p.hi.at) parts.push_back({p.record, from, p.hi});
+  return parts;
+}
+
+void WindowPropagation::emit_piece(std::uint32_t edge, const Piece& p) {
+  JunctionState& st = junctions_[junction_of_[edge]];
+  const std::vector<Piece> parts = unemitted_parts(st, p);
+  if (parts.empty()) return;
+  st.emitted.push_back(p);
+  const JunctionRecord r = records_[p.record];
+  const std::uint32_t w = r.window;
+  const Window W = s_.windows[w];  // a copy: enter_child grows the store
+  const bool increasing = r.at[0] < r.at[1];  // the record's clockwise end has parameter at[0]
+  for (const Piece& part : parts) {
+    // Arrivals along the curve at the edge's end vertices (their link rule).
+    for (const Break& b : {part.lo, part.hi})
+      if ((b.id >> 60) == 0) {
+        const std::uint32_t v = mc_.edge(edge).v[b.id & 1];
+        if (is_link_vertex(v)) link_arrival(v, mc_.edge_end_element(edge, static_cast<int>(b.id & 1)), window_time_at(w, v));
+      }
+    if (r.on_edge || r.grazing) continue;  // its source emits into every side itself; a grazing
+                                           // front's rays run along the edge (its ends' sources emit)
+    const Bound lo = piece_bound(edge, r, part.lo), hi = piece_bound(edge, r, part.hi);
+    const Bound& b0 = increasing ? lo : hi;
+    const Bound& b1 = increasing ? hi : lo;
+    const double key = std::max(W.key, approx_lower_bound(W, lo.image, hi.image));
+    for (std::uint32_t t2 : mc_.edge_triangles(edge)) {
+      if (t2 == r.side) continue;
+      enter_child(w, edge, t2, b0, b1, key);
+      ++stats_.merges;
+    }
+  }
+}
+
+// Whether an edge-point source already burns at edge point ep (proved equal parameters).
+bool WindowPropagation::same_point_as_source(std::uint32_t edge, std::uint32_t ep) {
+  const JunctionState& st = junctions_[junction_of_[edge]];
+  const EdgePoint& p = s_.edge_points[ep];
+  for (std::uint64_t id : st.sources)
+    for (const auto& [name, other] : st.points) {
+      if (name != id || other == ep) continue;
+      const EdgePoint& q = s_.edge_points[other];
+      if (p.lambda.hi < q.lambda.lo || q.lambda.hi < p.lambda.lo) continue;
+      if (p.exact >= 0 && q.exact >= 0 && exact_sign(s_.exact_times[p.exact] - s_.exact_times[q.exact]) == 0) return true;
+    }
+  return false;
+}
+
+// A point of the edge burning at the realising record's time there: a point source into
+// every sheet side (roots in every triangle of the edge), made once per breakpoint.
+void WindowPropagation::edge_point_source(std::uint32_t edge, const Break& b, std::uint32_t record,
+                                          SweepEvent::Kind kind) {
+  JunctionState& st = junctions_[junction_of_[edge]];
+  if ((b.id >> 60) == 0) return;  // an end vertex: its link rule emits
+  if (std::find(st.sources.begin(), st.sources.end(), b.id) != st.sources.end()) return;
+  st.sources.push_back(b.id);
+  const std::uint32_t ep = break_point(edge, b);
+  if (same_point_as_source(edge, ep)) return;
+  const std::uint32_t time = window_time_at(records_[record].window, ep | kEdgePointBound);
+  PseudoSource ps;
+  ps.origin = SourceOrigin::EdgePoint;
+  ps.data = ep;
+  ps.time = time;
+  ps.sigma = s_.times[time].value;
+  ps.exact = -1;
+  const auto p = static_cast<std::uint32_t>(s_.pseudo.size());
+  ps.first_root = static_cast<std::uint32_t>(s_.windows.size());
+  s_.pseudo.push_back(ps);
+  for (std::uint32_t t : mc_.edge_triangles(edge)) {
+    const ComplexTriangle& tr = mc_.triangle(t);
+    int k = 0;
+    while (tr.e[k] != edge) ++k;
+    add_root(p, t, static_cast<std::uint8_t>(7 & ~(1u << k)), ps.sigma.lo);
+  }
+  s_.pseudo[p].root_count = static_cast<std::uint32_t>(s_.windows.size()) - ps.first_root;
+  ++stats_.pseudo_sources;
+  ++(kind == SweepEvent::Kind::Kink ? stats_.kinks : stats_.stretch_ends);
+  events_.push_back({kind, ep, time});
+}
+
+// Arrivals that realise no emitted piece: fronts that end at the curve (they meet the other
+// sheets' fronts there, or arrive after the curve burned).
+void WindowPropagation::count_quenched() {
+  for (const JunctionState& st : junctions_)
+    for (std::uint32_t r : st.records) {
+      bool used = false;
+      for (const Piece& e : st.emitted) used = used || e.record == r;
+      stats_.quenched += !used;
+    }
+}
+
+}  // namespace grassfire

@@ -1,0 +1,48 @@
+// junction_kinks.h -- where along a singular edge two arrivals cross, and where a window's
+// wedge ray meets the edge: the breakpoints of the junction rule (4.2.1, Fig. 4.4;
+// DESIGN.md 5a), located exactly where possible.
+//
+// Computes, for an edge E = v[0] v[1] and windows of triangles on E (parameter lambda along
+// E, in each window's own frame, which contains E):
+//  - approx_crossings: the parameters in (lo, hi) where two windows' times along E cross,
+//    by sign changes on a fixed sample and bisection (doubles: they only order breakpoints);
+//  - kink_parameter: one crossing located exactly. A window's time along E is
+//    sigma + sqrt(gamma + 2 beta lambda + L2 lambda^2) (a point source) or c0 + c1 lambda (a
+//    plane wave), so sigma1 + |x - s1| = sigma2 + |x - s2| becomes, after squaring twice, a
+//    quadratic in lambda with coefficients in a multiquadratic field (number/
+//    multiquadratic.h): its roots are lambda0 +- sqrt(delta) with lambda0, delta in the field
+//    (the board-and-fin kink: lambda = sqrt2 - 1 on the edge from (3,3,0) to (4,4,0), i.e.
+//    s = 2 + sqrt2). Squaring adds roots: the crossing is first bracketed by two rational
+//    parameters at which Certifier::compare_times certifies opposite orders, and the exact
+//    root is the only candidate between them (decided exactly). Without exact window data
+//    (curved sheets, large expressions) the bracket is narrowed by certified bisection and
+//    the enclosure is the answer (exact = none);
+//  - ray_parameter: where the ray of a window through a vertex meets E (linear in lambda:
+//    exact from exact window data, else a certified bisection on Certifier::side).
+// `certified` is false when even the bracket could not be certified (then lambda is the
+// double estimate as a point interval, and the caller counts an uncertified breakpoint).
+// Contract: the windows' triangles contain E; `at` approximates the point sought.
+// Complexity: O(1) field operations (at most 6 generators), or O(bits) certified comparisons.
+#pragma once
+
+#include <optional>
+#include <vector>
+
+#include "burn3/exact/window_certify.h"
+
+namespace grassfire {
+
+struct KinkParameter {
+  Interval lambda;
+  std::optional<ExactSum> exact;
+  bool certified = false;
+};
+
+std::vector<double> approx_crossings(const Unfolding& u, const WindowStore& s, std::uint32_t edge, std::uint32_t wa,
+                                     std::uint32_t wb, double lo, double hi);
+KinkParameter kink_parameter(const Unfolding& u, const WindowStore& s, Certifier& cert, std::uint32_t edge,
+                             std::uint32_t wa, std::uint32_t wb, double at);
+KinkParameter ray_parameter(const Unfolding& u, const WindowStore& s, Certifier& cert, std::uint32_t edge,
+                            std::uint32_t w, std::uint32_t bound_vertex, double at);
+
+}  // namespace grassfire
