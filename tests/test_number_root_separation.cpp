@@ -46,7 +46,7 @@ TEST_CASE("root separation: identities between radicals of different square clas
   CHECK(st.separation_decided == 1);
   CHECK(st.exact_zero == 1);
   // Radicands that are rational multiples of one another: sqrt(8 + 4 sqrt2) = 2 sqrt(2 + sqrt2).
-  const ExactSum y = radical(rat(8) + root(8)) - radical(rat(2) + root(2), 2);
+  const ExactSum y = radical(rat(8) + root(32)) - radical(rat(2) + root(2), 2);
   REQUIRE(separation_bound(y, kMaxSeparationBits));
   CHECK(separation_bound(y, kMaxSeparationBits)->degree_log2 == 2);
   CHECK(radical_sign(y, kMaxSeparationBits) == std::optional<int>(0));

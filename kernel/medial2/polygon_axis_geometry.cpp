@@ -337,13 +337,16 @@ ExactSum PolygonAxisGeometry::frame_length(std::uint32_t edge) const {
     const std::string id = "arc(" + std::to_string(e.site_a) + "," + std::to_string(e.site_b) + ";" + ends + ")";
     return ExactSum::constant(std::make_shared<EdgeLength>(sites_, e, nodes_[e.u].circle, nodes_[e.v].circle, id));
   }
-  const auto& a = exact_circle(e.u);
-  const auto& b = exact_circle(e.v);
-  if (!a || !b)
+  const auto& a = radical_circle(e.u);
+  const auto& b = radical_circle(e.v);
+  if (a && b)
+    if (std::optional<ExactSum> projected = straight_length(e, *a, *b)) return *projected;
+  const auto& pa = exact_circle(e.u);
+  const auto& pb = exact_circle(e.v);
+  if (!pa || !pb)
     return ExactSum::constant(
         std::make_shared<EdgeLength>(sites_, e, nodes_[e.u].circle, nodes_[e.v].circle, "segment(" + ends + ")"));
-  if (std::optional<ExactSum> projected = straight_length(e, *a, *b)) return *projected;
-  const ExactSum dx = a->x - b->x, dy = a->y - b->y;
+  const ExactSum dx = pa->x - pb->x, dy = pa->y - pb->y;
   ExactSum squared = multiply(dx, dx) + multiply(dy, dy);
   squared.simplify();
   return sqrt_term(squared);
@@ -352,7 +355,8 @@ ExactSum PolygonAxisGeometry::frame_length(std::uint32_t edge) const {
 // A straight edge lies on the bisector of its two sites, whose direction w is exact:
 // rot90(Q - P) for two points, the normal n for a point on a segment's line, and
 // rot90(u1 - u2) for two lines with unit inward normals u1, u2 (equal signed distances).
-// Its length is |(X_u - X_v) . w| / |w|. The numerator is a sum of square roots; so is
+// Its length is |(X_u - X_v) . w| / |w|. The numerator is a sum of square roots (and of
+// square roots of sums when an end is a nested-radical circle: solve_radical); so is
 // 1 / |w| for the first two and for anti-parallel lines (|w| = 2), and then the length
 // is an ExactSum. For two crossing lines 1 / |w|^2 = q is a sum of square roots, and
 // the length sum_i c_i sqrt(r_i) sqrt(q) = sum_i c_i sqrt(r_i q) is written with square
@@ -393,26 +397,30 @@ std::optional<ExactSum> PolygonAxisGeometry::straight_length(const AxisEdgeData&
         }
       }
     }
-    RootSum along = (RootSum(a.x) - RootSum(b.x)) * wx + (RootSum(a.y) - RootSum(b.y)) * wy;
+    // X_u, X_v may hold square roots of sums (solve_radical): multiply_radical keeps them.
+    ExactSum along = multiply_radical(a.x - b.x, wx.v) + multiply_radical(a.y - b.y, wy.v);
+    along.simplify();
     const RootSum ww = wx * wx + wy * wy;
-    const int sa = exact_sign(along.v), sw = exact_sign(ww.v);
-    if (sa == 0 || sw <= 0) return std::nullopt;
-    if (sa < 0) along = -along;
+    NumberStats st;
+    const int sa = sign(along, &st), sw = exact_sign(ww.v);
+    if (sa == 0 || st.uncertified_zero != 0 || sw <= 0) return std::nullopt;
+    if (sa < 0) along.scale(-1);
     const RootSum q = RootSum(1.0) / ww;
     if (std::optional<mpq_class> root = q.v.sqrt_terms().empty() ? rational_sqrt(q.v.rational_part()) : std::nullopt)
-      return (along * RootSum(ExactSum::rational(*root))).v;
-    if (q.v.sqrt_terms().empty()) return (along * RootSum(ExactSum::sqrt_of(q.v.rational_part()))).v;
-    // sum_i c_i sqrt(r_i q), each root denested when it can be.
+      return along.scale(*root);
+    if (q.v.sqrt_terms().empty()) return multiply_radical(along, ExactSum::sqrt_of(q.v.rational_part()));
+    // sum_i c_i sqrt(r_i q) + sum_k d_k sqrt(E_k q), each root denested when it can be.
     ExactSum out;
-    auto add_root = [&](const mpq_class& c, const mpq_class& r) {
-      ExactSum radicand = q.v;
-      radicand.scale(r);
-      ExactSum term = sqrt_term(radicand);
-      term.scale(c);
-      out += term;
+    auto add_root = [&](const mpq_class& c, ExactSum radicand) {
+      ExactSum term = sqrt_term(multiply(radicand, q.v));
+      out += term.scale(c);
     };
-    if (sgn(along.v.rational_part()) != 0) add_root(along.v.rational_part(), 1);
-    for (const SqrtTerm& t : along.v.sqrt_terms()) add_root(t.coef, t.radicand);
+    if (sgn(along.rational_part()) != 0) add_root(along.rational_part(), ExactSum::rational(1));
+    for (const SqrtTerm& t : along.sqrt_terms()) add_root(t.coef, ExactSum::rational(t.radicand));
+    for (const ConstantTerm& t : along.constant_terms()) {
+      if (!t.value->radicand()) return std::nullopt;
+      add_root(t.coef, *t.value->radicand());
+    }
     out.simplify();
     return out;
   } catch (const NestedRadical&) {

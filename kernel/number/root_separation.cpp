@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <deque>
 #include <vector>
 
 #include "number/mpfr_bounds.h"
@@ -131,8 +132,7 @@ std::optional<SeparationBound> separation_bound(const ExactSum& input, long max_
   const mpq_class q0 = abs(x.rational_part());
   mpfr_set_q(abs_sum, q0.get_mpq_t(), MPFR_RNDU);
   for (const SqrtTerm& t : x.sqrt_terms()) add_abs_root(abs_sum, t.coef, t.radicand, one);
-  std::vector<MpfrBounds> root_abs;
-  root_abs.reserve(parts->groups.size());
+  std::deque<MpfrBounds> root_abs;  // MpfrBounds does not move
   for (const ExactSum& g : parts->groups) {
     root_abs.emplace_back(kBoundBits);
     mpfr_ptr e = root_abs.back().hi;
