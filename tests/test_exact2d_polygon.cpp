@@ -11,6 +11,7 @@
 #include "burn2/edf_definition.h"
 #include "burn2/extended_grassfire.h"
 #include "medial2/polygon_axis.h"
+#include "medial2/polygon_axis_geometry.h"
 #include "medial2/polygon_axis_validate.h"
 #include "number/sqrt_field.h"
 #include "shapes/load_shape.h"
@@ -360,6 +361,10 @@ TEST_CASE("seeded random star polygons on a binary grid: Boost on exact integers
       CHECK(compare(a, b, &st) == 0);
       CHECK(st.uncertified_zero == 0);
       nested += !a.constant_terms().empty();
+      // Names built from site indices differ between the two axes (the fallback constants
+      // of one frame must never merge with the other's by name).
+      CHECK(dynamic_cast<const PolygonAxisGeometry&>(gb.geometry()).node_identity(v) !=
+            dynamic_cast<const PolygonAxisGeometry&>(gc.geometry()).node_identity(node_at(gc, p.x, p.y)));
     }
     require_valid_and_burns_like_oracle(gb);
   }
