@@ -1,7 +1,8 @@
 // bench_mesh_axis -- the medial axis of closed meshes against CGAL's Delaunay triangulation
 // alone on the same sample points.
 //
-// usage: bench_mesh_axis [--repeat K] [--samples S] [--angle DEG] [--complex] MESH...
+// usage: bench_mesh_axis [--repeat K] [--samples S] [--angle DEG] [--min-growth G] [--complex] MESH...
+// (--min-growth: MeshAxisOptions::min_thickness_growth, to compare the round-skip rule)
 // For each mesh (in its own child process, so that peak memory is that mesh's VmHWM):
 // build the axis (mesh_axis.h: solid topology, every sampling round, inner Voronoi
 // complex, pruning, Betti check, exact assembly), then time CGAL Delaunay_triangulation_3
@@ -14,7 +15,8 @@
 //   samples_s,voronoi_delaunay_s,classify_s,extract_s,prune_s,betti_s,assemble_s,complex_s
 // with Betti numbers written b0:b1:b2; the stage seconds are summed over the rounds (the
 // last round's alone are on the comment lines), ratio = axis_s / delaunay_s, complex_s is
-// -1 without --complex. A mesh whose axis cannot reach the solid's Betti numbers is
+// -1 without --complex; comment lines give the mesh checks' seconds and, per round, the
+// stages and the next spacing's rule (refine). A mesh whose axis cannot reach the solid's Betti numbers is
 // reported on a comment line.
 #include <cstdio>
 #include <cstdlib>
@@ -75,15 +77,18 @@ std::vector<double> measure(const std::string& path, const MeshAxisOptions& opti
   out.insert(out.end(), stage.begin(), stage.end());
   out.push_back(axis.assemble_seconds);
   out.push_back(complex_s);
+  out.push_back(axis.check_seconds);
   out.push_back(static_cast<double>(axis.rounds.size()));
   for (const MeshAxisRound& r : axis.rounds)
     for (double x : {static_cast<double>(r.samples), r.sample_seconds, r.delaunay_seconds, r.classify_seconds,
-                     r.extract_seconds, r.prune_seconds, r.betti_seconds})
+                     r.extract_seconds, r.prune_seconds, r.betti_seconds, r.refine_seconds})
       out.push_back(x);
   return out;
 }
 
-constexpr std::size_t kRounds = 25;  // the index of the round count; the rounds follow it
+constexpr std::size_t kChecks = 25;  // the index of the mesh checks' seconds
+constexpr std::size_t kRounds = 26;  // the index of the round count; the rounds follow it
+constexpr std::size_t kPerRound = 8;
 
 }  // namespace
 
@@ -97,11 +102,12 @@ int main(int argc, char** argv) {
     if (a == "--repeat" && i + 1 < argc) repeat = std::atoi(argv[++i]);
     else if (a == "--samples" && i + 1 < argc) options.samples_per_edge = std::atof(argv[++i]);
     else if (a == "--angle" && i + 1 < argc) options.angle_degrees = std::atof(argv[++i]);
+    else if (a == "--min-growth" && i + 1 < argc) options.min_thickness_growth = std::atof(argv[++i]);
     else if (a == "--complex") complex = true;
     else meshes.push_back(a);
   }
   if (meshes.empty() || repeat < 1 || !(options.samples_per_edge > 0)) {
-    std::fprintf(stderr, "usage: bench_mesh_axis [--repeat K] [--samples S] [--angle DEG] [--complex] MESH...\n");
+    std::fprintf(stderr, "usage: bench_mesh_axis [--repeat K] [--samples S] [--angle DEG] [--min-growth G] [--complex] MESH...\n");
     return 2;
   }
   std::printf("mesh,vertices,samples,delaunay_s,axis_s,ratio,peak_mem_mb,betti_solid,betti_axis,faces,refinements,"
@@ -119,14 +125,15 @@ int main(int argc, char** argv) {
     const std::string name = base_name(path);
     std::printf("%s,%.0f,%.0f,%.4f,%.4f,%.2f,%.1f,%.0f:%.0f:%.0f,%.0f:%.0f:%.0f,%.0f,%.0f,%.0f,%.0f,%.0f", name.c_str(), v[0], v[1],
                 v[2], v[3], v[4], v[5], v[6], v[7], v[8], v[9], v[10], v[11], v[12], v[13], v[14], v[15], v[16]);
-    for (std::size_t i = 17; i < kRounds; ++i) std::printf(",%.4f", v[i]);
+    for (std::size_t i = 17; i < kChecks; ++i) std::printf(",%.4f", v[i]);
     std::printf("\n");
     const auto rounds = static_cast<std::size_t>(v[kRounds]);
+    std::printf("# %s: mesh checks (manifold, solid topology, locator) %.3f s\n", name.c_str(), v[kChecks]);
     for (std::size_t r = 0; r < rounds; ++r) {
-      const double* x = &v[kRounds + 1 + 7 * r];
+      const double* x = &v[kRounds + 1 + kPerRound * r];
       std::printf("# %s round %zu: %.0f samples; samples %.3f s, delaunay %.3f s, classify %.3f s, extract %.3f s, "
-                  "prune %.3f s, betti %.3f s\n",
-                  name.c_str(), r, x[0], x[1], x[2], x[3], x[4], x[5], x[6]);
+                  "prune %.3f s, betti %.3f s, next spacing %.3f s\n",
+                  name.c_str(), r, x[0], x[1], x[2], x[3], x[4], x[5], x[6], x[7]);
     }
     std::fflush(stdout);
   }

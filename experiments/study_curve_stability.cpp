@@ -25,12 +25,18 @@
 // runs that kept the topology), OUT/curve_stability.svg (median ratio against a, log-log,
 // per mesh and setting). The meshes are read from MESH_DIR (the shared dataset's
 // meshes/); tests do not run this.
-// Usage: study_curve_stability MESH_DIR [OUT] [--quick] [--shard I/N] [--progress|--quiet]
+// Usage: study_curve_stability MESH_DIR [OUT] [--quick] [--seeds K] [--max-samples N]
+//                              [--shard I/N] [--progress|--quiet]
+// (--seeds: seeds per amplitude, default 3; --max-samples: the mesh axis' sample limit,
+// default 200000: a perturbed surface whose axis would need more, e.g. a rough pipe whose
+// thickness rounds went on to 2 million samples, is an "axis failed" row, not an hour;
+// one note per run on stderr)
 // (--shard splits the meshes, experiments/shard.h: a shard writes its rows only).
 #include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -60,10 +66,12 @@ struct Curves {
   BettiNumbers axis;
 };
 
-Curves analyse(const TriangleMesh3& mesh, double h) {
+Curves analyse(const TriangleMesh3& mesh, double h, std::size_t max_samples) {
   Curves c;
   try {
-    const MedialComplex mc(mesh_medial_axis(mesh).complex);
+    MeshAxisOptions options;
+    options.max_samples = max_samples;
+    const MedialComplex mc(mesh_medial_axis(mesh, options).complex);
     mc.validate();
     const DiscreteBurning d = burn_discrete(mc, {h});
     const DiscreteBurningField field(mc, d);
@@ -98,16 +106,22 @@ int main(int argc, char** argv) {
   const experiments::Shard shard = experiments::take_shard(argc, argv);
   take_verbosity_flags(argc, argv);
   if (argc < 2) {
-    std::fprintf(stderr, "usage: study_curve_stability MESH_DIR [OUT] [--quick] [--shard I/N] [--progress|--quiet]\n");
+    std::fprintf(stderr, "usage: study_curve_stability MESH_DIR [OUT] [--quick] [--seeds K] [--max-samples N] [--shard I/N] [--progress|--quiet]\n");
     return 2;
   }
   const std::string dir = argv[1];
   std::string out = "experiments/results";
   bool quick = false;
+  int seeds_wanted = 3;
+  std::size_t max_samples = 200000;
   for (int i = 2; i < argc; ++i) {
     const std::string a = argv[i];
     if (a == "--quick")
       quick = true;
+    else if (a == "--seeds" && i + 1 < argc)
+      seeds_wanted = std::atoi(argv[++i]);
+    else if (a == "--max-samples" && i + 1 < argc)
+      max_samples = std::stoul(argv[++i]);
     else
       out = a;
   }
@@ -116,7 +130,7 @@ int main(int argc, char** argv) {
       quick ? std::vector<std::string>{"tripod", "pipe"} : std::vector<std::string>{"tripod", "cross", "pipe", "joint"}, shard);
   const std::vector<double> amplitudes = quick ? std::vector<double>{0.0025, 0.01, 0.04}
                                                : std::vector<double>{0.00125, 0.0025, 0.005, 0.01, 0.02, 0.04};
-  const int seeds = quick ? 1 : 3;
+  const int seeds = quick ? 1 : seeds_wanted;
   const std::string header =
       "mesh,setting,amplitude_fraction,amplitude,seed,status,hausdorff,ratio,extra,missing,b0,b1,b0_original,b1_original,"
       "topology_kept,axis_b0,axis_b1,axis_b2,length,length_original,nodes,axis_hausdorff,seconds";
@@ -129,7 +143,7 @@ int main(int argc, char** argv) {
   for (const std::string& name : meshes) {
     const TriangleMesh3 mesh = read_triangle_mesh(dir + "/" + name + ".off");
     const double diagonal = mesh_bounding_diagonal(mesh), h = diagonal / 100;
-    const Curves base = analyse(mesh, h);
+    const Curves base = analyse(mesh, h, max_samples);
     progress.item(name);
     note(name + ": " + base.status + "; curves " + std::to_string(base.raw.nodes.size()) + " / " +
          std::to_string(base.significant.nodes.size()) + " nodes, betti [" + std::to_string(base.raw.curve_betti.b0) +
@@ -138,8 +152,10 @@ int main(int argc, char** argv) {
     for (double a : amplitudes)
       for (int seed = 1; seed <= seeds; ++seed) {
         const auto start = std::chrono::steady_clock::now();
-        const Curves run = analyse(perturb_mesh(mesh, a * diagonal, static_cast<std::uint64_t>(seed)), h);
+        const Curves run = analyse(perturb_mesh(mesh, a * diagonal, static_cast<std::uint64_t>(seed)), h, max_samples);
         const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        note(name + " a=" + std::to_string(a) + " seed " + std::to_string(seed) + ": " + run.status + ", " +
+             std::to_string(seconds) + " s");
         for (const char* setting : {"raw", "significant"}) {
           const bool raw = std::string(setting) == "raw";
           const MedialCurves& b0 = raw ? base.raw : base.significant;

@@ -427,3 +427,17 @@ TEST_CASE("thin parts keep their axis: the tripod's arms and the cross's bars", 
        {std::array<double, 3>{0.5, 0, 0}, {-0.5, 0, 0}, {0, 0.5, 0}, {0, -0.5, 0}})
     CHECK(reaches_into_arm(c, {0, 0, 0}, end, 0.1));
 }
+
+TEST_CASE("mesh axis skips a thickness round that would add few samples", "[mesh_axis]") {
+  // joint: its thickness rounds add 147%, 25%, then 7.5% samples; the default skips the last.
+  const TriangleMesh3 joint = project_mesh("joint.off");
+  MeshAxisOptions every;
+  every.min_thickness_growth = 0;
+  const MeshAxis all = mesh_medial_axis(joint, every), skipped = mesh_medial_axis(joint);
+  REQUIRE(skipped.rounds.size() < all.rounds.size());
+  for (std::size_t r = 0; r < skipped.rounds.size(); ++r) CHECK(skipped.rounds[r].samples == all.rounds[r].samples);
+  const double growth = static_cast<double>(all.rounds[skipped.rounds.size()].samples) / skipped.rounds.back().samples - 1;
+  CHECK(growth < MeshAxisOptions{}.min_thickness_growth);
+  CHECK(skipped.axis_betti == all.axis_betti);
+  CHECK(skipped.axis_betti == skipped.solid.betti);
+}

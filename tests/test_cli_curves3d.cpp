@@ -97,7 +97,7 @@ TEST_CASE("curves3d and paths3d: bad input gives one message and no output", "[c
   std::remove(points.c_str());
 }
 
-TEST_CASE("curves3d and paths3d --method exact: the exact engine's field; singular edges need --singular-walls",
+TEST_CASE("curves3d and paths3d --method exact: the exact engine's field, Definition 9 at singular edges",
           "[cli_curves][exact3]") {
   const std::string json = temp_path("exact_curves.json"), paths = temp_path("exact_paths.json");
   auto r = run_cli("curves3d annulus --method exact --spacing 0.25 --json " + json);
@@ -117,9 +117,13 @@ TEST_CASE("curves3d and paths3d --method exact: the exact engine's field; singul
     CHECK(p["bt"].get<double>() == Approx(std::min(z, 8 - z)).margin(1e-9));
     CHECK(std::min(end, 8 - end) == Approx(0).margin(1e-9));
   }
+  // Singular edges burn by Definition 9: the curves keep the (contractible) axis' topology.
   r = run_cli("curves3d board-fin --method exact --json " + json);
-  CHECK(r.code == 1);
-  CHECK(r.output.find("--singular-walls") != std::string::npos);
+  REQUIRE(r.code == 0);
+  j = read_json(json);
+  CHECK(j["method"].get<std::string>().find("Definition 9") != std::string::npos);
+  CHECK(j["betti"] == nlohmann::json::array({1, 0}));
+  CHECK(j["axis_betti"] == nlohmann::json::array({1, 0, 0}));
   r = run_cli("paths3d board-fin --method exact --singular-walls --from vertices --json " + paths);
   CHECK(r.code == 0);
   r = run_cli("curves3d annulus --singular-walls --json " + json);

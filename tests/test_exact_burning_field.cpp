@@ -70,12 +70,12 @@ std::vector<std::pair<std::uint32_t, ExactPoint3>> sample_points(const MedialCom
 std::vector<std::pair<std::string, RawComplex>> field_corpus() {
   return {{"grid sheet with holes", grid_sheet(4, 3, 2, {{2, 2}, {5, 3}}, IgnitionRule::Linear)},
           {"tube", tube({8, 4, 2, 6})},
-          {"board-fin (walls)", board_fin({8, 1})}};
+          {"board-fin", board_fin({8, 1})}};
 }
 
 }  // namespace
 
-TEST_CASE("exact field samples are the engine's enclosures; paths carry BT as f(end) + length", "[exact3][paths]") {
+TEST_CASE("exact field samples are the engine's enclosures, paths carry BT as f(end) + length", "[exact3][paths]") {
   for (const auto& [name, raw] : field_corpus()) {
     CAPTURE(name);
     const ExactRun r(raw);
@@ -157,7 +157,7 @@ TEST_CASE("medial curves from the exact field have the axis' b0 and b1", "[exact
   const std::vector<std::pair<std::string, RawComplex>> cases = {
       {"tube (b1 = 1)", tube({8, 4, 2, 6})},
       {"grid sheet with two holes (b1 = 2)", grid_sheet(4, 3, 2, {{2, 2}, {5, 3}}, IgnitionRule::Linear)},
-      {"board-fin (walls)", board_fin({8, 1})},
+      {"board-fin", board_fin({8, 1})},
       {"y-junction (walls)", y_junction(1)}};
   for (const auto& [name, raw] : cases) {
     CAPTURE(name);

@@ -6,8 +6,8 @@
 // directions. A graph without edges is its nodes. Doubles; the sampling under-estimates
 // the directed distance by at most step / 2.
 // Contract: both graphs have at least one node; step > 0.
-// Complexity: O((samples of A) x (edges of B near each sample)) with a uniform grid over B
-// of cell size ~ its mean edge length; O(|A| |B|) in the worst case.
+// Complexity: O(|B| log |B|) to build an AABB tree of B's segments, then O(log |B|)
+// expected per sample of A.
 #pragma once
 
 #include "burn3/medial_curves.h"

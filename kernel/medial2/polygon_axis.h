@@ -15,10 +15,11 @@
 // Exactness: topology by exact predicates (Boost.Polygon on integers, or CGAL SDG with
 // filtered exact traits). R at a node is exact: a rational, a sum of square roots of
 // rationals (PPP, PPS, SSS and many PSS circles: voronoi_circle.h) or, for nested
-// radicals, a CertifiedConstant whose identity is the circle's defining sites, evaluated
-// in Arb at any precision. Straight edge lengths are exact square roots when the ends are
-// (a rational square root when the squared length is rational); parabolic arc lengths
-// are certified constants (closed form with asinh, Arb). The graph's double enclosures
+// radicals, a sum with square roots of sums of square roots (solve_radical), which
+// number/root_separation.h compares exactly. Straight edge lengths are exact (projections
+// on the bisector, square roots of sums for crossing lines); parabolic arc lengths are
+// differences of certified constants S[p;xi] (closed form with asinh, Arb) at exact focal
+// parameters and abscissas (polygon_axis_geometry.h). The graph's double enclosures
 // of R and lengths are rigorous and tight: double interval formulas, re-evaluated in
 // double-double (number/dd_ball.h) and then in Arb when wider than kTightBits relative
 // bits; exact values are built lazily,

@@ -2,6 +2,7 @@
 #include "medial2/polygon_axis_geometry.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 
 #include "medial2/polygon_axis_symmetry.h"
@@ -91,35 +92,34 @@ class CircleRadius : public CertifiedConstant {
 
 class EdgeLength : public CertifiedConstant {
  public:
-  EdgeLength(std::shared_ptr<const PolygonSites> s, AxisEdgeData e, VoronoiCircle a, VoronoiCircle b, std::string id,
-             std::optional<ArcForm> form = std::nullopt)
-      : sites_(std::move(s)), edge_(e), a_(a), b_(b), id_(std::move(id)), form_(std::move(form)) {}
+  EdgeLength(std::shared_ptr<const PolygonSites> s, AxisEdgeData e, VoronoiCircle a, VoronoiCircle b, std::string id)
+      : sites_(std::move(s)), edge_(e), a_(a), b_(b), id_(std::move(id)) {}
   void enclose(mpfr_ptr lo, mpfr_ptr hi) const override {
     enclose_with_ball(mpfr_get_prec(lo), lo, hi, cache_, [&] {
       return length_of(*sites_, edge_, solve_ball(*sites_, a_), solve_ball(*sites_, b_));
     });
   }
   std::string identity() const override { return id_; }
-  // Two arcs with exactly equal focal parameters and abscissas (as normalised by
-  // arc_form) have equal lengths; anything else is left undecided.
-  std::optional<bool> equals(const CertifiedConstant& other) const override {
-    const auto* o = dynamic_cast<const EdgeLength*>(&other);
-    if (!o || !form_ || !o->form_) return std::nullopt;
-    auto same = [](const ExactSum& x, const ExactSum& y) { return is_zero_sqrt_part(x - y); };
-    const ArcForm &a = *form_, &b = *o->form_;
-    if (same(a.p, b.p) && ((same(a.xu, b.xu) && same(a.xv, b.xv)) || (same(a.xu, b.xv) && same(a.xv, b.xu))))
-      return true;
-    return std::nullopt;
-  }
 
  private:
   std::shared_ptr<const PolygonSites> sites_;
   AxisEdgeData edge_;
   VoronoiCircle a_, b_;
   std::string id_;
-  std::optional<ArcForm> form_;
   mutable BallCache cache_;
 };
+
+// S(xi) at exact p and xi as a constant, with xi >= 0 by the oddness of S (mirror images
+// of an arc have opposite abscissas): coefficient times constant.
+ExactSum primitive(const ExactSum& p, ExactSum xi) {
+  NumberStats st;
+  const int s = sign(xi, &st);
+  if (s == 0 && st.uncertified_zero == 0) return ExactSum();
+  if (s < 0) xi.scale(-1);
+  ExactSum out = ExactSum::constant(arc_primitive_constant(p, std::move(xi)));
+  if (s < 0) out.scale(-1);
+  return out;
+}
 
 }  // namespace
 
@@ -153,14 +153,29 @@ Interval edge_length(const PolygonSites& s, const AxisEdgeData& e, const CircleV
   return abs_of(half(algebraic) + half(p.to_interval() * transcendental));
 }
 
+namespace {
+
+// Site indices name a value only inside one axis: the same indices in another frame (a
+// translated or scaled copy) or another polygon are another value. Every identity built
+// from indices carries this token, unique per geometry object in the process.
+std::string fresh_identity_token() {
+  static std::atomic<std::uint64_t> counter{0};
+  return "axis#" + std::to_string(++counter) + ":";
+}
+
+}  // namespace
+
 PolygonAxisGeometry::PolygonAxisGeometry(std::shared_ptr<const PolygonSites> sites, mpq_class to_input,
                                          std::vector<AxisNodeData> nodes, std::vector<AxisEdgeData> edges)
-    : sites_(std::move(sites)),
+    : identity_token_(fresh_identity_token()),
+      sites_(std::move(sites)),
       to_input_(std::move(to_input)),
       nodes_(std::move(nodes)),
       edges_(std::move(edges)),
       circle_done_(nodes_.size(), 0),
       circles_(nodes_.size()),
+      radical_done_(nodes_.size(), 0),
+      radicals_(nodes_.size()),
       lengths_(edges_.size()),
       ball_circles_(nodes_.size()),
       dd_circles_(nodes_.size()) {}
@@ -242,7 +257,7 @@ LongInterval PolygonAxisGeometry::enclose_length_long(std::uint32_t edge) const 
 }
 
 std::string PolygonAxisGeometry::node_identity(std::uint32_t i) const {
-  std::string id = "vertex{";
+  std::string id = identity_token_ + "vertex{";
   for (std::uint32_t s : nodes_[i].sites) id += std::to_string(s) + ",";
   return id + "}" + identity(nodes_[i].circle);
 }
@@ -255,9 +270,17 @@ const std::optional<CircleValue<ExactSum>>& PolygonAxisGeometry::exact_circle(st
   return circles_[i];
 }
 
+const std::optional<CircleValue<ExactSum>>& PolygonAxisGeometry::radical_circle(std::uint32_t i) const {
+  if (!radical_done_[i]) {
+    radicals_[i] = exact_circle(i) ? exact_circle(i) : solve_radical(*sites_, nodes_[i].circle);
+    radical_done_[i] = 1;
+  }
+  return radicals_[i];
+}
+
 ExactSum PolygonAxisGeometry::exact_radius(std::uint32_t node) const {
   ExactSum r;
-  if (const auto& c = exact_circle(node))
+  if (const auto& c = radical_circle(node))
     r = c->r;
   else
     r = ExactSum::constant(std::make_shared<CircleRadius>(sites_, nodes_[node].circle, node_identity(node)));
@@ -265,63 +288,65 @@ ExactSum PolygonAxisGeometry::exact_radius(std::uint32_t node) const {
   return r;
 }
 
-// The arc length |S(xi_v) - S(xi_u)| depends only on the focal parameter p and the two
-// abscissas; S is odd, so (p, {xi_u, xi_v}) up to a common sign names the value. Equal
-// arcs (mirror-symmetric shapes) then share one identity and cancel exactly; without
-// exact end circles the identity falls back to the sites.
+// The focal parameter p = cross(d, F - A) / |d| and the abscissas xi = d.(X - F) / |d| of
+// the arc's ends (d the directrix segment's direction, F the focus), from the end circles'
+// exact or radical forms. Collinear segments give one frame, so pieces of one parabola
+// split at a collinear vertex share the abscissa of their common end.
 std::optional<ArcForm> PolygonAxisGeometry::arc_form(const AxisEdgeData& e) const {
-  const auto& a = exact_circle(e.u);
-  const auto& b = exact_circle(e.v);
-  if (a && b) {
-    try {
-      const PolygonSites& s = *sites_;
-      const std::uint32_t f = s.is_point(e.site_a) ? e.site_a : e.site_b;
-      const std::uint32_t l = s.is_point(e.site_a) ? e.site_b : e.site_a;
-      const Point2 fp = s.vertex[f], la = s.vertex[s.seg_start(l)], lb = s.vertex[s.seg_end(l)];
-      const RootSum dx = RootSum(lb.x) - RootSum(la.x), dy = RootSum(lb.y) - RootSum(la.y);
-      const RootSum len = sqrt(dx * dx + dy * dy);
-      const RootSum p = (dx * (RootSum(fp.y) - RootSum(la.y)) - dy * (RootSum(fp.x) - RootSum(la.x))) / len;
-      RootSum xu = (dx * (RootSum(a->x) - RootSum(fp.x)) + dy * (RootSum(a->y) - RootSum(fp.y))) / len;
-      RootSum xv = (dx * (RootSum(b->x) - RootSum(fp.x)) + dy * (RootSum(b->y) - RootSum(fp.y))) / len;
-      const int sum_sign = exact_sign((xu + xv).v);
-      if (sum_sign < 0 || (sum_sign == 0 && exact_sign(xu.v) < 0)) {
-        xu = -xu;
-        xv = -xv;
-      }
-      return ArcForm{p.v, xu.v, xv.v};
-    } catch (const NestedRadical&) {
-    }
-  }
-  return std::nullopt;
+  const auto& a = radical_circle(e.u);
+  const auto& b = radical_circle(e.v);
+  if (!a || !b) return std::nullopt;
+  const PolygonSites& s = *sites_;
+  const std::uint32_t f = s.is_point(e.site_a) ? e.site_a : e.site_b;
+  const std::uint32_t l = s.is_point(e.site_a) ? e.site_b : e.site_a;
+  const Point2 fp = s.vertex[f], la = s.vertex[s.seg_start(l)], lb = s.vertex[s.seg_end(l)];
+  const mpq_class fx(fp.x), fy(fp.y), dx = mpq_class(lb.x) - mpq_class(la.x), dy = mpq_class(lb.y) - mpq_class(la.y);
+  const mpq_class squared = dx * dx + dy * dy;
+  ExactSum inverse_length = ExactSum::sqrt_of(squared);  // 1 / |d| = sqrt(|d|^2) / |d|^2
+  inverse_length.scale(1 / squared);
+  auto abscissa = [&](const CircleValue<ExactSum>& c) {
+    ExactSum u = c.x - ExactSum::rational(fx), v = c.y - ExactSum::rational(fy);
+    return multiply_radical(u.scale(dx) + v.scale(dy), inverse_length);
+  };
+  const mpq_class cross = dx * (fy - mpq_class(la.y)) - dy * (fx - mpq_class(la.x));
+  return ArcForm{multiply(ExactSum::rational(cross), inverse_length), abscissa(*a), abscissa(*b)};
 }
 
-std::string PolygonAxisGeometry::arc_identity(const AxisEdgeData& e, const std::string& ends,
-                                              const std::optional<ArcForm>& form) const {
-  if (form) {
-    std::string su = to_string(form->xu), sv = to_string(form->xv);
-    if (sv < su) std::swap(su, sv);
-    return "arc[" + to_string(form->p) + ";" + su + ";" + sv + "]";
-  }
-  return "arc(" + std::to_string(e.site_a) + "," + std::to_string(e.site_b) + ";" + ends + ")";
+namespace {
+
+// |S(xi_v) - S(xi_u)| = sigma (S(xi_v) - S(xi_u)) with sigma the sign of xi_v - xi_u,
+// nonzero on an edge of positive length; nullopt when that sign is not certified.
+std::optional<ExactSum> primitive_difference(const ArcForm& f) {
+  NumberStats st;
+  const int sigma = sign(f.xv - f.xu, &st);
+  if (sigma == 0 || st.uncertified_zero != 0) return std::nullopt;
+  ExactSum out = primitive(f.p, f.xv) - primitive(f.p, f.xu);
+  out.scale(sigma);
+  return out;
 }
+
+}  // namespace
 
 ExactSum PolygonAxisGeometry::frame_length(std::uint32_t edge) const {
   const AxisEdgeData& e = edges_[edge];
   const std::string iu = node_identity(e.u), iv = node_identity(e.v);
   const std::string ends = iu < iv ? iu + ";" + iv : iv + ";" + iu;
   if (e.parabolic) {
-    std::optional<ArcForm> form = arc_form(e);
-    const std::string id = arc_identity(e, ends, form);
-    return ExactSum::constant(
-        std::make_shared<EdgeLength>(sites_, e, nodes_[e.u].circle, nodes_[e.v].circle, id, std::move(form)));
+    if (const std::optional<ArcForm> form = arc_form(e))
+      if (std::optional<ExactSum> length = primitive_difference(*form)) return *length;
+    const std::string id = "arc(" + std::to_string(e.site_a) + "," + std::to_string(e.site_b) + ";" + ends + ")";
+    return ExactSum::constant(std::make_shared<EdgeLength>(sites_, e, nodes_[e.u].circle, nodes_[e.v].circle, id));
   }
-  const auto& a = exact_circle(e.u);
-  const auto& b = exact_circle(e.v);
-  if (!a || !b)
+  const auto& a = radical_circle(e.u);
+  const auto& b = radical_circle(e.v);
+  if (a && b)
+    if (std::optional<ExactSum> projected = straight_length(e, *a, *b)) return *projected;
+  const auto& pa = exact_circle(e.u);
+  const auto& pb = exact_circle(e.v);
+  if (!pa || !pb)
     return ExactSum::constant(
         std::make_shared<EdgeLength>(sites_, e, nodes_[e.u].circle, nodes_[e.v].circle, "segment(" + ends + ")"));
-  if (std::optional<ExactSum> projected = straight_length(e, *a, *b)) return *projected;
-  const ExactSum dx = a->x - b->x, dy = a->y - b->y;
+  const ExactSum dx = pa->x - pb->x, dy = pa->y - pb->y;
   ExactSum squared = multiply(dx, dx) + multiply(dy, dy);
   squared.simplify();
   return sqrt_term(squared);
@@ -330,7 +355,8 @@ ExactSum PolygonAxisGeometry::frame_length(std::uint32_t edge) const {
 // A straight edge lies on the bisector of its two sites, whose direction w is exact:
 // rot90(Q - P) for two points, the normal n for a point on a segment's line, and
 // rot90(u1 - u2) for two lines with unit inward normals u1, u2 (equal signed distances).
-// Its length is |(X_u - X_v) . w| / |w|. The numerator is a sum of square roots; so is
+// Its length is |(X_u - X_v) . w| / |w|. The numerator is a sum of square roots (and of
+// square roots of sums when an end is a nested-radical circle: solve_radical); so is
 // 1 / |w| for the first two and for anti-parallel lines (|w| = 2), and then the length
 // is an ExactSum. For two crossing lines 1 / |w|^2 = q is a sum of square roots, and
 // the length sum_i c_i sqrt(r_i) sqrt(q) = sum_i c_i sqrt(r_i q) is written with square
@@ -371,26 +397,30 @@ std::optional<ExactSum> PolygonAxisGeometry::straight_length(const AxisEdgeData&
         }
       }
     }
-    RootSum along = (RootSum(a.x) - RootSum(b.x)) * wx + (RootSum(a.y) - RootSum(b.y)) * wy;
+    // X_u, X_v may hold square roots of sums (solve_radical): multiply_radical keeps them.
+    ExactSum along = multiply_radical(a.x - b.x, wx.v) + multiply_radical(a.y - b.y, wy.v);
+    along.simplify();
     const RootSum ww = wx * wx + wy * wy;
-    const int sa = exact_sign(along.v), sw = exact_sign(ww.v);
-    if (sa == 0 || sw <= 0) return std::nullopt;
-    if (sa < 0) along = -along;
+    NumberStats st;
+    const int sa = sign(along, &st), sw = exact_sign(ww.v);
+    if (sa == 0 || st.uncertified_zero != 0 || sw <= 0) return std::nullopt;
+    if (sa < 0) along.scale(-1);
     const RootSum q = RootSum(1.0) / ww;
     if (std::optional<mpq_class> root = q.v.sqrt_terms().empty() ? rational_sqrt(q.v.rational_part()) : std::nullopt)
-      return (along * RootSum(ExactSum::rational(*root))).v;
-    if (q.v.sqrt_terms().empty()) return (along * RootSum(ExactSum::sqrt_of(q.v.rational_part()))).v;
-    // sum_i c_i sqrt(r_i q), each root denested when it can be.
+      return along.scale(*root);
+    if (q.v.sqrt_terms().empty()) return multiply_radical(along, ExactSum::sqrt_of(q.v.rational_part()));
+    // sum_i c_i sqrt(r_i q) + sum_k d_k sqrt(E_k q), each root denested when it can be.
     ExactSum out;
-    auto add_root = [&](const mpq_class& c, const mpq_class& r) {
-      ExactSum radicand = q.v;
-      radicand.scale(r);
-      ExactSum term = sqrt_term(radicand);
-      term.scale(c);
-      out += term;
+    auto add_root = [&](const mpq_class& c, ExactSum radicand) {
+      ExactSum term = sqrt_term(multiply(radicand, q.v));
+      out += term.scale(c);
     };
-    if (sgn(along.v.rational_part()) != 0) add_root(along.v.rational_part(), 1);
-    for (const SqrtTerm& t : along.v.sqrt_terms()) add_root(t.coef, t.radicand);
+    if (sgn(along.rational_part()) != 0) add_root(along.rational_part(), ExactSum::rational(1));
+    for (const SqrtTerm& t : along.sqrt_terms()) add_root(t.coef, ExactSum::rational(t.radicand));
+    for (const ConstantTerm& t : along.constant_terms()) {
+      if (!t.value->radicand()) return std::nullopt;
+      add_root(t.coef, *t.value->radicand());
+    }
     out.simplify();
     return out;
   } catch (const NestedRadical&) {

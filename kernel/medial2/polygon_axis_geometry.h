@@ -2,12 +2,16 @@
 // polygon_axis.h): R at nodes and edge lengths as ExactSums, built lazily.
 //
 // Computes, per node, the exact R of its Voronoi circle (voronoi_circle.h) scaled from
-// the exact frame to input coordinates; per edge, the exact length: for a straight edge
+// the exact frame to input coordinates (a nested-radical PSS circle in its radical form,
+// solve_radical); per edge, the exact length: for a straight edge
 // sqrt(|X_u - X_v|^2) when both ends are sums of square roots (a rational square root,
 // a denested root, or a constant identified by the exact squared length), a constant
 // identified by the two circles otherwise; for a parabolic arc the closed-form length
-// |S(xi_v) - S(xi_u)| (number/parabolic_arc.h) as a constant identified by its focus,
-// directrix and the two circles. Constants evaluate in Arb at the requested precision.
+// sigma (S(xi_v) - S(xi_u)) as two constants S[p;xi] (number/parabolic_arc.h) of the exact
+// focal parameter and abscissas, so that arcs split differently telescope; a constant
+// identified by the two circles when an end has no exact form. Constants evaluate in Arb
+// at the requested precision. Identities built from site indices carry a token unique to
+// the geometry (indices name values only inside one axis).
 // Value classes: nodes and edges that an exact symmetry of the polygon maps onto each
 // other (polygon_axis_symmetry.h), so that equal burn times cancel without exact forms.
 // Also: rigorous double / Arb enclosures of lengths from circle values (used by the
@@ -92,18 +96,22 @@ class PolygonAxisGeometry : public MedialGeometry {
   const mpq_class& to_input() const { return to_input_; }
   const AxisNodeData& node_data(std::uint32_t i) const { return nodes_[i]; }
   const AxisEdgeData& edge_data(std::uint32_t e) const { return edges_[e]; }
+  // Names the node's circle by its sites, prefixed with a token unique to this geometry
+  // (indices name values only inside one axis: CertifiedConstant identities must be global).
   std::string node_identity(std::uint32_t i) const;
   // The node's circle as exact sums in the frame, or nullopt for a nested radical.
   const std::optional<CircleValue<ExactSum>>& exact_circle(std::uint32_t i) const;
+  // exact_circle, or for a nested radical its form with square roots of sums
+  // (voronoi_circle.h: solve_radical); nullopt when neither exists.
+  const std::optional<CircleValue<ExactSum>>& radical_circle(std::uint32_t i) const;
 
  private:
   ExactSum frame_length(std::uint32_t edge) const;
   std::optional<ExactSum> straight_length(const AxisEdgeData& e, const CircleValue<ExactSum>& a,
                                           const CircleValue<ExactSum>& b) const;
-  // The arc's focal parameter and its ends' abscissas, exactly, up to a common sign (S is
-  // odd), or nullopt when an end circle is a nested radical.
+  // The arc's focal parameter and its ends' abscissas, exactly (radical forms allowed), or
+  // nullopt when an end circle has no exact form.
   std::optional<ArcForm> arc_form(const AxisEdgeData& e) const;
-  std::string arc_identity(const AxisEdgeData& e, const std::string& ends, const std::optional<ArcForm>& form) const;
   static constexpr long kBallBits = 192;
   const CircleValue<Ball>& ball_circle(std::uint32_t i) const;  // kBallBits, memoised
   const CircleValue<DDBall>& dd_circle(std::uint32_t i) const;   // memoised
@@ -112,12 +120,15 @@ class PolygonAxisGeometry : public MedialGeometry {
   // lo <= frame_value * to_input <= hi, rounded outwards at the precision of lo and hi.
   void scaled_to_input(const Ball& frame_value, mpfr_ptr lo, mpfr_ptr hi) const;
 
+  std::string identity_token_;  // prefixes identities built from site indices (see the .cpp)
   std::shared_ptr<const PolygonSites> sites_;
   mpq_class to_input_;
   std::vector<AxisNodeData> nodes_;
   std::vector<AxisEdgeData> edges_;
   mutable std::vector<std::uint8_t> circle_done_;
   mutable std::vector<std::optional<CircleValue<ExactSum>>> circles_;
+  mutable std::vector<std::uint8_t> radical_done_;
+  mutable std::vector<std::optional<CircleValue<ExactSum>>> radicals_;
   mutable std::vector<std::optional<ExactSum>> lengths_;
   mutable std::vector<std::optional<CircleValue<Ball>>> ball_circles_;
   mutable std::vector<std::optional<CircleValue<DDBall>>> dd_circles_;

@@ -360,4 +360,34 @@ std::optional<CircleValue<ExactSum>> solve_exact(const PolygonSites& s, const Vo
   }
 }
 
+// A PSS circle whose R is a nested radical: R = (sigma sqrt(b^2 - a c) - b) / a (solve_pss)
+// with a, b, c sums of square roots, the outer root written with sqrt_term and carried
+// through the centre X0 + R W by multiply_radical (number/sqrt_field.h).
+std::optional<CircleValue<ExactSum>> solve_radical(const PolygonSites& s, const VoronoiCircle& c) {
+  if (std::optional<CircleValue<ExactSum>> plain = solve_exact(s, c)) return plain;
+  if (c.kind != CircleKind::PSS || c.tangent) return std::nullopt;
+  try {
+    const Pt<Exact> p = point_of<Exact>(s, c.sites[0]);
+    const Line<Exact> l1 = line_of<Exact>(s, c.sites[1]), l2 = line_of<Exact>(s, c.sites[2]);
+    const Exact det = l1.nx * l2.ny - l1.ny * l2.nx;
+    const Exact s1 = sqrt(l1.N), s2 = sqrt(l2.N), sm = sqrt(l1.N * l2.N);
+    const Exact m = l1.nx * l2.nx + l1.ny * l2.ny;
+    const Exact x0 = (l2.c * l1.ny - l1.c * l2.ny) / det, y0 = (l1.c * l2.nx - l2.c * l1.nx) / det;
+    const Exact wx = (s1 * l2.ny - s2 * l1.ny) / det, wy = (l1.nx * s2 - l2.nx * s1) / det;
+    const Exact ex = x0 - p.x, ey = y0 - p.y;
+    const Exact k = (sm - m) / det;
+    const Exact a = k * k, b = ex * wx + ey * wy, cc = ex * ex + ey * ey;
+    ExactSum root = sqrt_term((b * b - a * cc).v);
+    if (c.root < 0) root.scale(-1);
+    const Exact inverse_a = Exact(1.0) / a;
+    const ExactSum r = multiply_radical(root - b.v, inverse_a.v);
+    ExactSum x = x0.v + multiply_radical(r, wx.v), y = y0.v + multiply_radical(r, wy.v);
+    x.simplify();
+    y.simplify();
+    return CircleValue<ExactSum>{std::move(x), std::move(y), r};
+  } catch (const NestedRadical&) {
+    return std::nullopt;
+  }
+}
+
 }  // namespace grassfire

@@ -15,7 +15,7 @@
 // One formula, four number types: double intervals (fast filter), double-double balls
 // (when the intervals lose too much to cancellation), Arb balls (any precision), and
 // exact sums of square roots (nullopt where the value is a nested
-// radical that does not denest; it is then a certified constant, polygon_axis.h).
+// radical that does not denest; solve_radical then writes it with square roots of sums).
 // Contract: the sites come from a validated polygon and define a Voronoi vertex.
 // Complexity: O(1) arithmetic per circle.
 #pragma once
@@ -69,5 +69,9 @@ CircleValue<Ball> solve_ball(const PolygonSites& sites, const VoronoiCircle& c);
 // In double-double balls (number/dd_ball.h): the stage between intervals and Arb.
 CircleValue<DDBall> solve_dd(const PolygonSites& sites, const VoronoiCircle& c);
 std::optional<CircleValue<ExactSum>> solve_exact(const PolygonSites& sites, const VoronoiCircle& c);
+// solve_exact, or for a PSS circle that is a nested radical its exact form with square roots
+// of sums of square roots as constants (number/sqrt_field.h: sqrt_term, multiply_radical),
+// which number/root_separation.h compares exactly; nullopt when even that form fails.
+std::optional<CircleValue<ExactSum>> solve_radical(const PolygonSites& sites, const VoronoiCircle& c);
 
 }  // namespace grassfire

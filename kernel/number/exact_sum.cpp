@@ -2,6 +2,7 @@
 #include "number/exact_sum.h"
 
 #include "number/mpfr_bounds.h"
+#include "number/root_separation.h"
 
 #include <algorithm>
 #include <map>
@@ -100,6 +101,7 @@ void NumberStats::merge(const NumberStats& o) {
   extended_decided += o.extended_decided;
   mpfr_decided += o.mpfr_decided;
   exact_zero += o.exact_zero;
+  separation_decided += o.separation_decided;
   class_zero += o.class_zero;
   uncertified_zero += o.uncertified_zero;
   max_bits_used = std::max(max_bits_used, o.max_bits_used);
@@ -295,6 +297,15 @@ int sign(const ExactSum& input, NumberStats* stats) {
   if (x.constant_terms().empty() && is_zero_sqrt_part(x)) {
     ++st.exact_zero;
     return 0;
+  }
+  if (!x.constant_terms().empty()) {
+    long bits = 0;
+    if (const std::optional<int> s = radical_sign(x, kMaxSeparationBits, &bits)) {
+      ++st.separation_decided;
+      ++(*s == 0 ? st.exact_zero : st.mpfr_decided);
+      st.max_bits_used = std::max<std::uint64_t>(st.max_bits_used, static_cast<std::uint64_t>(bits));
+      return *s;
+    }
   }
   // Nonzero (or with constants): raise the precision until the enclosure excludes zero.
   for (long bits = 1024; bits <= kMaxBits; bits *= 2) {

@@ -12,8 +12,10 @@
 // Certified constants (transcendental values such as parabolic arc lengths, issue 4)
 // cancel by identity, or, when no precision up to 512 bits separates the sum from zero,
 // by exact equality of pairs (CertifiedConstant::equals) among those whose enclosures
-// overlap; a sum with uncancelled constants that no precision up to kMaxBits separates
-// from zero is reported as zero and counted as an uncertified tie.
+// overlap. When the constants left are all square roots of constant-free sums (nested
+// radicals), a root-separation bound decides the sign exactly (root_separation.h). A sum
+// with other uncancelled constants that no precision up to kMaxBits separates from zero is
+// reported as zero and counted as an uncertified tie.
 // Complexity: O(k log k) for k terms plus the MPFR work; the zero test does pairwise
 // perfect-square tests only inside buckets of equal Legendre-symbol fingerprints.
 #pragma once
@@ -32,6 +34,8 @@
 namespace grassfire {
 
 // A real constant known through certified enclosures at any precision.
+class ExactSum;
+
 class CertifiedConstant {
  public:
   virtual ~CertifiedConstant() = default;
@@ -46,6 +50,10 @@ class CertifiedConstant {
     (void)other;
     return std::nullopt;
   }
+  // When the constant is sqrt(E) for a constant-free sum E >= 0 (sqrt_field.h's
+  // sqrt_constant), E; the root-separation test (root_separation.h) then decides sums of
+  // such constants exactly. nullptr for any other constant.
+  virtual const ExactSum* radicand() const { return nullptr; }
   // The 53-bit enclosure, computed once (sign() of a sum asks for it on every filter pass).
   const Interval& approx() const;
 
@@ -106,6 +114,7 @@ struct NumberStats {
   std::uint64_t mpfr_decided = 0;      // decided by a multiprecision enclosure
   std::uint64_t exact_zero = 0;        // proved zero by the square-class test or by value classes
   std::uint64_t class_zero = 0;        // of exact_zero: by value classes, no exact form built
+  std::uint64_t separation_decided = 0;  // of exact_zero and mpfr_decided: by a root-separation bound
   std::uint64_t uncertified_zero = 0;  // constants left, no precision up to kMaxBits separated
   std::uint64_t max_bits_used = 0;
   void merge(const NumberStats& o);

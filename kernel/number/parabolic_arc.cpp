@@ -3,6 +3,9 @@
 
 #include <cmath>
 #include <limits>
+#include <string>
+
+#include "number/mpfr_bounds.h"
 
 namespace grassfire {
 
@@ -83,6 +86,62 @@ Ball parabola_arc_primitive(const Ball& xi, const Ball& p) {
   const Ball z = xi / p;
   const Ball half_ball(0.5);
   return half_ball * xi * sqrt(Ball(1.0) + z * z) + half_ball * p * asinh(z);
+}
+
+namespace {
+
+Ball ball_of_sum(const ExactSum& x, long bits) {
+  MpfrBounds b(bits);
+  x.enclose(b.lo, b.hi);
+  Ball r;
+  arb_set_interval_mpfr(r.get(), b.lo, b.hi, bits);
+  return r;
+}
+
+// x = y exactly, certified (an uncertified zero of sign() is not a proof).
+bool proved_equal(const ExactSum& x, const ExactSum& y) {
+  NumberStats st;
+  return sign(x - y, &st) == 0 && st.uncertified_zero == 0;
+}
+
+class ArcPrimitive : public CertifiedConstant {
+ public:
+  ArcPrimitive(ExactSum p, ExactSum xi)
+      : p_(std::move(p)), xi_(std::move(xi)), id_("S[" + to_string(p_) + ";" + to_string(xi_) + "]") {}
+  // In Arb at rising working precision until the ball is accurate to the bits asked for;
+  // the last ball is kept (the burning asks for the same constants repeatedly).
+  void enclose(mpfr_ptr lo, mpfr_ptr hi) const override {
+    const long bits = mpfr_get_prec(lo);
+    if (accuracy_ < bits) {
+      for (long work = bits + 64;; work *= 2) {
+        BallPrecision guard(work);
+        value_ = parabola_arc_primitive(ball_of_sum(xi_, work), ball_of_sum(p_, work));
+        accuracy_ = value_.accuracy_bits();
+        if (accuracy_ >= bits || work > 16 * (bits + 64)) break;
+      }
+    }
+    value_.to_mpfr(lo, hi);
+  }
+  std::string identity() const override { return id_; }
+  std::optional<bool> equals(const CertifiedConstant& other) const override {
+    const auto* o = dynamic_cast<const ArcPrimitive*>(&other);
+    if (!o || !proved_equal(p_, o->p_) || !proved_equal(xi_, o->xi_)) return std::nullopt;
+    return true;
+  }
+
+ private:
+  ExactSum p_, xi_;
+  std::string id_;
+  mutable Ball value_;
+  mutable long accuracy_ = -1;
+};
+
+}  // namespace
+
+std::shared_ptr<const CertifiedConstant> arc_primitive_constant(ExactSum p, ExactSum xi) {
+  p.simplify();
+  xi.simplify();
+  return std::make_shared<ArcPrimitive>(std::move(p), std::move(xi));
 }
 
 }  // namespace grassfire

@@ -32,6 +32,7 @@ class SqrtOfSum : public CertifiedConstant {
     mpfr_sqrt(hi, hi, MPFR_RNDU);
   }
   std::string identity() const override { return id_; }
+  const ExactSum* radicand() const override { return &x_; }
   std::optional<bool> equals(const CertifiedConstant& other) const override {
     const auto* o = dynamic_cast<const SqrtOfSum*>(&other);
     if (!o) return std::nullopt;
@@ -120,6 +121,27 @@ ExactSum multiply(const ExactSum& a, const ExactSum& b) {
         r += ExactSum::rational(t.coef * u.coef * t.radicand);
       else
         r += root_term(t.coef * u.coef, radicand);
+    }
+  }
+  r.simplify();
+  return r;
+}
+
+ExactSum multiply_radical(const ExactSum& a, const ExactSum& b) {
+  require_no_constants(b);
+  ExactSum plain = ExactSum::rational(a.rational_part());
+  for (const SqrtTerm& t : a.sqrt_terms()) plain += root_term(t.coef, t.radicand);
+  ExactSum r = multiply(plain, b);
+  for (const ConstantTerm& c : a.constant_terms()) {
+    const ExactSum* e = c.value->radicand();
+    if (!e) throw std::invalid_argument("sqrt_field: not a square root of a sum: " + c.value->identity());
+    ExactSum kept = ExactSum::constant(c.value);
+    kept.scale(c.coef * b.rational_part());
+    r += kept;
+    for (const SqrtTerm& t : b.sqrt_terms()) {
+      ExactSum radicand = *e;
+      ExactSum term = sqrt_term(radicand.scale(t.radicand));
+      r += term.scale(c.coef * t.coef);
     }
   }
   r.simplify();

@@ -36,6 +36,11 @@ std::shared_ptr<const CertifiedConstant> sqrt_constant(ExactSum x);
 // common factor freed of squares of primes below 100), so that roots of sums that differ
 // by such a square factor share one radicand and cancel or merge.
 ExactSum sqrt_term(const ExactSum& x);
+// a * b where a may also hold square roots of sums (sqrt_constant, sqrt_term) and b holds
+// no constants: c sqrt(s) * d sqrt(E) = c d sqrt(s E), written with sqrt_term. Keeps nested
+// radicals such as PSS circles (medial2/voronoi_circle.h) in the form that
+// number/root_separation.h decides. Throws std::invalid_argument for any other constant.
+ExactSum multiply_radical(const ExactSum& a, const ExactSum& b);
 // Exact sign of a sum without constants (never uncertified).
 int exact_sign(const ExactSum& x, NumberStats* stats = nullptr);
 

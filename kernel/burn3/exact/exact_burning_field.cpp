@@ -200,6 +200,17 @@ void ExactBurningField::walk_time(std::uint32_t time, std::uint32_t vertex, std:
       case TimeExpr::Kind::Exact:
         return;  // the vertex's ignition, or a point source on it
       case TimeExpr::Kind::WindowAt:
+        if (is_edge_point(e.b)) {  // a kink or stretch end: back along the front that burned it
+          const EdgePoint& ep = s.edge_points[e.b & ~kEdgePointBound];
+          const auto& ev = mc_.edge(ep.edge).v;
+          const Vec3d& a = mc_.vertex(ev[0]).approx;
+          const Vec3d& b = mc_.vertex(ev[1]).approx;
+          const double l = ep.lambda.mid();
+          const Vec3d q{a[0] + l * (b[0] - a[0]), a[1] + l * (b[1] - a[1]), a[2] + l * (b[2] - a[2])};
+          if (!same_point(q, path.back())) path.push_back(q);
+          walk_window(e.a, q, path, budget);
+          return;
+        }
         if (e.b >= mc_.vertex_count()) return;
         walk_window(e.a, mc_.vertex(e.b).approx, path, budget);
         return;

@@ -268,12 +268,17 @@ class Extractor {
       if (vertex_of(c) == kNone)
         for (int k = 0; k < 4; ++k)
           if (!dt_.is_infinite(c->vertex(k))) open[c->vertex(k)->info()] = true;
-    std::vector<std::pair<std::uint32_t, std::uint32_t>> faces;  // (interior sample, polygon)
+    // The polygons of each interior sample, by increasing id (a counting sort: linear).
+    std::vector<std::uint32_t> first(n + 1, 0);
+    for (const auto& pq : out_->pq)
+      for (std::uint32_t s : pq)
+        if (!open[s]) ++first[s + 1];
+    for (std::size_t s = 0; s < n; ++s) first[s + 1] += first[s];
+    if (first[n] == 0) return;
+    std::vector<std::uint32_t> faces(first[n]), fill(first.begin(), first.end() - 1);
     for (std::uint32_t i = 0; i < out_->pq.size(); ++i)
       for (std::uint32_t s : out_->pq[i])
-        if (!open[s]) faces.push_back({s, i});
-    if (faces.empty()) return;
-    std::sort(faces.begin(), faces.end());
+        if (!open[s]) faces[fill[s]++] = i;
     std::vector<std::uint32_t> pending;
     for (std::uint32_t s = 0; s < n; ++s)
       if (!open[s]) pending.push_back(s);
@@ -282,16 +287,16 @@ class Extractor {
     while (!pending.empty()) {
       std::vector<std::uint32_t> later;
       for (std::uint32_t s : pending) {
-        auto it = std::lower_bound(faces.begin(), faces.end(), std::make_pair(s, 0u));
-        for (; it != faces.end() && it->first == s; ++it) {
-          const auto& pq = out_->pq[it->second];
-          if (!dropped[it->second] && open[pq[0] == s ? pq[1] : pq[0]]) break;
+        std::uint32_t k = first[s];
+        for (; k < first[s + 1]; ++k) {
+          const auto& pq = out_->pq[faces[k]];
+          if (!dropped[faces[k]] && open[pq[0] == s ? pq[1] : pq[0]]) break;
         }
-        if (it == faces.end() || it->first != s) {
+        if (k == first[s + 1]) {
           later.push_back(s);
           continue;
         }
-        dropped[it->second] = true;
+        dropped[faces[k]] = true;
         open[s] = true;
       }
       if (later.size() == pending.size()) throw std::logic_error("inner_voronoi: sample cells cannot be collapsed");

@@ -158,6 +158,9 @@ AxisCells axis_cells(const InnerVoronoi& vor, const PrunedComplex& pruned) {
 RawComplex assemble(const InnerVoronoi& vor, const AxisCells& cells, const std::string& source) {
   RawComplex raw;
   raw.source = source + " (inner Voronoi medial axis)";
+  raw.vertices.reserve(cells.voronoi_vertex.size());
+  raw.radius_squared.reserve(cells.voronoi_vertex.size());
+  raw.triangles.reserve(cells.rings.vertex.size());
   for (std::uint32_t v : cells.voronoi_vertex) {
     mpq_class r2;
     raw.vertices.push_back(exact_point(vor.samples, vor.vertices[v].centre, &r2));
@@ -250,32 +253,46 @@ PoleSupport pole_support(const InnerVoronoi& vor, const KeepTests& keep) {
 // vertex next to it; the centre of an octahedron whose sheets were all pruned has none.
 class LostCore {
  public:
-  LostCore(const InnerVoronoi& vor, const PoleSupport& support) : vor_(vor), support_(support), seen_(vor.vertices.size(), false) {
-    std::vector<std::pair<std::uint32_t, std::uint32_t>> pairs;
-    for (std::uint32_t i = 0; i < vor.polygons.size(); ++i)
-      for (std::uint32_t k = 0; k < vor.polygons.ring_size(i); ++k) {
-        const auto [a, b] = vor.polygons.side(i, k);
-        pairs.push_back({a, b});
-        pairs.push_back({b, a});
-      }
-    for (const InnerVoronoi::Segment& seg : vor.segments) {
-      pairs.push_back({seg.v[0], seg.v[1]});
-      pairs.push_back({seg.v[1], seg.v[0]});
-    }
-    std::sort(pairs.begin(), pairs.end());
-    pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
-    start_.assign(vor.vertices.size() + 1, 0);
-    for (const auto& [a, b] : pairs) ++start_[a + 1];
-    for (std::size_t v = 0; v < vor.vertices.size(); ++v) start_[v + 1] += start_[v];
-    for (const auto& [a, b] : pairs) next_.push_back(b);
-  }
+  LostCore(const InnerVoronoi& vor, const PoleSupport& support) : vor_(vor), support_(support) {}
 
   bool operator()(std::uint32_t x) {
+    if (verdict_.empty()) build_adjacency();
     if (verdict_[x] < 0) verdict_[x] = deepest(x) ? 1 : 0;
     return verdict_[x] == 1;
   }
 
  private:
+  // The neighbours along polygon sides and segments, built at the first query: most
+  // rounds lose no pole, and the sort is a tenth of a thickness round's cost.
+  void build_adjacency() {
+    const InnerVoronoi& vor = vor_;
+    const std::size_t n = vor.vertices.size();
+    auto each_edge = [&](auto&& visit) {
+      for (std::uint32_t i = 0; i < vor.polygons.size(); ++i)
+        for (std::uint32_t k = 0; k < vor.polygons.ring_size(i); ++k) {
+          const auto [a, b] = vor.polygons.side(i, k);
+          visit(a, b);
+        }
+      for (const InnerVoronoi::Segment& seg : vor.segments) visit(seg.v[0], seg.v[1]);
+    };
+    // Counting sort by the first end (linear, unlike sorting the pairs), then each
+    // vertex's short list sorted and its repeats (a side is in about three polygons) dropped.
+    std::vector<std::uint32_t> count(n + 1, 0);
+    each_edge([&](std::uint32_t a, std::uint32_t b) { ++count[a + 1], ++count[b + 1]; });
+    for (std::size_t v = 0; v < n; ++v) count[v + 1] += count[v];
+    std::vector<std::uint32_t> all(count[n]), fill(count.begin(), count.end() - 1);
+    each_edge([&](std::uint32_t a, std::uint32_t b) { all[fill[a]++] = b, all[fill[b]++] = a; });
+    start_.assign(n + 1, 0);
+    for (std::size_t v = 0; v < n; ++v) {
+      const auto first = all.begin() + count[v], last = all.begin() + count[v + 1];
+      std::sort(first, last);
+      next_.insert(next_.end(), first, std::unique(first, last));
+      start_[v + 1] = static_cast<std::uint32_t>(next_.size());
+    }
+    seen_.assign(n, false);
+    verdict_.assign(n, -1);
+  }
+
   bool deepest(std::uint32_t x) {
     const auto cx = centre(x);
     const double r2 = radius2(x);
@@ -316,8 +333,21 @@ class LostCore {
   const PoleSupport& support_;
   std::vector<std::uint32_t> start_, next_;
   std::vector<bool> seen_;
-  std::vector<signed char> verdict_ = std::vector<signed char>(vor_.vertices.size(), -1);
+  std::vector<signed char> verdict_;  // per vertex: -1 not asked yet, 0 or 1
 };
+
+// Marks the triangles of every sample bounding a polygon at a lost pole.
+void halve_partners(const InnerVoronoi& vor, const std::vector<bool>& lost, std::vector<bool>* halve) {
+  const SurfaceSamples& s = vor.samples;
+  std::vector<bool> partner(s.lattice.size(), false);
+  for (std::uint32_t i = 0; i < vor.polygons.size(); ++i)
+    for (std::uint32_t k = 0; k < vor.polygons.ring_size(i); ++k)
+      if (lost[vor.polygons.ring(i)[k]])
+        for (std::uint32_t p : vor.pq[i]) partner[p] = true;
+  for (std::size_t t = 0; t < halve->size(); ++t)
+    for (std::uint32_t i = s.offset[t]; i < s.offset[t + 1]; ++i)
+      if (partner[s.on_triangle[i]]) (*halve)[t] = true;
+}
 
 // The thickness rule, once the Betti numbers are right. Triangle t is too coarse when
 //  (a) lambda h_t > 2 f_t, f_t the largest inner pole distance of its samples (the
@@ -342,9 +372,6 @@ std::size_t refine_thin(const InnerVoronoi& vor, const KeepTests& keep, const Me
   const PoleSupport support = pole_support(vor, keep);
   LostCore lost_core(vor, support);
   const SurfaceSamples& s = vor.samples;
-  std::vector<std::vector<std::uint32_t>> sample_triangles(s.lattice.size());
-  for (std::uint32_t t = 0; t < spacing->size(); ++t)
-    for (std::uint32_t i = s.offset[t]; i < s.offset[t + 1]; ++i) sample_triangles[s.on_triangle[i]].push_back(t);
   std::vector<bool> lost(vor.vertices.size(), false), halve(spacing->size(), false);
   std::vector<double> next = *spacing;
   std::size_t coarse = 0;
@@ -368,11 +395,7 @@ std::size_t refine_thin(const InnerVoronoi& vor, const KeepTests& keep, const Me
       halve[t] = true;
     }
   }
-  for (std::uint32_t i = 0; i < vor.polygons.size(); ++i)
-    for (std::uint32_t k = 0; k < vor.polygons.ring_size(i); ++k)
-      if (lost[vor.polygons.ring(i)[k]])
-        for (std::uint32_t p : vor.pq[i])
-          for (std::uint32_t t : sample_triangles[p]) halve[t] = true;
+  if (std::find(lost.begin(), lost.end(), true) != lost.end()) halve_partners(vor, lost, &halve);
   for (std::size_t t = 0; t < spacing->size(); ++t)
     if (halve[t] && next[t] == (*spacing)[t]) {
       next[t] /= 2;
@@ -398,6 +421,7 @@ MeshAxis mesh_medial_axis(const TriangleMesh3& mesh, const MeshAxisOptions& opti
   MeshAxis out;
   out.solid = solid_topology(mesh);
   const SolidLocator solid(mesh);
+  out.check_seconds = seconds_since(start);
   std::vector<double> spacing(mesh.triangles.size(), mean_edge_length(mesh) / options.samples_per_edge);
   std::optional<AcceptedAxis> accepted;
   for (int round = 0;; ++round) {
@@ -413,10 +437,10 @@ MeshAxis mesh_medial_axis(const TriangleMesh3& mesh, const MeshAxisOptions& opti
                                   std::to_string(options.max_samples));
     }
     r.sample_seconds = seconds_since(t);
-    // A thickness round that adds under 5% samples refines a handful of triangles (at
+    // A thickness round that adds under min_thickness_growth samples refines a handful of triangles (at
     // the ends of sheets) for the cost of a whole round: the accepted axis stands.
     if (accepted && out.rounds.back().betti == out.solid.betti &&
-        static_cast<double>(r.samples) < 1.05 * static_cast<double>(out.rounds.back().samples))
+        static_cast<double>(r.samples) < (1 + options.min_thickness_growth) * static_cast<double>(out.rounds.back().samples))
       break;
     InnerVoronoi vor = inner_voronoi(std::move(samples), solid);
     r.tetrahedra = vor.tetrahedra;
@@ -442,8 +466,10 @@ MeshAxis mesh_medial_axis(const TriangleMesh3& mesh, const MeshAxisOptions& opti
     r.betti_seconds = seconds_since(t);
     const bool right = r.betti == out.solid.betti;
     if (right) {
+      t = cpu_seconds();
       std::vector<double> next = spacing;
       r.coarse_triangles = refine_thin(vor, keep, options, &next);
+      r.refine_seconds = seconds_since(t);
       out.rounds.push_back(r);
       accepted = AcceptedAxis{out.rounds.size() - 1, std::move(vor), std::move(cells)};
       if (r.coarse_triangles == 0 || round >= options.max_refinements) break;
@@ -461,7 +487,9 @@ MeshAxis mesh_medial_axis(const TriangleMesh3& mesh, const MeshAxisOptions& opti
                                   " refinements (" + std::to_string(r.samples) +
                                   " samples); no axis is returned. Try a larger --samples");
     }
+    t = cpu_seconds();
     refine(vor, options, &spacing);
+    out.rounds.back().refine_seconds = seconds_since(t);
   }
   const double t = cpu_seconds();
   out.axis_round = accepted->round;
@@ -497,7 +525,8 @@ nlohmann::json mesh_axis_json(const MeshAxis& a) {
                         {"classify", r.classify_seconds},
                         {"extract", r.extract_seconds},
                         {"prune", r.prune_seconds},
-                        {"betti", r.betti_seconds}}}});
+                        {"betti", r.betti_seconds},
+                        {"refine", r.refine_seconds}}}});
   nlohmann::json shells = nlohmann::json::array();
   for (const MeshShell& s : a.solid.shells)
     shells.push_back({{"triangles", s.triangles.size()}, {"vertices", s.vertices}, {"genus", s.genus}, {"depth", s.depth}});
@@ -508,6 +537,7 @@ nlohmann::json mesh_axis_json(const MeshAxis& a) {
           {"shells", shells},
           {"rounds", rounds},
           {"exact_locator_tests", a.exact_locator_tests},
+          {"check_seconds", a.check_seconds},
           {"assemble_seconds", a.assemble_seconds},
           {"seconds", a.total_seconds}};
 }

@@ -27,8 +27,8 @@
 //     2 R sin(alpha / 2) apart (the octahedron's sheets: 1.15 R, not 2 R), also when the
 //     pruning left no polygon or segment at that deepest pole, to half its spacing (and
 //     the triangles of the samples bounding the polygons at that pole too).
-//     Steps 2-5 repeat until no triangle is too coarse, the next round would add under 5%
-//     samples, a round misses the solid's Betti numbers, or max_refinements or max_samples
+//     Steps 2-5 repeat until no triangle is too coarse, the next round would add under
+//     min_thickness_growth (10%) samples, a round misses the solid's Betti numbers, or max_refinements or max_samples
 //     is reached; the last round with the solid's Betti numbers is returned (axis_round;
 //     later rounds are listed too). What is kept: a sheet survives where its touching
 //     samples are >= lambda h apart, so the points of depth R >= lambda h are found and a
@@ -77,6 +77,7 @@ struct MeshAxisOptions {
                                  // thickness rule: spacing <= ratio * 2 (inner pole distance) / lambda,
                                  // halved where the deepest pole lost its sheets
   std::size_t max_samples = 2000000;
+  double min_thickness_growth = 0.10;  // a thickness round adding fewer samples (a fraction) is not run
 };
 
 struct MeshAxisRound {
@@ -87,7 +88,7 @@ struct MeshAxisRound {
   std::size_t coarse_triangles = 0;  // too coarse for the thickness rule (rounds with the right Betti numbers)
   BettiNumbers betti;
   double sample_seconds = 0, delaunay_seconds = 0, classify_seconds = 0, extract_seconds = 0, prune_seconds = 0,
-         betti_seconds = 0;
+         betti_seconds = 0, refine_seconds = 0;  // refine: the next spacing (thickness or Betti rule)
 };
 
 struct MeshAxis {
@@ -98,6 +99,7 @@ struct MeshAxis {
   std::size_t axis_round = 0;         // the round whose axis is returned (the last with the solid's Betti numbers)
   SurfaceSamples samples;             // of that round
   std::size_t exact_locator_tests = 0;
+  double check_seconds = 0;  // manifold check, solid topology and locator, before the rounds
   double assemble_seconds = 0, total_seconds = 0;
   int refinements() const { return static_cast<int>(rounds.size()) - 1; }
 };
