@@ -9,14 +9,19 @@
 // which has no symmetry (generic input), and the "unrounded" variant: the shifted curve's
 // points as computed (full-mantissa doubles, no decimal or int32 binary frame: the CGAL
 // SDG path of polygon_axis.h; run up to --max-unrounded segments, default 20000, because
-// that path is superlinear on such input). Each row runs: Boost alone (on the rounded
+// that path is superlinear on such input; its near-0 coordinates such as 10^6 cos(pi/2)
+// ~ 6e-11 with 53 significant bits span ~107 bits once scaled to integers, beyond the wide
+// binary frame), and the "offset" variant: the shifted curve centred at (3 10^6, 3 10^6),
+// its points as computed (full-mantissa doubles away from 0: 2^K x them span ~54 bits, the
+// wide binary policy runs Boost's builder on 64-bit integers). Each row runs: Boost alone (on the rounded
 // polygon for "unrounded"); CGAL SDG alone (bulk insert_segments, CGAL's default filtered
 // traits without intersections) unless --max-cgal is below the size; the exact axis (polygon_axis.h); the exact axis plus the extended grassfire
 // (extended_grassfire.h).
 // Output (stdout): CSV segments,shape,boost_s,cgal_sdg_s,axis_s,axis_plus_edf_s,
 // axis_ratio,ratio_to_boost,boost_cpu_s,axis_plus_edf_cpu_s,cpu_ratio,uncertified,
-// peak_mem_mb,ratio_to_decimal; ratio_to_decimal (unrounded rows only) = the unrounded
-// row's axis_plus_edf_cpu_s / the shifted (decimal) row's of the same size; shape is "symmetric" or "shifted"; axis_ratio = axis_s / boost_s,
+// peak_mem_mb,ratio_to_decimal,construction; ratio_to_decimal (unrounded and offset rows)
+// = the row's axis_plus_edf_cpu_s / the shifted (decimal) row's of the same size;
+// construction = the one the input policy chose (polygon_axis.h); shape is "symmetric" or "shifted"; axis_ratio = axis_s / boost_s,
 // ratio_to_boost = axis_plus_edf_s / boost_s (wall clock), cpu_ratio the same in thread
 // CPU time (what to read on a loaded machine); uncertified = ties of the burning and
 // contractions of the axis that no stage could prove (zero is the goal, DESIGN.md 3); an
@@ -57,13 +62,13 @@ namespace {
 
 double now() { return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count(); }
 
-Shape2 wavy_circle(int n, double phase, bool round = true) {
+Shape2 wavy_circle(int n, double phase, bool round = true, double centre = 0) {
   Shape2 s;
   s.name = "wavy circle " + std::to_string(n);
   Ring r;
   for (int k = 0; k < n; ++k) {
     const double t = 2 * M_PI * k / n, rad = 1e6 * (1 + 0.1 * std::sin(7 * t + phase));
-    const double x = rad * std::cos(t), y = rad * std::sin(t);
+    const double x = centre + rad * std::cos(t), y = centre + rad * std::sin(t);
     r.points.push_back(round ? Point2{std::round(x), std::round(y)} : Point2{x, y});
   }
   s.rings.push_back(r);
@@ -163,14 +168,15 @@ int main(int argc, char** argv) {
     }
   }
   std::printf("segments,shape,boost_s,cgal_sdg_s,axis_s,axis_plus_edf_s,axis_ratio,ratio_to_boost,boost_cpu_s,"
-              "axis_plus_edf_cpu_s,cpu_ratio,uncertified,peak_mem_mb,ratio_to_decimal\n");
+              "axis_plus_edf_cpu_s,cpu_ratio,uncertified,peak_mem_mb,ratio_to_decimal,construction\n");
   for (int n : sizes) {
     double decimal_cpu = 0;
     for (const auto& [shape, phase] :
-         {std::pair<const char*, double>{"symmetric", 0.0}, {"shifted", 0.3}, {"unrounded", 0.3}}) {
-      const bool unrounded = std::string(shape) == "unrounded";
+         {std::pair<const char*, double>{"symmetric", 0.0}, {"shifted", 0.3}, {"offset", 0.3}, {"unrounded", 0.3}}) {
+      const bool unrounded = std::string(shape) == "unrounded", offset = std::string(shape) == "offset";
       if (unrounded && n > max_unrounded) continue;
-      const Shape2 s = wavy_circle(n, phase, !unrounded), rounded = wavy_circle(n, phase);
+      const double centre = offset ? 3e6 : 0;
+      const Shape2 s = wavy_circle(n, phase, !unrounded && !offset, centre), rounded = wavy_circle(n, phase, true, centre);
       Row row;
       PolygonAxisReport rep;
       std::unique_ptr<MedialGraph> g;
@@ -203,10 +209,11 @@ int main(int argc, char** argv) {
       const std::uint64_t uncertified = r->stats().uncertified_zero + rep.uncertified_contractions;
       const std::string cgal = n <= max_cgal ? std::to_string(row.cgal_s) : "";
       if (std::string(shape) == "shifted") decimal_cpu = row.both_cpu;
-      const std::string to_decimal = unrounded ? std::to_string(row.both_cpu / decimal_cpu) : "";
-      std::printf("%d,%s,%.4f,%s,%.4f,%.4f,%.3f,%.3f,%.4f,%.4f,%.3f,%llu,%.1f,%s\n", n, shape, row.boost_s, cgal.c_str(),
+      const std::string to_decimal = unrounded || offset ? std::to_string(row.both_cpu / decimal_cpu) : "";
+      std::printf("%d,%s,%.4f,%s,%.4f,%.4f,%.3f,%.3f,%.4f,%.4f,%.3f,%llu,%.1f,%s,%s\n", n, shape, row.boost_s, cgal.c_str(),
                   row.axis_s, row.both_s, row.axis_s / row.boost_s, row.both_s / row.boost_s, row.boost_cpu, row.both_cpu,
-                  row.both_cpu / row.boost_cpu, (unsigned long long)uncertified, peak_mb(), to_decimal.c_str());
+                  row.both_cpu / row.boost_cpu, (unsigned long long)uncertified, peak_mb(), to_decimal.c_str(),
+                  to_string(rep.construction));
       std::fflush(stdout);
       report_details(n, shape, rep, row, *g, *r);
     }

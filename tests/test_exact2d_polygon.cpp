@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <filesystem>
+#include <map>
 #include <random>
 #include <set>
 #include <tuple>
@@ -31,7 +32,7 @@ Shape2 polygon(std::vector<std::vector<Point2>> rings, const std::string& name =
   return s;
 }
 
-// The node nearest to (x, y).
+// The node nearest to (x, y), which must be within 1e-9 (relative for |x| + |y| > 1).
 std::uint32_t node_at(const MedialGraph& g, double x, double y) {
   std::uint32_t best = 0;
   double bd = 1e300;
@@ -39,7 +40,7 @@ std::uint32_t node_at(const MedialGraph& g, double x, double y) {
     const double d = std::hypot(g.node(v).position.x - x, g.node(v).position.y - y);
     if (d < bd) bd = d, best = v;
   }
-  REQUIRE(bd < 1e-9);
+  REQUIRE(bd < 1e-9 * std::max(1.0, std::fabs(x) + std::fabs(y)));  // relative beyond 1: double positions
   return best;
 }
 
@@ -52,33 +53,64 @@ bool equals(const ExactSum& a, const ExactSum& b) {
 ExactSum root(long n) { return ExactSum::sqrt_of(n); }
 ExactSum rat(long n, long d = 1) { return ExactSum::rational(make_rational(n, d)); }
 
-// The Boost and CGAL constructions node by node: a bijection of the nodes by position
-// (node_at), R equal exactly, or, when the two ran on polygons that differ by the
+// The Boost and CGAL constructions node by node: a bijection of the nodes by their
+// defining sites (every site of a node's contracted group: a combinatorial key common to
+// both constructions, which also tells apart distinct nodes closer than double precision),
+// the nearest unused one by position among equal keys, at the same position (relative
+// 1e-9); R equal exactly, or, when the two ran on polygons that differ by the
 // nearest-double rounding of their decimals (< 1.2e-16 for coordinates in [-1, 1]), within
-// 1e-12 plus the enclosures, which a different node would exceed by far; and the same edge
-// set, with the same edge kinds.
-void require_same_axis(const MedialGraph& a, const MedialGraph& b, bool exact_radii) {
+// 1e-12 (relative beyond 1) plus the enclosures, which a different node would exceed by
+// far; and the same edge set, with the same edge kinds. Returns the bijection.
+std::vector<std::uint32_t> require_same_axis(const MedialGraph& a, const MedialGraph& b, bool exact_radii) {
   REQUIRE(a.node_count() == b.node_count());
   REQUIRE(a.edge_count() == b.edge_count());
+  const auto& ga = dynamic_cast<const PolygonAxisGeometry&>(a.geometry());
+  const auto& gb = dynamic_cast<const PolygonAxisGeometry&>(b.geometry());
+  std::map<std::vector<std::uint32_t>, std::vector<std::uint32_t>> by_sites;
+  for (std::uint32_t w = 0; w < b.node_count(); ++w) by_sites[gb.node_data(w).sites].push_back(w);
   std::vector<std::uint32_t> to_b(a.node_count());
   std::vector<bool> used(b.node_count(), false);
   for (std::uint32_t v = 0; v < a.node_count(); ++v) {
-    const std::uint32_t w = node_at(b, a.node(v).position.x, a.node(v).position.y);
-    CAPTURE(v, w);
-    REQUIRE_FALSE(used[w]);
+    const Point2 p = a.node(v).position;
+    CAPTURE(v, p.x, p.y);
+    const auto it = by_sites.find(ga.node_data(v).sites);
+    REQUIRE(it != by_sites.end());
+    std::uint32_t w = 0;
+    double best = 1e300;
+    for (std::uint32_t c : it->second) {
+      const double d = std::hypot(b.node(c).position.x - p.x, b.node(c).position.y - p.y);
+      if (!used[c] && d < best) best = d, w = c;
+    }
+    REQUIRE(best < 1e-9 * std::max(1.0, std::fabs(p.x) + std::fabs(p.y)));
     used[w] = true;
     to_b[v] = w;
     if (exact_radii)
       CHECK(compare(a.geometry().exact_radius(v), b.geometry().exact_radius(w)) == 0);
     else
       CHECK(std::fabs(a.node(v).radius.mid() - b.node(w).radius.mid()) <=
-            1e-12 + a.node(v).radius.radius() + b.node(w).radius.radius());
+            1e-12 * std::max(1.0, std::fabs(a.node(v).radius.mid())) + a.node(v).radius.radius() +
+                b.node(w).radius.radius());
   }
   std::multiset<std::tuple<std::uint32_t, std::uint32_t, EdgeKind>> ea, eb;
   for (const MedialEdge& e : a.edges())
     ea.insert({std::min(to_b[e.u], to_b[e.v]), std::max(to_b[e.u], to_b[e.v]), e.kind});
   for (const MedialEdge& e : b.edges()) eb.insert({std::min(e.u, e.v), std::max(e.u, e.v), e.kind});
   CHECK(ea == eb);
+  return to_b;
+}
+
+// Radii without certified constants (rationals and sums of square roots, whose identity
+// does not depend on the frame) of matched nodes (to_b: require_same_axis) are equal
+// exactly: CHECKs that, returns how many nodes it compared.
+int equal_exact_radii(const MedialGraph& a, const MedialGraph& b, const std::vector<std::uint32_t>& to_b) {
+  int exact = 0;
+  for (std::uint32_t v = 0; v < a.node_count(); ++v) {
+    const ExactSum ra = a.geometry().exact_radius(v), rb = b.geometry().exact_radius(to_b[v]);
+    if (!ra.constant_terms().empty() || !rb.constant_terms().empty()) continue;
+    CHECK(equals(ra, rb));
+    ++exact;
+  }
+  return exact;
 }
 
 void require_valid_and_burns_like_oracle(const MedialGraph& g) {
@@ -277,12 +309,13 @@ TEST_CASE("every shape of data/shapes2d: exact axis valid by definition, engine 
   CHECK(shapes >= 100);
 }
 
-TEST_CASE("a strip with teeth off the decimal grid (CGAL path): a finite EMA equal to the decimal one", "[exact2d]") {
+TEST_CASE("a strip with teeth off the decimal grid (wide Boost and CGAL): a finite EMA equal to the decimal one", "[exact2d]") {
   // Fig. 5.3's strip (length 4, half thickness 0.01, 20 teeth of height 0.1 on its left
   // half), once with coordinates computed as j * 0.1 / 2 and 0.1 - 0.01 in doubles (not the
   // doubles nearest to decimals: CGAL's segment Delaunay graph), once in thousandths (the
   // decimal grid: Boost.Polygon). The EMA inside an edge had an offset of [-inf, inf] on
-  // the CGAL path (a NaN position); both must now give the same finite point.
+  // the CGAL path (a NaN position); all must now give the same finite point. The doubles
+  // run twice: by the input policy (the wide binary frame, 61 bits) and forced on CGAL.
   auto strip = [](bool decimal) {
     std::vector<Point2> ring;
     auto x = [&](int j) { return decimal ? j * 50 / 1000.0 : j * 0.1 / 2; };
@@ -293,11 +326,16 @@ TEST_CASE("a strip with teeth off the decimal grid (CGAL path): a finite EMA equ
     for (int j = 40; j >= 0; --j) ring.push_back({x(j), y(j, 1)});
     return polygon({ring}, decimal ? "teeth (decimal)" : "teeth (doubles)");
   };
-  Point2 ema[2];
-  for (int decimal = 0; decimal < 2; ++decimal) {
+  Point2 ema[3];
+  for (int run = 0; run < 3; ++run) {
+    const bool decimal = run == 1;
+    PolygonAxisOptions opt;
+    if (run == 2) opt.construction = AxisConstruction::CgalSdg;
     PolygonAxisReport rep;
-    const MedialGraph g = exact_polygon_axis(strip(decimal), {}, &rep);
-    CHECK(rep.construction == (decimal ? AxisConstruction::BoostPolygon : AxisConstruction::CgalSdg));
+    const MedialGraph g = exact_polygon_axis(strip(decimal), opt, &rep);
+    const AxisConstruction expected[3] = {AxisConstruction::BoostPolygonWide, AxisConstruction::BoostPolygon,
+                                          AxisConstruction::CgalSdg};
+    CHECK(rep.construction == expected[run]);
     const GrassfireResult r = extended_grassfire(g);
     REQUIRE(r.ema.size() == 1);
     const GraphPoint& p = r.ema[0].point;
@@ -305,11 +343,12 @@ TEST_CASE("a strip with teeth off the decimal grid (CGAL path): a finite EMA equ
       INFO("offset [" << p.offset.lo << ", " << p.offset.hi << "]");
       CHECK(p.offset.hi - p.offset.lo < 1e-9);
     }
-    ema[decimal] = position_of(g, p);
-    REQUIRE(std::isfinite(ema[decimal].x));
-    REQUIRE(std::isfinite(ema[decimal].y));
+    ema[run] = position_of(g, p);
+    REQUIRE(std::isfinite(ema[run].x));
+    REQUIRE(std::isfinite(ema[run].y));
   }
   CHECK(std::hypot(ema[0].x - ema[1].x, ema[0].y - ema[1].y) < 1e-9);
+  CHECK(std::hypot(ema[0].x - ema[2].x, ema[0].y - ema[2].y) < 1e-12);
   CHECK(ema[0].x > 1.4);  // the teeth pull the EMA left of the strip's centre (x = 2)
   CHECK(ema[0].x < 1.6);
 }
@@ -371,9 +410,56 @@ TEST_CASE("seeded random star polygons on a binary grid: Boost on exact integers
   CHECK(nested >= 10);  // radii with square roots of sums were compared
 }
 
-TEST_CASE("rotated polygons with full-mantissa coordinates (CGAL path) = the decimal axis rotated", "[exact2d]") {
+TEST_CASE("seeded star polygons with full-mantissa doubles: wide Boost axis equals CGAL's", "[exact2d]") {
+  // Coordinates 3 + r cos t as computed (53 significant bits, no decimal or int32 binary
+  // frame; 2^K x them spans under 62 bits): the wide binary policy runs Boost's builder on
+  // 64-bit integers; CGAL's SDG runs on the same doubles.
+  std::mt19937 rng(20261204);
+  std::uniform_real_distribution<double> radius(0.3, 1.0);
+  for (int trial = 0; trial < 8; ++trial) {
+    const int n = 5 + trial * 4;
+    std::vector<Point2> ring;
+    for (int k = 0; k < n; ++k) {
+      const double t = 2 * M_PI * k / n, r = radius(rng);
+      ring.push_back({3 + r * std::cos(t), 3 + r * std::sin(t)});
+    }
+    const Shape2 s = polygon({ring});
+    PolygonAxisOptions cgal_opt;
+    cgal_opt.construction = AxisConstruction::CgalSdg;
+    PolygonAxisReport rb, rc;
+    const MedialGraph gb = exact_polygon_axis(s, {}, &rb), gc = exact_polygon_axis(s, cgal_opt, &rc);
+    INFO("trial " << trial);
+    CHECK(rb.construction == AxisConstruction::BoostPolygonWide);
+    CHECK(rc.construction == AxisConstruction::CgalSdg);
+    CHECK(equal_exact_radii(gb, gc, require_same_axis(gb, gc, false)) >= n);
+    require_valid_and_burns_like_oracle(gb);
+  }
+}
+
+TEST_CASE("a dense near-symmetric wavy curve with full-mantissa doubles: wide Boost axis equals CGAL's", "[exact2d]") {
+  // 1500 samples of r = 10^6 (1 + 0.1 sin 7t) about (3 10^6, -2.5 10^6), as computed: the
+  // mirror symmetry survives rounding at some sites, which are then exactly cocircular
+  // (degree-4 Voronoi vertices, split by each construction along its own diagonal and
+  // contracted by the exact test); the axes must agree.
+  std::vector<Point2> ring;
+  for (int k = 0; k < 1500; ++k) {
+    const double t = 2 * M_PI * k / 1500, r = 1e6 * (1 + 0.1 * std::sin(7 * t));
+    ring.push_back({3e6 + r * std::cos(t), -2.5e6 + r * std::sin(t)});
+  }
+  const Shape2 s = polygon({ring});
+  PolygonAxisOptions cgal_opt;
+  cgal_opt.construction = AxisConstruction::CgalSdg;
+  PolygonAxisReport rb, rc;
+  const MedialGraph gb = exact_polygon_axis(s, {}, &rb), gc = exact_polygon_axis(s, cgal_opt, &rc);
+  CHECK(rb.construction == AxisConstruction::BoostPolygonWide);
+  CHECK(rb.contracted_edges > 0);
+  CHECK(rb.uncertified_contractions == 0);
+  CHECK(equal_exact_radii(gb, gc, require_same_axis(gb, gc, false)) >= 1500);
+}
+
+TEST_CASE("rotated polygons with full-mantissa coordinates (wide Boost or CGAL) = the decimal axis rotated", "[exact2d]") {
   // A rigid motion by an angle whose sine and cosine have full 53-bit mantissas: no decimal
-  // or int32 binary frame exists, CGAL's SDG runs on the doubles. Every node of the decimal
+  // or int32 binary frame exists. Every node of the decimal
   // polygon's axis, rotated, is a node of the rotated polygon's axis with the same radius
   // (to the rounding of the rotated coordinates, ~1e-16), and the edge kinds agree.
   std::mt19937 rng(7);
@@ -392,7 +478,8 @@ TEST_CASE("rotated polygons with full-mantissa coordinates (CGAL path) = the dec
     PolygonAxisReport rep;
     const MedialGraph g = exact_polygon_axis(s), gr = exact_polygon_axis(sr, {}, &rep);
     INFO("trial " << trial);
-    CHECK(rep.construction == AxisConstruction::CgalSdg);
+    // The wide binary frame when the rotated coordinates span at most 62 bits, else CGAL.
+    CHECK(rep.construction != AxisConstruction::BoostPolygon);
     REQUIRE(g.node_count() == gr.node_count());
     REQUIRE(g.edge_count() == gr.edge_count());
     std::vector<std::uint32_t> to_r(g.node_count());

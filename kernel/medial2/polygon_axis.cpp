@@ -35,7 +35,7 @@ bool is_tight(const Interval& a) {
 
 bool overlap(const Interval& a, const Interval& b) { return a.lo <= b.hi && b.lo <= a.hi; }
 
-// The exact frame: Boost on decimal integers when the policy allows, else CGAL on doubles.
+// The exact frame: Boost on decimal or binary integers when the policy allows, else CGAL on doubles.
 struct Frame {
   AxisConstruction construction = AxisConstruction::CgalSdg;
   int digits = -1;
@@ -46,8 +46,9 @@ struct Frame {
 
 // The binary policy: every double is an integer times a power of two, so the polygon
 // scaled by 2^K (K = minus the smallest exponent of a lowest set bit) has integer
-// coordinates, exactly. Boost runs on them when they fit int32.
-bool dyadic_frame(Frame& f) {
+// coordinates, exactly. Boost runs on them when they fit int32, Boost with the wide traits
+// when they lie within 2^62 of their bounding box's centre (fits_wide_boost).
+bool dyadic_frame(Frame& f, bool wide_only) {
   int low = std::numeric_limits<int>::max();
   double largest = 0;
   for (const Point2& p : f.sites.vertex)
@@ -57,9 +58,17 @@ bool dyadic_frame(Frame& f) {
       largest = std::max(largest, std::fabs(x));
     }
   if (low == std::numeric_limits<int>::max()) low = 0;
-  if (!(std::ldexp(largest, -low) <= 2147483647.0)) return false;
-  for (Point2& p : f.sites.vertex) p = {std::ldexp(p.x, -low), std::ldexp(p.y, -low)};
-  f.construction = AxisConstruction::BoostPolygon;
+  const double top = std::ldexp(largest, -low);
+  if (!(top < 0x1p126)) return false;
+  PolygonSites scaled = f.sites;
+  for (Point2& p : scaled.vertex) p = {std::ldexp(p.x, -low), std::ldexp(p.y, -low)};
+  if (top <= 2147483647.0 && !wide_only)
+    f.construction = AxisConstruction::BoostPolygon;
+  else if (fits_wide_boost(scaled))
+    f.construction = AxisConstruction::BoostPolygonWide;
+  else
+    return false;
+  f.sites = std::move(scaled);
   f.binary_digits = -low;
   f.to_input = low >= 0 ? mpq_class(mpz_class(mpz_class(1) << low)) : mpq_class(mpz_class(1), mpz_class(mpz_class(1) << -low));
   return true;
@@ -70,7 +79,8 @@ Frame choose_frame(const Shape2& shape, const PolygonAxisOptions& options) {
   f.sites = make_sites(shape, 1.0);
   std::vector<long long> ints;
   int k_max = 0;
-  bool decimal = options.construction != AxisConstruction::CgalSdg;
+  const bool wide_only = options.construction == AxisConstruction::BoostPolygonWide;
+  bool decimal = options.construction != AxisConstruction::CgalSdg && !wide_only;
   std::vector<int> digits;
   for (const Point2& p : f.sites.vertex) {
     for (double x : {p.x, p.y}) {
@@ -99,12 +109,26 @@ Frame choose_frame(const Shape2& shape, const PolygonAxisOptions& options) {
       return f;
     }
   }
-  if (options.construction != AxisConstruction::CgalSdg && dyadic_frame(f)) return f;
-  if (options.construction == AxisConstruction::BoostPolygon)
-    throw std::invalid_argument(shape.name + ": Boost.Polygon needs decimal or binary coordinates that fit int32 once scaled");
+  if (options.construction != AxisConstruction::CgalSdg && dyadic_frame(f, wide_only)) return f;
+  if (options.construction == AxisConstruction::BoostPolygon || wide_only)
+    throw std::invalid_argument(shape.name + ": Boost.Polygon needs decimal or binary coordinates that fit int32, or 62 bits about their centre, once scaled");
   return f;
 }
 
+
+// The frame's Voronoi topology by its construction; the wide traits' overflow of their
+// 4096-bit exact integers (never observed) falls back to CGAL on the same frame.
+VoronoiTopology voronoi_of(Frame& frame) {
+  if (frame.construction == AxisConstruction::BoostPolygon) return boost_segment_voronoi(frame.sites);
+  if (frame.construction == AxisConstruction::BoostPolygonWide) {
+    try {
+      return boost_segment_voronoi_wide(frame.sites);
+    } catch (const std::overflow_error&) {
+      frame.construction = AxisConstruction::CgalSdg;
+    }
+  }
+  return cgal_segment_voronoi(frame.sites);
+}
 
 class Builder {
  public:
@@ -321,6 +345,7 @@ const char* to_string(AxisConstruction c) {
   switch (c) {
     case AxisConstruction::Auto: return "auto";
     case AxisConstruction::BoostPolygon: return "boost-polygon";
+    case AxisConstruction::BoostPolygonWide: return "boost-polygon-wide";
     case AxisConstruction::CgalSdg: return "cgal-sdg";
   }
   return "unknown";
@@ -363,14 +388,13 @@ MedialGraph exact_polygon_axis(const Shape2& shape, const PolygonAxisOptions& op
   if (shape.rings.empty()) throw std::invalid_argument(shape.name + ": the shape has no ring");
   for (const Ring& r : shape.rings)
     if (r.points.size() < 3) throw std::invalid_argument(shape.name + ": a ring has fewer than 3 vertices");
-  const Frame frame = choose_frame(shape, options);
+  Frame frame = choose_frame(shape, options);
+  VoronoiTopology topo = voronoi_of(frame);
   rep.construction = frame.construction;
   rep.decimal_digits = frame.digits;
   rep.binary_digits = frame.binary_digits;
   rep.frame_scale = 1 / frame.to_input.get_d();
   rep.polygon_vertices = frame.sites.vertex_count();
-  VoronoiTopology topo = frame.construction == AxisConstruction::BoostPolygon ? boost_segment_voronoi(frame.sites)
-                                                                                : cgal_segment_voronoi(frame.sites);
   rep.voronoi_vertices = topo.vertices.size();
   rep.voronoi_seconds = seconds_since(t0);
   const double t1 = thread_seconds();

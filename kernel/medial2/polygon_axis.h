@@ -32,12 +32,17 @@
 // Otherwise, if the doubles scaled by the power of two 2^K that makes them all integers
 // (the binary policy: exact, K = minus the smallest lowest-set-bit exponent) fit int32,
 // Boost.Polygon runs on those integers (dyadic inputs: binary fractions, float data, large
-// integers with trailing zero bits). Otherwise CGAL's SDG runs on the exact double values.
+// integers with trailing zero bits). Otherwise, if those integers lie within 2^62 of the
+// centre of their bounding box (the wide binary policy: any double polygon whose
+// coordinates span at most 62 bits between the largest magnitude and the smallest lowest
+// set bit, e.g. full-mantissa coordinates away from 0), Boost.Polygon's builder runs on them
+// with wide coordinate traits (boost_wide_traits.h: 64-bit input, exact integer parts,
+// quadruple-precision filters). Otherwise CGAL's SDG runs on the exact double values.
 // Every policy gives the axis of the exact input polygon (the decimal one for the first),
 // and every combinatorial decision is exact.
 // Contract: a validated Shape2 (shapes/validate_shape.h). Throws std::invalid_argument
 // for an empty shape.
-// Complexity: O(n log n) (Boost) plus O(n) circle work; CGAL SDG is superlinear on dense
+// Complexity: O(n log n) (Boost, both traits) plus O(n) circle work; CGAL SDG is superlinear on dense
 // samples of smooth curves with full-mantissa coordinates (its interval filter fails on the
 // near-degenerate incircle tests; measured in experiments/bench_polygon_axis.cpp).
 #pragma once
@@ -51,7 +56,10 @@
 
 namespace grassfire {
 
-enum class AxisConstruction { Auto, BoostPolygon, CgalSdg };
+// BoostPolygon: int32 frame (decimal or binary policy); BoostPolygonWide: the wide binary
+// policy. Asking for BoostPolygon accepts either Boost frame; asking for BoostPolygonWide
+// skips the decimal policy and the int32 frame (the wide traits on the binary frame).
+enum class AxisConstruction { Auto, BoostPolygon, BoostPolygonWide, CgalSdg };
 const char* to_string(AxisConstruction c);
 
 struct PolygonAxisOptions {

@@ -8,7 +8,8 @@
 // lists its defining sites in counter-clockwise order around it; convex polygon vertices
 // are apex vertices (R = 0, leaves of the medial axis, DESIGN.md 4).
 // Two constructions with exact topology: Boost.Polygon's voronoi builder (integer input
-// up to int32, exact predicates), and CGAL's Segment_Delaunay_graph_2 with filtered exact
+// up to int32 with its default traits, or within 2^62 of the frame's centre with the wide
+// traits of boost_wide_traits.h), and CGAL's Segment_Delaunay_graph_2 with filtered exact
 // traits (any double input; exact kernel Gmpzf, segments in seeded random order). Boost's post-pass that merges vertices within 128 ulps is
 // switched off: coincident vertices (cocircular sites) come out as zero-length edges and
 // are contracted later by an exact test (polygon_axis.cpp), never by a tolerance.
@@ -16,7 +17,8 @@
 // a search along primary edges never leaves the polygon (a Voronoi edge meets the
 // boundary only at an endpoint shared by its two sites).
 // Contract: a validated Shape2 (shapes/validate_shape.h) mapped to the exact frame.
-// Complexity: O(n log n) for n polygon vertices (Boost); CGAL SDG is superlinear on dense
+// Complexity: O(n log n) for n polygon vertices (Boost; the wide traits cost 8-13x the
+// default's in bench_polygon_axis); CGAL SDG is superlinear on dense
 // samples of smooth curves with full-mantissa coordinates, where its interval filter fails
 // more and more often (measured: experiments/bench_polygon_axis.cpp, notes fast2d2.md).
 #pragma once
@@ -66,6 +68,12 @@ struct VoronoiTopology {
 
 // Boost.Polygon construct_voronoi; every frame coordinate must be an integer in int32.
 VoronoiTopology boost_segment_voronoi(const PolygonSites& sites);
+// Boost.Polygon's voronoi builder with the wide coordinate traits (boost_wide_traits.h):
+// every frame coordinate an integer, each within 2^62 of the centre of the frame's bounding
+// box (fits_wide_boost); throws std::invalid_argument otherwise, std::overflow_error if an
+// exact intermediate exceeds 4096 bits (boost_wide_traits.h).
+bool fits_wide_boost(const PolygonSites& sites);
+VoronoiTopology boost_segment_voronoi_wide(const PolygonSites& sites);
 // CGAL Segment_Delaunay_graph_2 (filtered exact traits, no intersecting segments).
 VoronoiTopology cgal_segment_voronoi(const PolygonSites& sites);
 

@@ -1,0 +1,145 @@
+// The wide binary policy (medial2/polygon_axis.h, boost_wide_traits.h): Boost.Polygon's
+// builder on 62-bit integer frames against CGAL's Segment_Delaunay_graph_2 on the same
+// exact polygon, Voronoi topology site by site, on seeded polygons with arbitrary
+// (full-mantissa) double coordinates; and where the policy sends which input.
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <random>
+#include <set>
+#include <string>
+#include <tuple>
+
+#include "medial2/polygon_axis.h"
+#include "medial2/segment_voronoi.h"
+#include "shapes/validate_shape.h"
+#include "support.h"
+
+using namespace grassfire;
+
+namespace {
+
+Shape2 ring_shape(std::vector<Point2> ring, const std::string& name) {
+  Shape2 s;
+  s.name = name;
+  s.rings.push_back({std::move(ring)});
+  validate_shape(s, name);
+  return s;
+}
+
+// A star polygon around (cx, cy): n vertices at seeded random radii in [0.3 r, r], every
+// coordinate a double as computed (full mantissa, on no decimal or int32 binary grid).
+Shape2 random_star(std::mt19937& rng, int n, double cx, double cy, double r) {
+  std::uniform_real_distribution<double> radius(0.3 * r, r), jitter(-0.3, 0.3);
+  std::vector<Point2> ring;
+  for (int k = 0; k < n; ++k) {
+    const double t = 2 * M_PI * (k + jitter(rng)) / n, rk = radius(rng);
+    ring.push_back({cx + rk * std::cos(t), cy + rk * std::sin(t)});
+  }
+  return ring_shape(ring, "star " + std::to_string(n));
+}
+
+// A dense sample of a smooth wavy closed curve (the near-degenerate case for filters: nearly
+// cocircular consecutive vertices).
+Shape2 wavy(int n, double cx, double cy, double r, double phase) {
+  std::vector<Point2> ring;
+  for (int k = 0; k < n; ++k) {
+    const double t = 2 * M_PI * k / n, rk = r * (1 + 0.1 * std::sin(7 * t + phase));
+    ring.push_back({cx + rk * std::cos(t), cy + rk * std::sin(t)});
+  }
+  return ring_shape(ring, "wavy " + std::to_string(n));
+}
+
+// The shape's sites scaled by 2^K, K = minus the smallest lowest-set-bit exponent (exact).
+PolygonSites binary_frame(const Shape2& s) {
+  int low = 1 << 20;
+  for (const Ring& r : s.rings)
+    for (const Point2& p : r.points)
+      for (double x : {p.x, p.y})
+        if (x != 0) low = std::min(low, lowest_bit_exponent(x));
+  return make_sites(s, std::ldexp(1.0, -low));
+}
+
+// A Voronoi diagram as sets of site triples (rotated to start at the smallest site, the
+// counter-clockwise order kept; apexes marked) and of edges (the two sites and the two
+// end vertices' triples, unordered): equal sets = the same topology.
+using Triple = std::tuple<std::uint32_t, std::uint32_t, std::uint32_t, bool>;
+Triple canonical(const VoronoiTopology::Vertex& v) {
+  auto s = v.sites;
+  while (s[0] > s[1] || s[0] > s[2]) s = {s[1], s[2], s[0]};
+  return {s[0], s[1], s[2], v.apex};
+}
+struct Canonical {
+  std::multiset<Triple> vertices;
+  std::multiset<std::tuple<std::uint32_t, std::uint32_t, Triple, Triple>> edges;
+};
+Canonical canonical(const VoronoiTopology& t) {
+  Canonical c;
+  for (const auto& v : t.vertices) c.vertices.insert(canonical(v));
+  for (const auto& e : t.edges) {
+    Triple a = canonical(t.vertices[e.u]), b = canonical(t.vertices[e.v]);
+    if (b < a) std::swap(a, b);
+    c.edges.insert({std::min(e.site_a, e.site_b), std::max(e.site_a, e.site_b), a, b});
+  }
+  return c;
+}
+
+void require_same_topology(const Shape2& s) {
+  const PolygonSites sites = binary_frame(s);
+  REQUIRE(fits_wide_boost(sites));
+  const Canonical b = canonical(boost_segment_voronoi_wide(sites)), c = canonical(cgal_segment_voronoi(sites));
+  INFO(s.name);
+  REQUIRE(b.vertices.size() == c.vertices.size());
+  CHECK(b.vertices == c.vertices);
+  CHECK(b.edges == c.edges);
+}
+
+}  // namespace
+
+TEST_CASE("wide Boost = CGAL SDG on 60 seeded star polygons with full-mantissa doubles", "[exact2d]") {
+  std::mt19937 rng(20261203);
+  std::uniform_real_distribution<double> centre(-1e4, 1e4), log_r(-3, 6);
+  for (int trial = 0; trial < 60; ++trial) {
+    const int n = 5 + (trial * 37) % 240;
+    const double r = std::pow(10.0, log_r(rng));
+    // The centre at least 3 r from the axes: coordinates stay away from 0, where a
+    // full-mantissa double would need more than 62 bits in the frame.
+    const double cx = std::copysign(3 * r + std::fabs(centre(rng)), centre(rng));
+    const double cy = std::copysign(3 * r + std::fabs(centre(rng)), centre(rng));
+    CAPTURE(trial, n, r, cx, cy);
+    require_same_topology(random_star(rng, n, cx, cy, r));
+  }
+}
+
+TEST_CASE("wide Boost = CGAL SDG on dense wavy curves with full-mantissa doubles", "[exact2d]") {
+  // Generic phases: no four sites cocircular. (Phase 0 is mirror-symmetric up to rounding
+  // and has exactly cocircular sites, where the two constructions may split a degree-4
+  // vertex along different diagonals: compared after contraction, on the axis, in
+  // test_exact2d_polygon.cpp.)
+  for (const auto& [n, phase] : {std::pair<int, double>{500, 0.3}, {1500, 1.1}, {3000, 0.3}}) {
+    CAPTURE(n, phase);
+    require_same_topology(wavy(n, 3e6, -2.5e6, 1e6, phase));
+  }
+}
+
+TEST_CASE("input policy: which construction runs for which doubles", "[exact2d]") {
+  std::mt19937 rng(5);
+  PolygonAxisReport rep;
+  // Full-mantissa doubles away from 0: the wide binary frame.
+  exact_polygon_axis(random_star(rng, 40, 3e6, 2e6, 1e5), {}, &rep);
+  CHECK(rep.construction == AxisConstruction::BoostPolygonWide);
+  CHECK(rep.binary_digits > 20);
+  // Integers below 2^31: the decimal policy (int32 Boost); forced wide on the same polygon.
+  const Shape2 ints = ring_shape({{0, 0}, {7, 0}, {7, 3}, {4, 3}, {5, 6}, {1, 5}, {2, 2}, {0, 2}}, "integers");
+  exact_polygon_axis(ints, {}, &rep);
+  CHECK(rep.construction == AxisConstruction::BoostPolygon);
+  PolygonAxisOptions wide;
+  wide.construction = AxisConstruction::BoostPolygonWide;
+  exact_polygon_axis(ints, wide, &rep);
+  CHECK(rep.construction == AxisConstruction::BoostPolygonWide);
+  // A full-mantissa coordinate next to 0 with others near 1: beyond 62 bits, CGAL's SDG.
+  const Shape2 tiny = ring_shape({{1.0 / 3, 1e-30 / 3}, {1, 0.1}, {0.7, 0.9}, {0.1, 0.6}}, "tiny");
+  exact_polygon_axis(tiny, {}, &rep);
+  CHECK(rep.construction == AxisConstruction::CgalSdg);
+  CHECK(testing::error_of([&] { exact_polygon_axis(tiny, wide); }).find("62 bits") != std::string::npos);
+}
