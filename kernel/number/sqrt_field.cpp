@@ -231,4 +231,15 @@ RootSum sqrt(const RootSum& a) {
   return RootSum(std::move(*r));
 }
 
+ExactSum multiply_simplified(const ExactSum& a, const ExactSum& b) {
+  ExactSum r = multiply(a, b);
+  r.simplify();
+  return r;
+}
+
+ExactSum scaled(ExactSum a, const mpq_class& c) {
+  a.scale(c);
+  return a;
+}
+
 }  // namespace grassfire

@@ -19,6 +19,10 @@
 namespace grassfire {
 
 ExactSum multiply(const ExactSum& a, const ExactSum& b);
+// multiply(a, b) with like terms merged (simplify); what exact constructions chain.
+ExactSum multiply_simplified(const ExactSum& a, const ExactSum& b);
+// c a for a rational c.
+ExactSum scaled(ExactSum a, const mpq_class& c);
 // a / b, or nullopt when the conjugate rounds do not make the denominator rational
 // (or b is zero).
 std::optional<ExactSum> divide(const ExactSum& a, const ExactSum& b);

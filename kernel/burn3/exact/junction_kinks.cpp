@@ -65,15 +65,7 @@ struct EdgeTime {
   mpq_class l2;
 };
 
-ExactSum mul(const ExactSum& a, const ExactSum& b) {
-  ExactSum r = multiply(a, b);
-  r.simplify();
-  return r;
-}
-ExactSum scaled(ExactSum a, const mpq_class& c) {
-  a.scale(c);
-  return a;
-}
+ExactSum mul(const ExactSum& a, const ExactSum& b) { return multiply_simplified(a, b); }
 
 std::optional<EdgeTime> edge_time(const Unfolding& u, const WindowStore& s, Certifier& cert, std::uint32_t edge,
                                   std::uint32_t w) {

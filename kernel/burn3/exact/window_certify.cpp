@@ -28,15 +28,7 @@ constexpr int kMaxIrrationalCrossings = 4;
 ExactSum q(const mpq_class& x) { return ExactSum::rational(x); }
 XV xv(const std::array<mpq_class, 2>& a) { return {q(a[0]), q(a[1])}; }
 XV sub(const XV& a, const XV& b) { return {a[0] - b[0], a[1] - b[1]}; }
-ExactSum mul(const ExactSum& a, const ExactSum& b) {
-  ExactSum r = multiply(a, b);
-  r.simplify();
-  return r;
-}
-ExactSum scaled(ExactSum a, const mpq_class& c) {
-  a.scale(c);
-  return a;
-}
+ExactSum mul(const ExactSum& a, const ExactSum& b) { return multiply_simplified(a, b); }
 ExactSum cross_xv(const XV& a, const XV& b) { return mul(a[0], b[1]) - mul(a[1], b[0]); }
 ExactSum metric_dot(const XV& a, const XV& b, const mpq_class& g1, const mpq_class& g2) {
   return scaled(mul(a[0], b[0]), g1) + scaled(mul(a[1], b[1]), g2);
