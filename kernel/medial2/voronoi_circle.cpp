@@ -113,7 +113,11 @@ CircleValue<T> solve_pps(const Pt<T>& p, const Pt<T>& q, const Line<T>& l, bool 
 // Circle through P tangent to L1 and L2 (non-parallel): centre X0 + R W, R a root of
 // a R^2 + 2 b R + c = 0 with a = ((sqrt(N1 N2) - n1.n2) / det)^2.
 template <class T>
-CircleValue<T> solve_pss(const Pt<T>& p, const Line<T>& l1, const Line<T>& l2, int root) {
+struct PssQuadratic {
+  T x0, y0, wx, wy, a, b, c;
+};
+template <class T>
+PssQuadratic<T> pss_quadratic(const Pt<T>& p, const Line<T>& l1, const Line<T>& l2) {
   const T det = l1.nx * l2.ny - l1.ny * l2.nx;
   const T s1 = sqrt(l1.N), s2 = sqrt(l2.N), sm = sqrt(l1.N * l2.N);
   const T m = l1.nx * l2.nx + l1.ny * l2.ny;
@@ -121,11 +125,16 @@ CircleValue<T> solve_pss(const Pt<T>& p, const Line<T>& l1, const Line<T>& l2, i
   const T wx = (s1 * l2.ny - s2 * l1.ny) / det, wy = (l1.nx * s2 - l2.nx * s1) / det;
   const T ex = x0 - p.x, ey = y0 - p.y;
   const T k = (sm - m) / det;
-  const T a = k * k, b = ex * wx + ey * wy, c = ex * ex + ey * ey;
-  const T sd = sqrt(b * b - a * c);
+  return {x0, y0, wx, wy, k * k, ex * wx + ey * wy, ex * ex + ey * ey};
+}
+
+template <class T>
+CircleValue<T> solve_pss(const Pt<T>& p, const Line<T>& l1, const Line<T>& l2, int root) {
+  const PssQuadratic<T> q = pss_quadratic(p, l1, l2);
+  const T sd = sqrt(q.b * q.b - q.a * q.c);
   const T ss = root > 0 ? sd : -sd;
-  const T r = two_forms(ss - b, a, c, -b - ss);
-  return {x0 + r * wx, y0 + r * wy, r};
+  const T r = two_forms(ss - q.b, q.a, q.c, -q.b - ss);
+  return {q.x0 + r * q.wx, q.y0 + r * q.wy, r};
 }
 
 // Circle through P tangent to Li and Lj, with P on Li: it touches Li at P, so its centre
@@ -369,19 +378,12 @@ std::optional<CircleValue<ExactSum>> solve_radical(const PolygonSites& s, const 
   try {
     const Pt<Exact> p = point_of<Exact>(s, c.sites[0]);
     const Line<Exact> l1 = line_of<Exact>(s, c.sites[1]), l2 = line_of<Exact>(s, c.sites[2]);
-    const Exact det = l1.nx * l2.ny - l1.ny * l2.nx;
-    const Exact s1 = sqrt(l1.N), s2 = sqrt(l2.N), sm = sqrt(l1.N * l2.N);
-    const Exact m = l1.nx * l2.nx + l1.ny * l2.ny;
-    const Exact x0 = (l2.c * l1.ny - l1.c * l2.ny) / det, y0 = (l1.c * l2.nx - l2.c * l1.nx) / det;
-    const Exact wx = (s1 * l2.ny - s2 * l1.ny) / det, wy = (l1.nx * s2 - l2.nx * s1) / det;
-    const Exact ex = x0 - p.x, ey = y0 - p.y;
-    const Exact k = (sm - m) / det;
-    const Exact a = k * k, b = ex * wx + ey * wy, cc = ex * ex + ey * ey;
-    ExactSum root = sqrt_term((b * b - a * cc).v);
+    const PssQuadratic<Exact> q = pss_quadratic(p, l1, l2);
+    ExactSum root = sqrt_term((q.b * q.b - q.a * q.c).v);
     if (c.root < 0) root.scale(-1);
-    const Exact inverse_a = Exact(1.0) / a;
-    const ExactSum r = multiply_radical(root - b.v, inverse_a.v);
-    ExactSum x = x0.v + multiply_radical(r, wx.v), y = y0.v + multiply_radical(r, wy.v);
+    const Exact inverse_a = Exact(1.0) / q.a;
+    const ExactSum r = multiply_radical(root - q.b.v, inverse_a.v);
+    ExactSum x = q.x0.v + multiply_radical(r, q.wx.v), y = q.y0.v + multiply_radical(r, q.wy.v);
     x.simplify();
     y.simplify();
     return CircleValue<ExactSum>{std::move(x), std::move(y), r};
