@@ -43,11 +43,25 @@ struct Plot {
   std::vector<ReferenceSlope> slopes;  // drawn only on log-log plots
 };
 
-// Colours for series i = 0, 1, ... (distinct, print-friendly).
+// Colours for series i = 0, 1, ...: 16 distinct, print-friendly colours, then hues spaced by
+// the golden angle (so a figure with many series, e.g. the 14 shared meshes, repeats none).
 inline Rgb series_colour(std::size_t i) {
   static const Rgb k[] = {{0.80, 0.10, 0.10}, {0.10, 0.30, 0.80}, {0.10, 0.60, 0.20}, {0.85, 0.50, 0.05},
-                          {0.55, 0.15, 0.65}, {0.10, 0.60, 0.65}, {0.45, 0.45, 0.45}, {0.70, 0.35, 0.20}};
-  return k[i % (sizeof k / sizeof k[0])];
+                          {0.55, 0.15, 0.65}, {0.10, 0.60, 0.65}, {0.45, 0.45, 0.45}, {0.70, 0.35, 0.20},
+                          {0.95, 0.40, 0.60}, {0.50, 0.70, 0.10}, {0.00, 0.00, 0.00}, {0.40, 0.60, 0.95},
+                          {0.75, 0.65, 0.10}, {0.20, 0.20, 0.50}, {0.60, 0.00, 0.30}, {0.00, 0.40, 0.35}};
+  const std::size_t n = sizeof k / sizeof k[0];
+  if (i < n) return k[i];
+  const double h = std::fmod(0.618033988749895 * static_cast<double>(i - n), 1.0) * 6;  // hue sector
+  const double f = h - std::floor(h), v = 0.75, lo = 0.15, up = lo + (v - lo) * f, dn = v - (v - lo) * f;
+  switch (static_cast<int>(h)) {
+    case 0: return {v, up, lo};
+    case 1: return {dn, v, lo};
+    case 2: return {lo, v, up};
+    case 3: return {lo, dn, v};
+    case 4: return {up, lo, v};
+    default: return {v, lo, dn};
+  }
 }
 
 namespace detail {
