@@ -25,23 +25,24 @@
 // Usage: bench_burn3d_exact [--max-faces N] [--mesh NAME]   (meshes above N faces are
 // skipped, default 200000; --mesh: only that file of data/meshes)
 //
-// With --axes (issue 9 item 6): medial axes burned from their border, the exact engine
-// against the discrete baseline (burn3/discrete_burning.h) at the spacing whose maximum
-// error is 1% of the largest BT. Axes: the union-of-balls axis of data/balls/caffeine.cin
-// (built by complex3/builders, the balls builder) and the mesh axes of data/ma/real (made by
-// the project's mesh builder from CGAL's meshes; data/ma/real/README.md). The exact engine
-// burns complexes with singular edges with every singular edge a wall (an upper bound of
-// BT, not Definition 9; exact_engine_unsupported): those rows are labelled "walls" and their
-// error is measured against the walls' BT, which the baseline (Definition 9) may undercut,
-// so the 1% spacing may not exist there (h_1pct then says "not reached"). The spacing search
-// starts at default_burn_spacing (1/100 of the bounding box diagonal) and halves it up to 5
-// times, stopping early when the error shrinks by less than 10% in a halving, is infinite
-// (walls leave parts unburned that the baseline burns) or the baseline takes over a minute; the error is max over vertices of |BT_h - BT_exact| (midpoint of
-// the enclosure).
+// With --axes (issue 9 item 6): medial axes burned from their border by Definition 9 (the
+// junction rule on singular curves, the link rule at singular points), the exact engine
+// against the discrete baseline (burn3/discrete_burning.h) at the spacing whose maximum error
+// is 1% of the largest BT. Axes: the mesh axes of data/ma/real (made by the project's mesh
+// builder from CGAL's meshes; data/ma/real/README.md) and the union-of-balls axis of 24
+// random balls (union_alpha_complex.h random_ball_set(24, seed 2024); complex3/builders
+// union_of_balls_axis). joint.ma runs with a limit of 300 processor seconds for the exact
+// engine (DNF beyond; the baseline is then timed at the default spacing, error unknown).
+// The spacing search starts at default_burn_spacing (1/100 of the bounding box diagonal)
+// and halves it up to 5 times, stopping early when the error shrinks by less than 10% in a
+// halving or the baseline takes over a minute; the error is max over vertices of
+// |BT_h - BT_exact| (midpoint of the enclosure).
 // Times are processor seconds in forked children, the complex built outside both.
-// CSV: axis,triangles,singular_edges,semantics,exact_s,uncertified,max_bt,h_1pct,discrete_s,
-// discrete_err,ratio (= exact_s / discrete_s at h_1pct; at the finest h tried when not reached)
-// Usage: bench_burn3d_exact --axes [--quick]   (--quick: the two smallest axes)
+// CSV: axis,triangles,singular_edges,exact_s,uncertified,uncertified_breaks,kinks,merges,
+// quenches,unclassified,max_bt,h_1pct,discrete_s,discrete_err,ratio (= exact_s /
+// discrete_s at h_1pct; at the finest h tried when not reached)
+// Usage: bench_burn3d_exact --axes [--quick] [--axis NAME]   (--quick: the two smallest
+// axes; --axis: only the axes whose name contains NAME)
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -51,6 +52,9 @@
 
 #include "burn3/discrete_burning.h"
 #include "burn3/exact/exact_burning.h"
+#include "burn3/exact/junction_points.h"
+#include "complex3/builders/union_alpha_complex.h"
+#include "complex3/builders/union_of_balls_axis.h"
 #include "complex3/builders/medial_axis_input.h"
 #include "io/complex_ma.h"
 #include "pipeline/burn3d.h"
@@ -121,17 +125,26 @@ std::vector<double> run_exact(const TriangleMesh3& m) {
   return out;
 }
 
-// [seconds, uncertified, mid per vertex]
+// [seconds, uncertified, uncertified breaks, kinks, merges, quenches, unclassified, mid
+//  per vertex]
 std::vector<double> run_exact_axis(const MedialComplex& mc) {
   const std::clock_t start = std::clock();
   ExactBurning eb(mc);
   eb.add_border_ignition();
   eb.run();
   const double seconds = cpu_seconds_since(start);
-  std::vector<double> out = {seconds, static_cast<double>(eb.certification().uncertified)};
+  const JunctionPoints j = junction_points(eb);
+  std::vector<double> out = {seconds,
+                             static_cast<double>(eb.certification().uncertified),
+                             static_cast<double>(eb.propagation().stats().uncertified_breaks),
+                             static_cast<double>(j.kinks.size()),
+                             static_cast<double>(j.merges.size()),
+                             static_cast<double>(j.quenches.size()),
+                             static_cast<double>(j.unclassified)};
   for (const Interval& bt : eb.vertex_burn_times()) out.push_back(bt.is_infinite() ? INFINITY : bt.mid());
   return out;
 }
+constexpr std::size_t kExactHeader = 7;
 
 // [seconds, BT_h per vertex]
 std::vector<double> run_discrete_axis(const MedialComplex& mc, double h) {
@@ -146,8 +159,8 @@ std::vector<double> run_discrete_axis(const MedialComplex& mc, double h) {
 
 double max_error(const std::vector<double>& exact, const std::vector<double>& discrete) {
   double err = 0;
-  for (std::size_t v = 0; v + 3 < exact.size(); ++v) {  // the last value is the peak memory
-    const double a = exact[2 + v], b = discrete[1 + v];
+  for (std::size_t v = 0; v + kExactHeader + 1 < exact.size(); ++v) {  // the last value is the peak memory
+    const double a = exact[kExactHeader + v], b = discrete[1 + v];
     if (std::isinf(a) || std::isinf(b)) {
       if (std::isinf(a) != std::isinf(b)) return INFINITY;
       continue;
@@ -157,26 +170,41 @@ double max_error(const std::vector<double>& exact, const std::vector<double>& di
   return err;
 }
 
-int bench_axes(bool quick) {
-  std::printf("axis,triangles,singular_edges,semantics,exact_s,uncertified,max_bt,h_1pct,discrete_s,discrete_err,ratio\n");
+int bench_axes(bool quick, const std::string& only) {
+  std::printf("axis,triangles,singular_edges,exact_s,uncertified,uncertified_breaks,kinks,merges,quenches,unclassified,"
+              "max_bt,h_1pct,discrete_s,discrete_err,ratio\n");
   struct Axis {
     std::string name;
     RawComplex raw;
+    long cpu_limit_s;
   };
   const std::string data = GF_PROJECT_DATA;
   std::vector<Axis> axes;
-  axes.push_back({"balls/caffeine.cin (union of balls)", build_medial_axis(data + "/balls/caffeine.cin", MedialInputKind::Auto).complex});
-  for (const char* f : {"tripod.ma", "pipe.ma", "tripod-s2.ma", "joint.ma"})
-    axes.push_back({std::string("ma/real/") + f + " (mesh axis)", read_ma(data + "/ma/real/" + f)});
-  if (quick) axes.resize(2);
+  for (const char* f : {"pipe.ma", "tripod.ma", "tripod-s2.ma"})
+    axes.push_back({std::string("ma/real/") + f + " (mesh axis)", read_ma(data + "/ma/real/" + f), 0});
+  if (!quick) {
+    axes.push_back({"24 random balls (seed 2024; union-of-balls axis)", union_of_balls_axis(random_ball_set(24, 2024)).complex, 0});
+    axes.push_back({"ma/real/joint.ma (mesh axis)", read_ma(data + "/ma/real/joint.ma"), 300});
+  } else {
+    axes.resize(2);
+  }
   int failures = 0;
   for (const Axis& a : axes) {
+    if (!only.empty() && a.name.find(only) == std::string::npos) continue;
     const MedialComplex mc(a.raw);
     mc.validate();
-    const bool walls = exact_engine_unsupported(mc).has_value();
-    const std::vector<double> exact = bench::in_child([&] { return run_exact_axis(mc); });
+    std::vector<double> exact;
+    try {
+      exact = bench::in_child([&] { return run_exact_axis(mc); }, a.cpu_limit_s);
+    } catch (const std::runtime_error&) {  // killed at the limit
+      const std::vector<double> d = bench::in_child([&] { return run_discrete_axis(mc, default_burn_spacing(mc)); });
+      std::printf("%s,%zu,%zu,DNF (>%ld s),,,,,,,,,%.3f,,\n", a.name.c_str(), mc.triangle_count(),
+                  mc.count(EdgeStratum::Singular), a.cpu_limit_s, d[0]);
+      std::fflush(stdout);
+      continue;
+    }
     double max_bt = 0;
-    for (std::size_t v = 2; v + 1 < exact.size(); ++v)
+    for (std::size_t v = kExactHeader; v + 1 < exact.size(); ++v)
       if (std::isfinite(exact[v])) max_bt = std::max(max_bt, exact[v]);
     double h = default_burn_spacing(mc), err = INFINITY, discrete_s = 0;
     bool reached = false;
@@ -186,15 +214,14 @@ int bench_axes(bool quick) {
       discrete_s = d[0];
       err = max_error(exact, d);
       reached = err <= 0.01 * max_bt;
-      // Stop when reached, when the error no longer shrinks (walls: BT_h tends to
-      // Definition 9's BT, not to the walls' bound), or past a minute of baseline time.
+      // Stop when reached, when the error no longer shrinks, or past a minute of baseline time.
       if (reached || !std::isfinite(err) || err > 0.9 * previous || discrete_s > 60) break;
     }
     if (exact[1] != 0) ++failures;
-    std::printf("%s,%zu,%zu,%s,%.3f,%.0f,%.4g,%s,%.3f,%.3g,%.3f\n", a.name.c_str(), mc.triangle_count(),
-                mc.count(EdgeStratum::Singular), walls ? "walls (upper bound; not Definition 9)" : "Definition 9",
-                exact[0], exact[1], max_bt, reached ? std::to_string(h).c_str() : ("not reached (" + std::to_string(h) + ")").c_str(),
-                discrete_s, err, exact[0] / discrete_s);
+    std::printf("%s,%zu,%zu,%.3f,%.0f,%.0f,%.0f,%.0f,%.0f,%.0f,%.4g,%s,%.3f,%.3g,%.3f\n", a.name.c_str(), mc.triangle_count(),
+                mc.count(EdgeStratum::Singular), exact[0], exact[1], exact[2], exact[3], exact[4], exact[5], exact[6], max_bt,
+                reached ? std::to_string(h).c_str() : ("not reached (" + std::to_string(h) + ")").c_str(), discrete_s, err,
+                exact[0] / discrete_s);
     std::fflush(stdout);
   }
   return failures == 0 ? 0 : 1;
@@ -206,8 +233,12 @@ int main(int argc, char** argv) {
   for (int i = 1; i < argc; ++i)
     if (!std::strcmp(argv[i], "--axes")) {
       bool quick = false;
-      for (int j = 1; j < argc; ++j) quick = quick || !std::strcmp(argv[j], "--quick");
-      return bench_axes(quick);
+      std::string only;
+      for (int j = 1; j < argc; ++j) {
+        quick = quick || !std::strcmp(argv[j], "--quick");
+        if (!std::strcmp(argv[j], "--axis") && j + 1 < argc) only = argv[j + 1];
+      }
+      return bench_axes(quick, only);
     }
   std::size_t max_faces = 200000;  // CGAL needs about 5 GB at 2 10^5 faces
   std::string only;

@@ -4,6 +4,7 @@
 // the child alone) is the memory of that configuration, not of earlier, larger ones.
 #pragma once
 
+#include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -31,13 +32,19 @@ inline double peak_resident_mib() {
 }
 
 // Runs `measure` in a child process; it returns numbers, which come back through a pipe.
-inline std::vector<double> in_child(const std::function<std::vector<double>()>& measure) {
+// cpu_limit_s > 0: the child is killed past that many processor seconds (RLIMIT_CPU), and
+// in_child throws as for any failed child.
+inline std::vector<double> in_child(const std::function<std::vector<double>()>& measure, long cpu_limit_s = 0) {
   int fd[2];
   if (pipe(fd) != 0) throw std::runtime_error("pipe failed");
   const pid_t pid = fork();
   if (pid < 0) throw std::runtime_error("fork failed");
   if (pid == 0) {
     close(fd[0]);
+    if (cpu_limit_s > 0) {
+      const rlimit lim{static_cast<rlim_t>(cpu_limit_s), static_cast<rlim_t>(cpu_limit_s)};
+      setrlimit(RLIMIT_CPU, &lim);
+    }
     std::vector<double> values;
     try {
       values = measure();

@@ -11,9 +11,10 @@
 // singular edge: an upper bound of BT off the curves; the report and the summary say so).
 // The report holds the propagation's counters, the events by type, one counter per
 // certification stage ("uncertified" counts the wedge decisions no stage certified, each
-// taken as collinear and reported, DESIGN.md 3), and the kinks of the junction rule, each
-// a point of a singular edge with BT there: {"x","y","z","bt","error"}, |coordinate or bt -
-// exact| <= error (exact parameters are enclosed from their closed form).
+// taken as collinear and reported, DESIGN.md 3), and the kinks, merges and quench points of
+// the junction rule (junction_points.h), each a point of a singular edge with BT there:
+// {"x","y","z","bt","error"}, |coordinate or bt - exact| <= error (exact parameters are
+// enclosed from their closed form), with the count of switch points left unclassified.
 #include <chrono>
 #include <cmath>
 #include <limits>
@@ -22,6 +23,7 @@
 
 #include "burn3/exact/burn_outputs.h"
 #include "burn3/exact/exact_burning.h"
+#include "burn3/exact/junction_points.h"
 #include "pipeline/burn3d_methods.h"
 
 namespace grassfire {
@@ -46,37 +48,32 @@ nlohmann::json propagation_report(const PropagationStats& s) {
           {"uncertified_breaks", s.uncertified_breaks}};
 }
 
-// Events by type (issue 9): windows reaching a vertex or a singular edge, kinks, merges
-// (fronts continued across a burned curve), quenched arrivals, vertices burned by the link
-// rule (singular points and curve vertices included), ends of burned stretches.
-nlohmann::json event_report(const PropagationStats& s) {
-  return {{"vertex_reached", s.vertex_events},    {"edge_reached", s.junction_records},
-          {"kinks", s.kinks},                     {"merges", s.merges},
-          {"quenched", s.quenched},               {"link_rule_burns", s.vertex_burns},
-          {"stretch_ends", s.stretch_ends}};
+// Events by type (issue 9): windows reaching a vertex or a singular edge, the switch
+// points of the singular edges' (k-1)-th arrival by type (kinks, merges, quenches,
+// unclassified; junction_points.h), vertices burned by the link rule (singular points and
+// curve vertices included), ends of burned stretches; then the engine's own counters:
+// edge-point sources made at switches, pieces continued across a burned curve, arrivals
+// that realise no piece.
+nlohmann::json event_report(const PropagationStats& s, const JunctionPoints& j) {
+  return {{"vertex_reached", s.vertex_events},
+          {"edge_reached", s.junction_records},
+          {"kinks", j.kinks.size()},
+          {"merges", j.merges.size()},
+          {"quenches", j.quenches.size()},
+          {"unclassified_switches", j.unclassified},
+          {"link_rule_burns", s.vertex_burns},
+          {"stretch_ends", s.stretch_ends},
+          {"switch_sources", s.kinks},
+          {"continued_pieces", s.merges},
+          {"quenched_arrivals", s.quenched}};
 }
 
-nlohmann::json kink_report(ExactBurning& eb) {
+// Points of singular edges with BT there: {"x","y","z","bt","error"}, |coordinate or bt -
+// exact| <= error (exact parameters and times are enclosed from their closed forms).
+nlohmann::json point_report(const std::vector<JunctionPoint>& points) {
   nlohmann::json r = nlohmann::json::array();
-  const WindowStore& s = eb.propagation().store();
-  const MedialComplex& mc = eb.complex();
-  for (const SweepEvent& ev : eb.propagation().events()) {
-    if (ev.kind != SweepEvent::Kind::Kink) continue;
-    const EdgePoint& ep = s.edge_points[ev.id];
-    const Interval l = ep.exact >= 0 ? s.exact_times[ep.exact].approx() : ep.lambda;
-    const ExactPoint3 &a = mc.vertex(mc.edge(ep.edge).v[0]).exact, &b = mc.vertex(mc.edge(ep.edge).v[1]).exact;
-    double error = 0.0;
-    std::array<double, 3> x{};
-    for (int i = 0; i < 3; ++i) {
-      const Interval ai = enclose(i == 0 ? a.x : i == 1 ? a.y : a.z), bi = enclose(i == 0 ? b.x : i == 1 ? b.y : b.z);
-      const Interval c = ai + l * (bi - ai);
-      x[i] = c.mid();
-      error = std::max(error, round_up(std::max(c.hi - x[i], x[i] - c.lo)));
-    }
-    const Interval bt = s.times[ev.time].value;
-    error = std::max(error, round_up(std::max(bt.hi - bt.mid(), bt.mid() - bt.lo)));
-    r.push_back({{"x", x[0]}, {"y", x[1]}, {"z", x[2]}, {"bt", bt.mid()}, {"error", error}});
-  }
+  for (const JunctionPoint& p : points)
+    r.push_back({{"x", p.x[0]}, {"y", p.x[1]}, {"z", p.x[2]}, {"bt", p.bt}, {"error", p.error}});
   return r;
 }
 
@@ -134,6 +131,7 @@ BurnOutcome burn_by_exact(const BurnRequest& request) {
   double max_error = 0.0;
   for (double e : out.vertex_bt_error)
     if (std::isfinite(e)) max_error = std::max(max_error, e);
+  const JunctionPoints junction = junction_points(eb);
   const CertificationCounts& c = eb.certification();
   const QueryCounts& q = eb.query_counts();
   out.report = {{"seconds", seconds_since(start)},
@@ -144,8 +142,11 @@ BurnOutcome burn_by_exact(const BurnRequest& request) {
                 {"query_candidates", q.candidates},
                 {"query_widened", q.widened},
                 {"max_vertex_bt_error", max_error},
-                {"events", event_report(eb.propagation().stats())},
-                {"kinks", kink_report(eb)},
+                {"events", event_report(eb.propagation().stats(), junction)},
+                {"kinks", point_report(junction.kinks)},
+                {"merges", point_report(junction.merges)},
+                {"quenches", point_report(junction.quenches)},
+                {"unclassified_switches", junction.unclassified},
                 {"singular_edges", walls ? "walls (not Definition 9: fronts stop at singular edges)"
                                          : mc.count(EdgeStratum::Singular) > 0 ? "junction rule (Definition 9)" : "none"}};
   std::ostringstream s;

@@ -437,6 +437,27 @@ void WindowPropagation::edge_point_source(std::uint32_t edge, const Break& b, st
   events_.push_back({kind, ep, time});
 }
 
+std::vector<WindowPropagation::JunctionSwitch> WindowPropagation::junction_switches() {
+  std::vector<JunctionSwitch> out;
+  for (std::uint32_t edge = 0; edge < junction_of_.size(); ++edge) {
+    if (junction_of_[edge] == kNoIndex) continue;
+    if (junctions_[junction_of_[edge]].dirty) {
+      std::vector<Piece> p = junction_pieces(edge);
+      junctions_[junction_of_[edge]].pieces = std::move(p);
+      junctions_[junction_of_[edge]].dirty = false;
+    }
+    const std::vector<Piece> pieces = junctions_[junction_of_[edge]].pieces;  // a copy: break_point grows the state
+    for (std::size_t i = 0; i + 1 < pieces.size(); ++i) {
+      const Piece &a = pieces[i], &b = pieces[i + 1];
+      if (a.record == kNoIndex || b.record == kNoIndex || a.record == b.record || (a.hi.id >> 60) == 0) continue;
+      const std::uint32_t ep = break_point(edge, a.hi);
+      const std::uint32_t wa = records_[a.record].window, wb = records_[b.record].window;
+      out.push_back({edge, ep, wa, wb, window_time_at(wa, ep | kEdgePointBound)});
+    }
+  }
+  return out;
+}
+
 // Arrivals that realise no emitted piece: fronts that end at the curve (they meet the other
 // sheets' fronts there, or arrive after the curve burned).
 void WindowPropagation::count_quenched() {

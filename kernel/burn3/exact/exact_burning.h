@@ -79,6 +79,8 @@ class ExactBurning {
   const WindowPropagation& propagation() const { return *prop_; }
   const CertificationCounts& certification() const { return prop_->certifier().counts; }
   Certifier& certifier() { return prop_->certifier(); }
+  // The switch points of the singular edges' (k-1)-th arrival (after run(); junction_points.h).
+  std::vector<WindowPropagation::JunctionSwitch> junction_switches() { return prop_->junction_switches(); }
   const QueryCounts& query_counts() const { return queries_; }
   // The live windows covering triangle t (roots and entered windows).
   std::vector<std::uint32_t> triangle_windows(std::uint32_t t) const;

@@ -106,6 +106,15 @@ class WindowPropagation {
   }
   bool is_link_rule_vertex(std::uint32_t v) const { return link_of_[v] != kNoIndex; }
   bool walls() const { return o_.singular_walls; }
+  // After run(): the switch points of the singular edges' (k-1)-th arrival, from each edge's
+  // final pieces: an interior point of the edge where the realising record changes between
+  // two burned pieces (edge_junction.cpp; classified by junction_points.h). `point` is an
+  // edge point (exact parameter where a closed form exists), `left` and `right` the windows
+  // realising the arrival just below and just above its parameter, `time` BT there.
+  struct JunctionSwitch {
+    std::uint32_t edge, point, left, right, time;
+  };
+  std::vector<JunctionSwitch> junction_switches();
 
  private:
   // Events: a window to propagate, fire arriving at a vertex along a segment, a vertex
