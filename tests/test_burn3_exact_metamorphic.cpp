@@ -14,52 +14,6 @@
 using namespace grassfire;
 using namespace grassfire::testing;
 
-namespace {
-
-// x -> s R x + t with R = the rotation by the Pythagorean angle (3/5, 4/5) about y, then
-// by (5/13, 12/13) about z: rational, orthogonal.
-ExactPoint3 motion(const ExactPoint3& p, const mpq_class& s, const ExactPoint3& t) {
-  const mpq_class c1(3, 5), s1(4, 5), c2(5, 13), s2(12, 13);
-  const ExactPoint3 a{c1 * p.x - s1 * p.z, p.y, s1 * p.x + c1 * p.z};
-  const ExactPoint3 b{c2 * a.x - s2 * a.y, s2 * a.x + c2 * a.y, a.z};
-  return {s * b.x + t.x, s * b.y + t.y, s * b.z + t.z};
-}
-
-RawComplex moved(RawComplex raw, const mpq_class& s, const ExactPoint3& t) {
-  for (ExactPoint3& v : raw.vertices) v = motion(v, s, t);
-  for (mpq_class& r2 : raw.radius_squared) r2 *= s * s;
-  for (BorderIgnition& b : raw.border_rules) b.point = motion(b.point, s, t);
-  raw.source += " moved";
-  return raw;
-}
-
-// The same complex with vertices and triangles in a shuffled order (and each triangle's
-// corners rotated).
-RawComplex shuffled(RawComplex raw, std::mt19937& rng, std::vector<std::uint32_t>* new_triangle) {
-  std::vector<std::uint32_t> perm(raw.vertices.size());
-  for (std::uint32_t i = 0; i < perm.size(); ++i) perm[i] = i;
-  std::shuffle(perm.begin(), perm.end(), rng);
-  RawComplex r = raw;
-  for (std::size_t i = 0; i < perm.size(); ++i) {
-    r.vertices[perm[i]] = raw.vertices[i];
-    r.radius_squared[perm[i]] = raw.radius_squared[i];
-  }
-  std::vector<std::uint32_t> tperm(raw.triangles.size());
-  for (std::uint32_t i = 0; i < tperm.size(); ++i) tperm[i] = i;
-  std::shuffle(tperm.begin(), tperm.end(), rng);
-  for (std::size_t i = 0; i < tperm.size(); ++i) {
-    const auto& t = raw.triangles[i];
-    const int k = static_cast<int>(i % 3);
-    r.triangles[tperm[i]] = {perm[t[k]], perm[t[(k + 1) % 3]], perm[t[(k + 2) % 3]]};
-  }
-  for (auto& s : r.segments) s = {perm[s[0]], perm[s[1]]};
-  for (auto& b : r.border_rules) b.edge = {perm[b.edge[0]], perm[b.edge[1]]};
-  *new_triangle = tperm;
-  return r;
-}
-
-}  // namespace
-
 TEST_CASE("rational rigid motions and scalings scale BT exactly (planar sheet with a hole)", "[exact3]") {
   const RawComplex raw = grid_sheet(4, 3, 1, {{1, 1}}, IgnitionRule::Linear);
   const mpq_class s(3, 2);

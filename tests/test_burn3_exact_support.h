@@ -28,4 +28,15 @@ double distance3(const Vec3d& a, const Vec3d& b);
 // The enclosure's width, and whether it contains x.
 inline bool encloses(const Interval& i, double x, double slack = 0.0) { return i.lo - slack <= x && x <= i.hi + slack; }
 
+// x -> s R x + t with R = the rotation by the Pythagorean angle (3/5, 4/5) about y, then by
+// (5/13, 12/13) about z: rational and orthogonal.
+ExactPoint3 motion(const ExactPoint3& p, const mpq_class& s, const ExactPoint3& t);
+// The complex moved by `motion` (radii scaled by s, rule points moved).
+RawComplex moved(RawComplex raw, const mpq_class& s, const ExactPoint3& t);
+// The same complex with vertices and triangles in a shuffled order (and each triangle's
+// corners rotated): old triangle i is new triangle (*new_triangle)[i], old vertex v new
+// vertex (*new_vertex)[v] (when asked).
+RawComplex shuffled(RawComplex raw, std::mt19937& rng, std::vector<std::uint32_t>* new_triangle,
+                    std::vector<std::uint32_t>* new_vertex = nullptr);
+
 }  // namespace grassfire::testing
