@@ -2,25 +2,29 @@
 // (a complex decomposed into M2, M1, M0 and its border), Figs. 4.4 and 5.1 redone with
 // the exact burning time, and the exact burning time on real medial axes.
 //
-// The exact engine burns complexes without singular edges as Definition 9; on the others
-// (today) it burns with singular edges as walls, an upper bound of BT, and the captions
-// say so (ExactBurningField::definition9 decides which caption a figure gets, so the
-// figures switch to Definition 9 with the engine). Values are the engine's certified side
-// values (BT_t at a point of triangle t, burning_field.h) on a barycentric grid of each
-// triangle; iso-lines interpolate them linearly on that grid (a drawing of the exact
-// curves, within O(grid spacing^2) of them).
+// The exact engine burns every complex by Definition 9 (the junction rule on singular
+// curves, the link rule at singular points); ExactScene::semantics still says which rule a
+// figure shows (ExactBurningField::definition9). The kinks, merges and quench points drawn
+// are the engine's (junction_points.h: located exactly where the data is exact, else as
+// certified enclosures), not closed forms. Values are the engine's certified side values
+// (BT_t at a point of triangle t, burning_field.h) on a barycentric grid of each triangle;
+// iso-lines interpolate them linearly on that grid (a drawing of the exact curves, within
+// O(grid spacing^2) of them).
 #include <cmath>
 #include <cstdio>
 #include <memory>
 
 #include "burn3/exact/exact_burning_field.h"
+#include "burn3/exact/junction_points.h"
+#include "complex3/builders/union_alpha_complex.h"
+#include "complex3/builders/union_of_balls_axis.h"
 #include "burn3/lpdf.h"
-#include "complex3/builders/medial_axis_input.h"
 #include "complex3/synthetic_complexes.h"
 #include "complex3/vec3.h"
 #include "fig_4_scene.h"
 #include "figure_registry.h"
 #include "io/complex_ma.h"
+#include "number/sqrt_field.h"
 
 namespace grassfire::figures {
 namespace {
@@ -38,7 +42,9 @@ struct ExactScene {
     eb->add_border_ignition();
     eb->run();
     field = std::make_unique<ExactBurningField>(*eb, 1.0);
+    points = junction_points(*eb);
   }
+  JunctionPoints points;
   std::string semantics() const {
     return field->definition9() ? "exact BT (Definition 9)"
                                 : "exact engine with singular edges as walls: an upper bound of BT, not Definition 9";
@@ -114,6 +120,24 @@ void draw_singular(Renderer3d& r, const MedialComplex& mc) {
     if (mc.vertex(v).kind == VertexKind::SingularPoint) r.point(p3(mc.vertex(v).approx), 3.5, kBlack);
 }
 
+// The engine's kinks (white), merges (green) and quench points (blue) on the curves.
+void draw_junction_points(Renderer3d& r, const JunctionPoints& j, double radius) {
+  for (const JunctionPoint& p : j.merges) r.point({p.x[0], p.x[1], p.x[2]}, radius, {0.1, 0.7, 0.2});
+  for (const JunctionPoint& p : j.quenches) r.point({p.x[0], p.x[1], p.x[2]}, radius, kBlue);
+  for (const JunctionPoint& p : j.kinks) r.point({p.x[0], p.x[1], p.x[2]}, radius, kWhite);
+}
+
+// Whether the engine's kinks include the board-and-fin kink, proved equal to 2 + sqrt2.
+bool kink_proved(const JunctionPoints& j) {
+  ExactSum k = ExactSum::sqrt_of(2);
+  k += ExactSum::rational(2);
+  for (const JunctionPoint& p : j.kinks)
+    if (p.exact_x && exact_sign((*p.exact_x)[0] - k) == 0 && exact_sign((*p.exact_x)[1] - k) == 0 &&
+        exact_sign((*p.exact_x)[2]) == 0)
+      return true;
+  return false;
+}
+
 void legend(SvgCanvas& c, double x, double y, const std::vector<std::pair<Rgb, std::string>>& items) {
   for (std::size_t i = 0; i < items.size(); ++i) {
     c.rect(x, y + 20.0 * i, 14, 10, items[i].first);
@@ -163,18 +187,25 @@ std::vector<FigureFile> fig_4_4_exact(const FigureContext& ctx) {
   draw_field(r, *e.field, s.drawn, 0, 8, levels_every(0.5, 8), 3);
   draw_edges(r, s.mc, s.drawn, EdgeStratum::Border, kBlack, 1.8, true);
   draw_edges(r, s.mc, s.drawn, EdgeStratum::Singular, kRed, 2.2);
-  const auto k = board_fin_kink();
-  r.point({k[0], k[1], k[2]}, 4.5, kWhite);
-  r.label({k[0], k[1], k[2]}, "k = 2 + sqrt 2 (closed form)", 13, {10, 30});
+  for (const JunctionPoint& p : e.points.kinks) r.point({p.x[0], p.x[1], p.x[2]}, 4.5, kWhite);
+  const bool proved = kink_proved(e.points);
+  for (const JunctionPoint& p : e.points.kinks)
+    r.label({p.x[0], p.x[1], p.x[2]}, proved ? "k = 2 + sqrt 2 (engine, proved)" : "k (engine)", 13, {10, 30});
   r.render(canvas, 100, 30, 1000, 520);
   colour_bar(canvas, 480, 18, 240, 0, 8, "burning time BT (exact engine)");
   canvas.save(ctx.out_dir + "/fig4_4_exact.svg");
+  char found[200];
+  std::snprintf(found, sizeof found, "%zu kink(s) and %zu quench point(s) (%llu switch points unclassified)",
+                e.points.kinks.size(), e.points.quenches.size(), static_cast<unsigned long long>(e.points.unclassified));
   return {{"fig4_4_exact.svg",
            "Fig. 4.4 from the exact engine: " + e.semantics() +
                " on the board and fin (E = 10, triangles of side 1/4), certified side values on a 3 x 3 grid per "
-               "triangle, iso-lines every 0.5; k marks the kink 2 + sqrt 2 of the closed form (board_fin_kink; the "
-               "engine lists no kinks yet). With N as a wall the fin's fire never crosses N, so the front side burns "
-               "from B only and shows no circle about k: compare with fig4_4.svg (discrete, Definition 9)."}};
+               "triangle, iso-lines every 0.5. The engine found " + found +
+               " on N (junction_points.h); k (white) is its kink, whose coordinates it " +
+               (proved ? "proved equal to 2 + sqrt 2 (exact arithmetic)" : "located only as an enclosure") +
+               ". Beyond k the fin's fire continues across N into the front side (the circles about k); the quench "
+               "point, where that front meets the fire of the truncated far end (10, 10, 0) on N, is off the picture "
+               "(s = 1/2 + 10 (2 + sqrt 2)/4, BT above 8)."}};
 }
 
 std::vector<FigureFile> fig_5_1_exact(const FigureContext& ctx) {
@@ -192,7 +223,7 @@ std::vector<FigureFile> fig_5_1_exact(const FigureContext& ctx) {
     for (std::uint32_t v : s.mc.triangle(t).v) flat = flat && s.mc.vertex(v).approx[2] == 0;
     if (flat) board.push_back(t);
   }
-  const auto k = board_fin_kink();
+  const bool proved = kink_proved(e.points);
   for (int panel = 0; panel < 2; ++panel) {
     Renderer3d r(top);
     if (panel == 0)
@@ -201,8 +232,10 @@ std::vector<FigureFile> fig_5_1_exact(const FigureContext& ctx) {
     else
       draw_field(r, *e.field, board, 0, 8, levels_every(0.5, 8), 3);
     draw_edges(r, s.mc, board, EdgeStratum::Singular, kRed, 2.2);
-    r.point({k[0], k[1], k[2]}, 4.5, kWhite);
-    r.label({k[0], k[1], k[2]}, "k", 15, {-12, 14});
+    for (const JunctionPoint& p : e.points.kinks) {
+      r.point({p.x[0], p.x[1], p.x[2]}, 4.5, kWhite);
+      r.label({p.x[0], p.x[1], p.x[2]}, "k", 15, {-12, 14});
+    }
     r.render(canvas, 600.0 * panel, 40, 600, 420);
     canvas.text({600.0 * panel + 300, 30}, panel == 0 ? "LPDF (closed form, 4.1.2)" : "burning time (exact engine)", 15,
                 "middle");
@@ -210,7 +243,8 @@ std::vector<FigureFile> fig_5_1_exact(const FigureContext& ctx) {
   canvas.save(ctx.out_dir + "/fig5_1_exact.svg");
   return {{"fig5_1_exact.svg",
            "Fig. 5.1 from the exact engine: the board seen from above, LPDF (left, closed form) against the " +
-               e.semantics() + " (right), iso-curves every 0.5, k = 2 + sqrt 2 marked."}};
+               e.semantics() + " (right), iso-curves every 0.5; k is the engine's kink (junction_points.h), " +
+               (proved ? "proved equal to 2 + sqrt 2" : "located as an enclosure") + ", marked in both panels."}};
 }
 
 // The exact BT on a real medial axis: coloured triangles (segments as coloured lines),
@@ -237,22 +271,28 @@ FigureFile real_axis_panel(const FigureContext& ctx, const std::string& file, co
     }
   }
   draw_singular(r, *e.mc);
+  draw_junction_points(r, e.points, 4.0);
   r.render(canvas, 0, 40, 1000, 640);
   colour_bar(canvas, 380, 18, 240, 0, hi, "burning time");
   canvas.save(ctx.out_dir + "/" + file);
-  char counts[160];
-  std::snprintf(counts, sizeof counts, " (%zu triangles, %zu singular edges, %llu uncertified decisions)",
+  char counts[320];
+  std::snprintf(counts, sizeof counts,
+                " (%zu triangles, %zu singular edges, %llu uncertified decisions; %zu kinks, %zu merges, %zu quench "
+                "points, %llu switch points unclassified)",
                 e.mc->triangle_count(), e.mc->count(EdgeStratum::Singular),
-                static_cast<unsigned long long>(e.eb->certification().uncertified));
+                static_cast<unsigned long long>(e.eb->certification().uncertified), e.points.kinks.size(),
+                e.points.merges.size(), e.points.quenches.size(), static_cast<unsigned long long>(e.points.unclassified));
   return {file, what + counts + ": " + e.semantics() +
-                    ", hue 0 .. max BT, 12 iso-lines; grey where it never burns (the closed part, Prop 7, or "
-                    "behind a wall); singular curves red, singular points black."};
+                    ", hue 0 .. max BT, 12 iso-lines; grey where it never burns (the closed part, Prop 7); singular "
+                    "curves red, singular points black; the engine's kinks white, merges green, quench points blue "
+                    "(junction_points.h)."};
 }
 
 std::vector<FigureFile> fig_exact_real_axes(const FigureContext& ctx) {
-  return {real_axis_panel(ctx, "fig_exact_bt_balls.svg",
-                          build_medial_axis(ctx.data_dir + "/balls/caffeine.cin", MedialInputKind::Auto).complex,
-                          "Exact burning time on the union-of-balls axis of data/balls/caffeine.cin", {1.0, -1.2, 0.9}),
+  return {real_axis_panel(ctx, "fig_exact_bt_balls.svg", union_of_balls_axis(random_ball_set(24, 2024)).complex,
+                          "Exact burning time on the union-of-balls axis of 24 random balls (random_ball_set(24, "
+                          "seed 2024), as in bench_burn3d_exact --axes)",
+                          {1.0, -1.2, 0.9}),
           real_axis_panel(ctx, "fig_exact_bt_mesh.svg", read_ma(ctx.data_dir + "/ma/real/tripod-s2.ma"),
                           "Exact burning time on the mesh axis data/ma/real/tripod-s2.ma (built from data/meshes/tripod.off)",
                           {1.0, -1.4, 1.0})};
