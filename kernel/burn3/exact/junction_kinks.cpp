@@ -31,23 +31,28 @@ Interval time_on(const Unfolding& u, const WindowStore& s, std::uint32_t edge, s
 }
 
 // A certified bracket [l1, l2] around `at` where sign_at changes sign (each sign certified,
-// or 0 for a proved zero at that end), narrowed by bisection to about 2^-50 of its width.
+// or 0 for a proved zero at that end), narrowed by bisection until its ends are neighbouring
+// doubles. The ends are doubles (exact as rationals: no gcd to normalise a rational midpoint),
+// and the bisection stops there because callers keep the parameter as a double enclosure
+// (rational_enclosure): narrowing further only cost certified comparisons at points so
+// close to the crossing that the double filter fails and the exact or Arb stage decides.
 struct Bracket {
   mpq_class lo, hi;
   bool ok = false;
 };
 Bracket bracket(const std::function<int(const mpq_class&)>& sign_at, double at) {
   for (const double delta : {1e-6, 1e-9, 1e-3, 1e-12}) {
-    mpq_class lo(std::max(0.0, at - delta)), hi(std::min(1.0, at + delta));
-    const int slo = sign_at(lo), shi = sign_at(hi);
+    double lo = std::max(0.0, at - delta), hi = std::min(1.0, at + delta);
+    const int slo = sign_at(mpq_class(lo)), shi = sign_at(mpq_class(hi));
     if (slo == kUndecided || shi == kUndecided || slo == 0 || shi == 0 || slo == shi) continue;
-    for (int i = 0; i < 50; ++i) {
-      const mpq_class mid((lo + hi) / 2);
-      const int sm = sign_at(mid);
+    for (;;) {
+      const double mid = 0.5 * (lo + hi);
+      if (!(lo < mid && mid < hi)) break;
+      const int sm = sign_at(mpq_class(mid));
       if (sm == kUndecided || sm == 0) break;
       (sm == slo ? lo : hi) = mid;
     }
-    return {lo, hi, true};
+    return {mpq_class(lo), mpq_class(hi), true};
   }
   return {};
 }
