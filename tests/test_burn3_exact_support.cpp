@@ -53,6 +53,13 @@ Vec3d to_vec(const ExactPoint3& p) { return {p.x.get_d(), p.y.get_d(), p.z.get_d
 
 double distance3(const Vec3d& a, const Vec3d& b) { return std::hypot(a[0] - b[0], a[1] - b[1], a[2] - b[2]); }
 
+BorderBurn::BorderBurn(const RawComplex& raw) : mc(built(raw)) {
+  eb = std::make_unique<ExactBurning>(mc);
+  eb->add_border_ignition();
+  eb->run();
+  points = junction_points(*eb);
+}
+
 // x -> s R x + t with R = the rotation by the Pythagorean angle (3/5, 4/5) about y, then
 // by (5/13, 12/13) about z: rational, orthogonal.
 ExactPoint3 motion(const ExactPoint3& p, const mpq_class& s, const ExactPoint3& t) {

@@ -2,10 +2,12 @@
 // sampling inside triangles, and a run of the exact engine.
 #pragma once
 
+#include <memory>
 #include <random>
 #include <vector>
 
 #include "burn3/exact/exact_burning.h"
+#include "burn3/exact/junction_points.h"
 #include "complex3/complex_builder.h"
 #include "test_complex3_support.h"
 
@@ -27,6 +29,15 @@ double distance3(const Vec3d& a, const Vec3d& b);
 
 // The enclosure's width, and whether it contains x.
 inline bool encloses(const Interval& i, double x, double slack = 0.0) { return i.lo - slack <= x && x <= i.hi + slack; }
+
+// A complex burned by the exact engine from its border rules, with the junction points of
+// its singular edges (junction_points.h).
+struct BorderBurn {
+  MedialComplex mc;
+  std::unique_ptr<ExactBurning> eb;
+  JunctionPoints points;
+  explicit BorderBurn(const RawComplex& raw);
+};
 
 // x -> s R x + t with R = the rotation by the Pythagorean angle (3/5, 4/5) about y, then by
 // (5/13, 12/13) about z: rational and orthogonal.

@@ -22,18 +22,6 @@ using namespace grassfire::testing;
 
 namespace {
 
-struct Run {
-  MedialComplex mc;
-  std::unique_ptr<ExactBurning> eb;
-  JunctionPoints points;
-  explicit Run(const RawComplex& raw) : mc(built(raw)) {
-    eb = std::make_unique<ExactBurning>(mc);
-    eb->add_border_ignition();
-    eb->run();
-    points = junction_points(*eb);
-  }
-};
-
 // The triangles moved sheet by sheet (each sheet's triangles a block, the sheets in reverse
 // order): the order of the sheets around every singular edge changes.
 RawComplex sheets_reversed(const RawComplex& raw, std::vector<std::uint32_t>* new_triangle) {
@@ -59,8 +47,8 @@ std::vector<double> sorted_bt(const std::vector<JunctionPoint>& p) {
 }
 
 // BT of b at the image of every sample point of a, against s times BT of a.
-int compare(Run& a, Run& b, const std::vector<std::uint32_t>& new_triangle, const mpq_class& s, const ExactPoint3& t,
-            bool move, std::mt19937& rng) {
+int compare(BorderBurn& a, BorderBurn& b, const std::vector<std::uint32_t>& new_triangle, const mpq_class& s,
+            const ExactPoint3& t, bool move, std::mt19937& rng) {
   int exact_pairs = 0;
   for (std::uint32_t k = 0; k < a.mc.triangle_count(); ++k)
     for (const ExactPoint3& x : sample_triangle(a.mc, k, 2, rng)) {
@@ -118,11 +106,11 @@ std::vector<RawComplex> complexes_with_singular_edges() {
 TEST_CASE("junction rule: BT is invariant under renumbering and reordering sheets", "[exact3][junction][metamorphic]") {
   std::mt19937 rng(43);
   for (const RawComplex& raw : complexes_with_singular_edges()) {
-    Run a(raw);
+    BorderBurn a(raw);
     REQUIRE(a.mc.count(EdgeStratum::Singular) > 0);
     CHECK(a.eb->certification().uncertified == 0);
     std::vector<std::uint32_t> tperm, vperm;
-    Run b(shuffled(raw, rng, &tperm, &vperm));
+    BorderBurn b(shuffled(raw, rng, &tperm, &vperm));
     compare(a, b, tperm, 1, {}, false, rng);
     // Vertex values (singular curves included) follow their vertices.
     const std::vector<Interval> va = a.eb->vertex_burn_times(), vb = b.eb->vertex_burn_times();
@@ -131,7 +119,7 @@ TEST_CASE("junction rule: BT is invariant under renumbering and reordering sheet
       CHECK(std::abs(va[v].mid() - vb[vperm[v]].mid()) <= 1e-9 * (1 + std::abs(va[v].mid())));
     }
     std::vector<std::uint32_t> sperm;
-    Run c(sheets_reversed(raw, &sperm));
+    BorderBurn c(sheets_reversed(raw, &sperm));
     compare(a, c, sperm, 1, {}, false, rng);
   }
 }
@@ -140,12 +128,12 @@ TEST_CASE("junction rule: BT moves with rational rigid motions and scales exactl
   std::mt19937 rng(47);
   int exact_pairs = 0;
   for (const RawComplex& raw : complexes_with_singular_edges()) {
-    Run a(raw);
+    BorderBurn a(raw);
     std::vector<std::uint32_t> same(a.mc.triangle_count());
     for (std::uint32_t t = 0; t < same.size(); ++t) same[t] = t;
     const ExactPoint3 t{mpq_class(1, 3), -2, mpq_class(5, 7)};
     for (const mpq_class& s : {mpq_class(1), mpq_class(3, 2), mpq_class(2, 7)}) {
-      Run b(moved(raw, s, t));
+      BorderBurn b(moved(raw, s, t));
       exact_pairs += compare(a, b, same, s, t, true, rng);
     }
   }

@@ -35,17 +35,6 @@ ExactSum q_plus_r_sqrt2(const mpq_class& q, const mpq_class& r) {
   return s;
 }
 
-struct Burned {
-  MedialComplex mc;
-  std::unique_ptr<ExactBurning> eb;
-  JunctionPoints points;
-  explicit Burned(const RawComplex& raw) : mc(built(raw)) {
-    eb = std::make_unique<ExactBurning>(mc);
-    eb->add_border_ignition();
-    eb->run();
-    points = junction_points(*eb);
-  }
-};
 
 // p's exact coordinates and BT equal the closed forms (proved where exact, else inside
 // the certified error).
@@ -71,7 +60,7 @@ TEST_CASE("board and fin: the kink at 2 + sqrt2 and the quench at 7/2 + 3/2 sqrt
   o.extent = 6;
   for (int g : {1, 2}) {
     o.cells_per_unit = g;
-    Burned b(board_fin(o));
+    BorderBurn b(board_fin(o));
     CAPTURE(g);
     CHECK(b.points.unclassified == 0);
     CHECK(b.points.merges.empty());
@@ -87,7 +76,7 @@ TEST_CASE("board and fin: the kink at 2 + sqrt2 and the quench at 7/2 + 3/2 sqrt
 }
 
 TEST_CASE("books: the spine's fronts from the bottom and the top quench at S/2", "[exact3][junction]") {
-  Burned b(book(BookOptions{3, {4, 4, 4}, 5, 1}));
+  BorderBurn b(book(BookOptions{3, {4, 4, 4}, 5, 1}));
   CHECK(b.points.unclassified == 0);
   CHECK(b.points.kinks.empty());
   CHECK(b.points.merges.empty());
@@ -96,7 +85,7 @@ TEST_CASE("books: the spine's fronts from the bottom and the top quench at S/2",
   // book:3 and the Y: the corners of min(z, S - z, T) lie at vertices (z = T, S - T), so no
   // edge switches inside.
   for (const BookOptions& o : {BookOptions{3, {}, 0, 2}, y_junction_options(2)}) {
-    Burned c(book(o));
+    BorderBurn c(book(o));
     CHECK(c.points.unclassified == 0);
     CHECK(c.points.kinks.size() + c.points.merges.size() + c.points.quenches.size() == 0);
   }
