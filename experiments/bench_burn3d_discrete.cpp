@@ -25,6 +25,7 @@
 #include "burn3/discrete_burning.h"
 #include "burn3/steiner_graph.h"
 #include "complex3/synthetic_complexes.h"
+#include "cli.h"
 
 using namespace grassfire;
 
@@ -106,9 +107,10 @@ void run_case(const Case& c, double h) {
   }
 }
 
-}  // namespace
+constexpr const char* kUsage =
+    "usage: bench_burn3d_discrete [--quick]\nthe discrete burning baseline on complexes of 10^3 .. 10^5 triangles at two Steiner spacings, against a plain multi-source Dijkstra on the same Steiner graph (no link rule: what the junction bookkeeping costs).\n(CSV columns and details: the header of experiments/bench_burn3d_discrete.cpp)\n";
 
-int main(int argc, char** argv) {
+int run(int argc, char** argv) {
   const bool quick = argc > 1 && std::strcmp(argv[1], "--quick") == 0;
   std::vector<Case> cases;
   for (int g : quick ? std::vector<int>{1, 4} : std::vector<int>{1, 4, 13})
@@ -122,4 +124,10 @@ int main(int argc, char** argv) {
   for (const Case& c : cases)
     for (double h : {c.edge, c.edge / 2}) run_case(c, h);
   return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  return grassfire::experiments::guarded_main(argc, argv, "bench_burn3d_discrete", kUsage, run);
 }

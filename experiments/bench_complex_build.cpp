@@ -40,6 +40,7 @@
 #include "complex3/refined_mesh.h"
 #include "io/mesh_io.h"
 #include "peak_memory.h"
+#include "cli.h"
 
 using namespace grassfire;
 
@@ -99,9 +100,10 @@ std::vector<double> run(const RawComplex& raw, const std::vector<ExactPoint3>& q
   return out;
 }
 
-}  // namespace
+constexpr const char* kUsage =
+    "usage: bench_complex_build [--quick] [--faces N] [--baseline-faces N] [--queries Q] [--scan-queries S]\nbuilding, validating and locating on the exact MedialComplex of closed meshes of 10^3 .. 2 10^5 faces.\n(CSV columns and details: the header of experiments/bench_complex_build.cpp)\n";
 
-int main(int argc, char** argv) {
+int run(int argc, char** argv) {
   bool quick = false;
   std::size_t only = 0, baseline_faces = 50000, query_count = 10000, scan_queries = 200;
   for (int i = 1; i < argc; ++i) {
@@ -111,8 +113,7 @@ int main(int argc, char** argv) {
     else if (!std::strcmp(argv[i], "--queries") && i + 1 < argc) query_count = std::strtoul(argv[++i], nullptr, 10);
     else if (!std::strcmp(argv[i], "--scan-queries") && i + 1 < argc) scan_queries = std::strtoul(argv[++i], nullptr, 10);
     else {
-      std::fprintf(stderr, "usage: bench_complex_build [--quick] [--faces N] [--baseline-faces N] [--queries Q] "
-                           "[--scan-queries S]\n");
+      std::fputs(kUsage, stderr);
       return 2;
     }
   }
@@ -141,4 +142,10 @@ int main(int argc, char** argv) {
       }
     }
   return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  return grassfire::experiments::guarded_main(argc, argv, "bench_complex_build", kUsage, run);
 }

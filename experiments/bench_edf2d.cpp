@@ -28,6 +28,7 @@
 #include "peak_memory.h"
 #include "shapes/load_shape.h"
 #include "shapes/resample.h"
+#include "cli.h"
 
 using namespace grassfire;
 
@@ -74,9 +75,10 @@ std::vector<double> measure(const Shape2& shape, std::size_t n, int repeat) {
   return out;
 }
 
-}  // namespace
+constexpr const char* kUsage =
+    "usage: bench_edf2d [--shape SHAPE] [--repeat K] N1 N2 ...\nthe 2D pipeline against CGAL's Delaunay triangulation alone.\n(CSV columns and details: the header of experiments/bench_edf2d.cpp)\n";
 
-int main(int argc, char** argv) {
+int run(int argc, char** argv) {
   std::string shape_arg = std::string(GF_PROJECT_DATA) + "/shapes2d/elephant-1.json";
   int repeat = 1;
   std::vector<std::size_t> sizes;
@@ -86,10 +88,7 @@ int main(int argc, char** argv) {
       shape_arg = argv[++i];
     else if (a == "--repeat" && i + 1 < argc)
       repeat = std::max(1, std::atoi(argv[++i]));
-    else if (a == "--help" || a == "-h") {
-      std::printf("usage: bench_edf2d [--shape SHAPE] [--repeat K] N1 N2 ...\n");
-      return 0;
-    } else
+    else
       sizes.push_back(static_cast<std::size_t>(std::atoll(a.c_str())));
   }
   if (sizes.empty()) sizes = {10000, 100000, 1000000};
@@ -107,4 +106,10 @@ int main(int argc, char** argv) {
     std::fflush(stdout);
   }
   return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  return grassfire::experiments::guarded_main(argc, argv, "bench_edf2d", kUsage, run);
 }

@@ -29,6 +29,7 @@
 #include "io/cpu_clock.h"
 #include "io/mesh_io.h"
 #include "peak_memory.h"
+#include "cli.h"
 
 using namespace grassfire;
 
@@ -90,9 +91,10 @@ constexpr std::size_t kChecks = 25;  // the index of the mesh checks' seconds
 constexpr std::size_t kRounds = 26;  // the index of the round count; the rounds follow it
 constexpr std::size_t kPerRound = 8;
 
-}  // namespace
+constexpr const char* kUsage =
+    "usage: bench_mesh_axis [--repeat K] [--samples S] [--angle DEG] [--min-growth G] [--complex] MESH...\nthe medial axis of closed meshes against CGAL's Delaunay triangulation alone on the same sample points.\n(CSV columns and details: the header of experiments/bench_mesh_axis.cpp)\n";
 
-int main(int argc, char** argv) {
+int run(int argc, char** argv) {
   int repeat = 1;
   bool complex = false;
   MeshAxisOptions options;
@@ -107,7 +109,7 @@ int main(int argc, char** argv) {
     else meshes.push_back(a);
   }
   if (meshes.empty() || repeat < 1 || !(options.samples_per_edge > 0)) {
-    std::fprintf(stderr, "usage: bench_mesh_axis [--repeat K] [--samples S] [--angle DEG] [--min-growth G] [--complex] MESH...\n");
+    std::fputs(kUsage, stderr);
     return 2;
   }
   std::printf("mesh,vertices,samples,delaunay_s,axis_s,ratio,peak_mem_mb,betti_solid,betti_axis,faces,refinements,"
@@ -138,4 +140,10 @@ int main(int argc, char** argv) {
     std::fflush(stdout);
   }
   return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  return grassfire::experiments::guarded_main(argc, argv, "bench_mesh_axis", kUsage, run);
 }

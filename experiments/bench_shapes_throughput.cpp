@@ -47,6 +47,7 @@
 #include "pipeline/edf2d.h"
 #include "shapes/load_shape.h"
 #include "shard.h"
+#include "cli.h"
 
 using namespace grassfire;
 
@@ -190,13 +191,14 @@ Stats stats(const std::vector<Row>& rows, double Row::*time, std::string Row::*e
   return s;
 }
 
-}  // namespace
+constexpr const char* kUsage =
+    "usage: bench_shapes_throughput FOLDER [OUT] [--shard I/N] [--progress|--quiet]\nthe whole 2D pipeline over every shape of a folder: the exact polygon axis with EDF, EMA and the measures, and the sampled pipeline at 2000 samples.\n(CSV columns and details: the header of experiments/bench_shapes_throughput.cpp)\n";
 
-int main(int argc, char** argv) {
+int run(int argc, char** argv) {
   const experiments::Shard shard = experiments::take_shard(argc, argv);
   take_verbosity_flags(argc, argv);
   if (argc < 2) {
-    std::fprintf(stderr, "usage: bench_shapes_throughput FOLDER [OUT]\n");
+    std::fputs(kUsage, stderr);
     return 2;
   }
   const std::string out = argc > 2 ? argv[2] : ".";
@@ -270,4 +272,10 @@ int main(int argc, char** argv) {
     if (notes_enabled()) std::fprintf(stderr, "%s%s\n", buf, reasons.c_str());
   }
   return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  return grassfire::experiments::guarded_main(argc, argv, "bench_shapes_throughput", kUsage, run);
 }

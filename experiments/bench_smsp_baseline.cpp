@@ -27,6 +27,7 @@
 #include "complex3/refined_mesh.h"
 #include "io/mesh_io.h"
 #include "peak_memory.h"
+#include "cli.h"
 
 using namespace grassfire;
 
@@ -39,7 +40,7 @@ std::vector<MeshPoint> source_points(const TriangleMesh3& m) {
   return {{0, {0.2, 0.3, 0.5}}, {f / 3, {0.2, 0.3, 0.5}}, {2 * f / 3, {0.2, 0.3, 0.5}}};
 }
 
-MeshPoint at_vertex(const TriangleMesh3& m, const std::vector<std::pair<std::uint32_t, int>>& corner, std::uint32_t v) {
+MeshPoint at_vertex(const TriangleMesh3& /*mesh*/, const std::vector<std::pair<std::uint32_t, int>>& corner, std::uint32_t v) {
   MeshPoint p{corner[v].first, {0, 0, 0}};
   p.barycentric[corner[v].second] = 1;
   return p;
@@ -92,9 +93,10 @@ double mean_edge_length(const TriangleMesh3& m) {
   return sum / (3.0 * m.triangles.size());
 }
 
-}  // namespace
+constexpr const char* kUsage =
+    "usage: bench_smsp_baseline [--quick]\nthe peers of the exact engine on closed meshes of 10^3 .. 10^5 faces: CGAL Surface_mesh_shortest_path (Epick, burn3/geodesic_smsp.h) and the discrete baseline with point sources (burn3/discrete_burning.h), on the same meshes.\n(CSV columns and details: the header of experiments/bench_smsp_baseline.cpp)\n";
 
-int main(int argc, char** argv) {
+int run(int argc, char** argv) {
   const bool quick = argc > 1 && !std::strcmp(argv[1], "--quick");
   std::printf("mesh,faces,smsp_s,smsp_peak_mb,spacing,discrete_s,burn_s,discrete_peak_mb,gap_min,gap_mean,gap_max\n");
   for (const char* name : {"cube.off", "tripod.off"})
@@ -114,4 +116,10 @@ int main(int argc, char** argv) {
       std::fflush(stdout);
     }
   return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  return grassfire::experiments::guarded_main(argc, argv, "bench_smsp_baseline", kUsage, run);
 }

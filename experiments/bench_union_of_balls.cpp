@@ -18,6 +18,7 @@
 #include "complex3/builders/union_of_balls_axis.h"
 #include "io/cpu_clock.h"
 #include "peak_memory.h"
+#include "cli.h"
 
 using namespace grassfire;
 
@@ -61,9 +62,10 @@ std::vector<double> measure(std::size_t n) {
   return v;
 }
 
-}  // namespace
+constexpr const char* kUsage =
+    "usage: bench_union_of_balls [N1 N2 ...]   (default 100 1000 10000)\nthe exact medial axis of a union of balls against CGAL's Regular_triangulation_3 construction alone on the same balls.\n(CSV columns and details: the header of experiments/bench_union_of_balls.cpp)\n";
 
-int main(int argc, char** argv) {
+int run(int argc, char** argv) {
   std::vector<std::size_t> sizes;
   for (int i = 1; i < argc; ++i) sizes.push_back(static_cast<std::size_t>(std::atoll(argv[i])));
   if (sizes.empty()) sizes = {100, 1000, 10000};
@@ -83,4 +85,10 @@ int main(int argc, char** argv) {
     std::fflush(stdout);
   }
   return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  return grassfire::experiments::guarded_main(argc, argv, "bench_union_of_balls", kUsage, run);
 }

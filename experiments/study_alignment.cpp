@@ -31,6 +31,7 @@
 #include "shapes/load_shape.h"
 #include "shapes/validate_shape.h"
 #include "shard.h"
+#include "cli.h"
 
 using namespace grassfire;
 
@@ -72,9 +73,10 @@ std::string fmt(const std::optional<Point2>& p) {
   return buf;
 }
 
-}  // namespace
+constexpr const char* kUsage =
+    "usage: study_alignment SHAPES_DIR [OUT] [--class NAME] [--shard I/N] [--progress|--quiet]\ntranslational alignment of the human figures of the `children` class by centroid, bounding-box centre, EMA and PR maximum (3.5.2, Fig. 3.8).\n(CSV columns and details: the header of experiments/study_alignment.cpp)\n";
 
-int main(int argc, char** argv) {
+int run(int argc, char** argv) {
   const experiments::Shard shard = experiments::take_shard(argc, argv);
   take_verbosity_flags(argc, argv);
   std::string dir, out = ".", cls = "children";
@@ -88,7 +90,7 @@ int main(int argc, char** argv) {
       out = a;
   }
   if (dir.empty()) {
-    std::fprintf(stderr, "usage: study_alignment SHAPES_DIR [OUT] [--class NAME] [--shard I/N] [--progress|--quiet]\n");
+    std::fputs(kUsage, stderr);
     return 2;
   }
   std::vector<Entry> shapes;
@@ -178,4 +180,10 @@ int main(int argc, char** argv) {
   }
   plot::save(p, out + "/alignment_" + cls + "_iou.svg");
   return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  return grassfire::experiments::guarded_main(argc, argv, "study_alignment", kUsage, run);
 }

@@ -24,6 +24,7 @@
 #include "io/progress.h"
 #include "io/render3d.h"
 #include "shard.h"
+#include "cli.h"
 
 using namespace grassfire;
 
@@ -125,9 +126,10 @@ void write_summary(const std::vector<Row>& rows, const std::string& path) {
   }
 }
 
-}  // namespace
+constexpr const char* kUsage =
+    "usage: study_board_fin_convergence [OUT] [--quick] [--shard I/N] [--progress|--quiet]\nthe discrete baseline against the closed form on the board and fin (4.1.2, 4.2.1; DESIGN.md 5, reference case 1) as the Steiner spacing h halves.\n(CSV columns and details: the header of experiments/study_board_fin_convergence.cpp)\n";
 
-int main(int argc, char** argv) {
+int run(int argc, char** argv) {
   const experiments::Shard shard = experiments::take_shard(argc, argv);
   take_verbosity_flags(argc, argv);
   std::string out = ".";
@@ -181,4 +183,10 @@ int main(int argc, char** argv) {
   write_summary(rows, out + "/board_fin_convergence_summary.csv");
   plot(rows, out + "/board_fin_convergence.svg");
   return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  return grassfire::experiments::guarded_main(argc, argv, "study_board_fin_convergence", kUsage, run);
 }

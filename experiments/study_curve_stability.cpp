@@ -52,6 +52,7 @@
 #include "io/progress.h"
 #include "plot_svg.h"
 #include "shard.h"
+#include "cli.h"
 
 using namespace grassfire;
 
@@ -100,13 +101,14 @@ double median(std::vector<double> v) {
   return v.size() % 2 ? v[v.size() / 2] : (v[v.size() / 2 - 1] + v[v.size() / 2]) / 2;
 }
 
-}  // namespace
+constexpr const char* kUsage =
+    "usage: study_curve_stability MESH_DIR [OUT] [--quick] [--seeds K] [--max-samples N] [--shard I/N] [--progress|--quiet]\nhow far the medial curves move when a mesh's surface is perturbed, and whether their topology is kept (5.1.3 for the lower-dimensional forms).\n(CSV columns and details: the header of experiments/study_curve_stability.cpp)\n";
 
-int main(int argc, char** argv) {
+int run(int argc, char** argv) {
   const experiments::Shard shard = experiments::take_shard(argc, argv);
   take_verbosity_flags(argc, argv);
   if (argc < 2) {
-    std::fprintf(stderr, "usage: study_curve_stability MESH_DIR [OUT] [--quick] [--seeds K] [--max-samples N] [--shard I/N] [--progress|--quiet]\n");
+    std::fputs(kUsage, stderr);
     return 2;
   }
   const std::string dir = argv[1];
@@ -220,4 +222,10 @@ int main(int argc, char** argv) {
   plot::save(p, out + "/curve_stability.svg");
   note("wrote " + out + "/curve_stability.csv, curve_stability_summary.csv, curve_stability.svg");
   return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  return grassfire::experiments::guarded_main(argc, argv, "study_curve_stability", kUsage, run);
 }

@@ -26,6 +26,7 @@
 #include "medial2/polygon_axis_validate.h"
 #include "shapes/load_shape.h"
 #include "shard.h"
+#include "cli.h"
 
 using namespace grassfire;
 
@@ -72,13 +73,14 @@ std::string run_shape(const std::filesystem::path& f, bool validate, Totals& tot
   return row;
 }
 
-}  // namespace
+constexpr const char* kUsage =
+    "usage: study_exact_axis_throughput FOLDER [--validate] [--shard I/N] [--progress|--quiet]\nthe exact polygon axis plus the extended grassfire on every shape of a folder (e.g. the 979 shapes of the 2D Shape Structure dataset).\n(CSV columns and details: the header of experiments/study_exact_axis_throughput.cpp)\n";
 
-int main(int argc, char** argv) {
+int run(int argc, char** argv) {
   const experiments::Shard shard = experiments::take_shard(argc, argv);
   take_verbosity_flags(argc, argv);
   if (argc < 2) {
-    std::fprintf(stderr, "usage: study_exact_axis_throughput FOLDER [--validate] [--shard I/N] [--progress|--quiet]\n");
+    std::fputs(kUsage, stderr);
     return 2;
   }
   const bool validate = argc > 2 && std::string(argv[2]) == "--validate";
@@ -112,4 +114,10 @@ int main(int argc, char** argv) {
                  files.size(), totals.failures, totals.seconds, (unsigned long long)totals.contractions,
                  (unsigned long long)totals.ties, (unsigned long long)totals.shapes_with_any);
   return totals.failures == 0 ? 0 : 1;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  return grassfire::experiments::guarded_main(argc, argv, "study_exact_axis_throughput", kUsage, run);
 }

@@ -52,6 +52,7 @@
 #include "io/mesh_io.h"
 #include "io/progress.h"
 #include "mesh_axis_sampling_plot.h"
+#include "cli.h"
 
 using namespace grassfire;
 
@@ -147,12 +148,13 @@ std::vector<Input> read_inputs(const std::string& dir) {
   return inputs;
 }
 
-}  // namespace
+constexpr const char* kUsage =
+    "usage: study_mesh_axis_sampling MESH_DIR [OUT] [--quick] [--densities S1,S2,...] [--max-samples N]\nthe mesh axis (complex3/builders/mesh_axis.h) against the sampling density: how far it is from the true axis, and whether its topology is the solid's (issue 10, item 7).\n(CSV columns and details: the header of experiments/study_mesh_axis_sampling.cpp)\n";
 
-int main(int argc, char** argv) {
+int run(int argc, char** argv) {
   take_verbosity_flags(argc, argv);
   if (argc < 2) {
-    std::fprintf(stderr, "usage: study_mesh_axis_sampling MESH_DIR [OUT] [--quick] [--densities S1,S2,...] [--max-samples N]\n");
+    std::fputs(kUsage, stderr);
     return 2;
   }
   std::string out = "experiments/results";
@@ -248,4 +250,10 @@ int main(int argc, char** argv) {
   progress.done();
   note("wrote " + out + "/mesh_axis_sampling.csv and mesh_axis_sampling.svg");
   return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  return grassfire::experiments::guarded_main(argc, argv, "study_mesh_axis_sampling", kUsage, run);
 }

@@ -36,6 +36,7 @@
 #include "shapes/load_shape.h"
 #include "shapes/resample.h"
 #include "shard.h"
+#include "cli.h"
 
 using namespace grassfire;
 
@@ -192,9 +193,10 @@ void write_plot(const std::vector<Row>& rows, const std::string& path) {
   plot::save(p, path);
 }
 
-}  // namespace
+constexpr const char* kUsage =
+    "usage: study_sampling_convergence SHAPES_DIR [OUT] [--quick] [--shard I/N] [--progress|--quiet]\ndoes the EDF on the sampled Voronoi axis converge to the EDF on the exact polygon axis as the boundary sampling densifies (issue 4, item 3)?\n(CSV columns and details: the header of experiments/study_sampling_convergence.cpp)\n";
 
-int main(int argc, char** argv) {
+int run(int argc, char** argv) {
   const experiments::Shard shard = experiments::take_shard(argc, argv);
   take_verbosity_flags(argc, argv);
   std::string dir, out = ".";
@@ -209,7 +211,7 @@ int main(int argc, char** argv) {
       out = a;
   }
   if (dir.empty()) {
-    std::fprintf(stderr, "usage: study_sampling_convergence SHAPES_DIR [OUT] [--quick] [--shard I/N] [--progress|--quiet]\n");
+    std::fputs(kUsage, stderr);
     return 2;
   }
   const std::vector<std::size_t> levels =
@@ -249,4 +251,10 @@ int main(int argc, char** argv) {
   note(std::to_string(rows.size()) + " rows, " + std::to_string(failures) + " failures; wrote " + out +
        "/sampling_convergence{.csv,_summary.csv,.svg}");
   return failures ? 1 : 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  return grassfire::experiments::guarded_main(argc, argv, "study_sampling_convergence", kUsage, run);
 }

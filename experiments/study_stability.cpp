@@ -41,6 +41,7 @@
 #include "shapes/load_shape.h"
 #include "shapes/validate_shape.h"
 #include "shard.h"
+#include "cli.h"
 
 using namespace grassfire;
 
@@ -196,9 +197,10 @@ std::vector<std::string> shape_args(const std::string& dir) {
   return keys;
 }
 
-}  // namespace
+constexpr const char* kUsage =
+    "usage: study_stability SHAPES_DIR [OUT] [--quick] [--shard I/N] [--progress|--quiet]\nhow far the EMA, the EDF and the PR maximum move when the boundary is perturbed (3.4, Fig. 3.5; 5.1.3, Fig. 5.3).\n(CSV columns and details: the header of experiments/study_stability.cpp)\n";
 
-int main(int argc, char** argv) {
+int run(int argc, char** argv) {
   const experiments::Shard shard = experiments::take_shard(argc, argv);
   take_verbosity_flags(argc, argv);
   std::string dir, out = ".";
@@ -213,7 +215,7 @@ int main(int argc, char** argv) {
       out = a;
   }
   if (dir.empty()) {
-    std::fprintf(stderr, "usage: study_stability SHAPES_DIR [OUT] [--quick] [--shard I/N] [--progress|--quiet]\n");
+    std::fputs(kUsage, stderr);
     return 2;
   }
   std::vector<std::string> inputs = {"square"};  // "square": the unit square, else a shape file
@@ -271,4 +273,10 @@ int main(int argc, char** argv) {
   write_plot(runs, &Run::pr_drift, "PR maximum drift", out + "/stability_pr.svg");
   note(std::to_string(runs.size()) + " runs, " + std::to_string(failures) + " failed (see the error column)");
   return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  return grassfire::experiments::guarded_main(argc, argv, "study_stability", kUsage, run);
 }
