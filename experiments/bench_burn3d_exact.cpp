@@ -63,6 +63,7 @@
 #include "complex3/point_location.h"
 #include "complex3/refined_mesh.h"
 #include "io/mesh_io.h"
+#include "cli.h"
 #include "peak_memory.h"
 
 using namespace grassfire;
@@ -227,9 +228,10 @@ int bench_axes(bool quick, const std::string& only) {
   return failures == 0 ? 0 : 1;
 }
 
-}  // namespace
+constexpr const char* kUsage =
+    "usage: bench_burn3d_exact [--max-faces N] [--mesh NAME] | --axes [--quick] [--axis NAME]\nthe exact burning engine against CGAL's Surface_mesh_shortest_path on Loop-refined closed meshes with three point sources; with --axes, against the discrete baseline at its 1% spacing on medial axes burned by Definition 9 (mesh axes, 24 random balls, joint.ma with a 300 s limit).\n(CSV columns and details: the header of experiments/bench_burn3d_exact.cpp)\n";
 
-int main(int argc, char** argv) {
+int run(int argc, char** argv) {
   for (int i = 1; i < argc; ++i)
     if (!std::strcmp(argv[i], "--axes")) {
       bool quick = false;
@@ -271,4 +273,10 @@ int main(int argc, char** argv) {
   }
   // A disagreement with CGAL beyond double precision, or an uncertified decision, fails the run.
   return failures == 0 ? 0 : 1;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  return grassfire::experiments::guarded_main(argc, argv, "bench_burn3d_exact", kUsage, run);
 }
