@@ -165,7 +165,7 @@ std::uint32_t WindowPropagation::realising_record(std::uint32_t edge, const std:
         c = static_cast<int>((*it)[2]) - 2;
       } else {
         if (!p) p = edge_point3(edge, at);
-        const Target x{kNoIndex, &*p};
+        const Target x{kNoIndex, &*p, cert_.point_key(edge, at)};
         c = cert_.compare_times(records_[recs[a]].window, x, records_[recs[b]].window, x);
         staged.push_back({a, b, static_cast<std::size_t>(c + 2)});
       }

@@ -321,7 +321,7 @@ KinkParameter ray_parameter(const Unfolding& u, const WindowStore& s, Certifier&
   const Bracket br = bracket(
       [&](const mpq_class& l) {
         const ExactPoint3 p = point_on(mc, edge, l);
-        return cert.side(w, j, Target{kNoIndex, &p});
+        return cert.side_if_certified(w, j, Target{kNoIndex, &p});  // undecided: the bisection stops
       },
       at);
   k.certified = br.ok;
