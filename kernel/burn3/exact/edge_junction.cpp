@@ -308,6 +308,7 @@ std::uint32_t WindowPropagation::break_point(std::uint32_t edge, const Break& b)
     const std::uint32_t rb = static_cast<std::uint32_t>((b.id >> 1) & 0x1fffffff);
     const KinkParameter k = kink_parameter(u_, s_, cert_, edge, records_[ra].window, records_[rb].window, b.at);
     ep.lambda = k.lambda;
+    if (k.bracket) ep.bracketed = true, ep.lo = (*k.bracket)[0], ep.hi = (*k.bracket)[1];
     if (k.exact) {
       s_.exact_times.push_back(*k.exact);
       ep.exact = static_cast<std::int32_t>(s_.exact_times.size() - 1);
@@ -318,6 +319,7 @@ std::uint32_t WindowPropagation::break_point(std::uint32_t edge, const Break& b)
     const int j = static_cast<int>(b.id & 1);
     const KinkParameter k = ray_parameter(u_, s_, cert_, edge, records_[r].window, records_[r].end[j].vertex, b.at);
     ep.lambda = k.lambda;
+    if (k.bracket) ep.bracketed = true, ep.lo = (*k.bracket)[0], ep.hi = (*k.bracket)[1];
     if (k.exact) {
       s_.exact_times.push_back(*k.exact);
       ep.exact = static_cast<std::int32_t>(s_.exact_times.size() - 1);

@@ -31,7 +31,10 @@ Interval time_on(const Unfolding& u, const WindowStore& s, std::uint32_t edge, s
 }
 
 // A certified bracket [l1, l2] around `at` where sign_at changes sign (each sign certified,
-// or 0 for a proved zero at that end), narrowed by bisection to about 2^-50 of its width.
+// or 0 for a proved zero at that end), narrowed by bisection to about 2^-100 of its width
+// (Arb decides there unless the compared values are themselves that uncertain: the bracket
+// becomes the kink's rational enclosure, which the kink's own source carries into its
+// windows' Arb evaluations; at 2^-50, joint.ma's kinks of kinks compounded to 1e-5).
 struct Bracket {
   mpq_class lo, hi;
   bool ok = false;
@@ -41,7 +44,7 @@ Bracket bracket(const std::function<int(const mpq_class&)>& sign_at, double at) 
     mpq_class lo(std::max(0.0, at - delta)), hi(std::min(1.0, at + delta));
     const int slo = sign_at(lo), shi = sign_at(hi);
     if (slo == kUndecided || shi == kUndecided || slo == 0 || shi == 0 || slo == shi) continue;
-    for (int i = 0; i < 50; ++i) {
+    for (int i = 0; i < 100; ++i) {
       const mpq_class mid((lo + hi) / 2);
       const int sm = sign_at(mid);
       if (sm == kUndecided || sm == 0) break;
@@ -260,6 +263,7 @@ KinkParameter kink_parameter(const Unfolding& u, const WindowStore& s, Certifier
   }
   k.certified = true;
   k.lambda = rational_enclosure(br.lo, br.hi);
+  k.bracket = std::array<mpq_class, 2>{br.lo, br.hi};
   const auto p = edge_time(u, s, cert, edge, wa);
   const auto q = p ? edge_time(u, s, cert, edge, wb) : std::nullopt;
   if (!p || !q) return k;
@@ -326,6 +330,7 @@ KinkParameter ray_parameter(const Unfolding& u, const WindowStore& s, Certifier&
       at);
   k.certified = br.ok;
   k.lambda = br.ok ? rational_enclosure(br.lo, br.hi) : Interval(at);
+  if (br.ok) k.bracket = std::array<mpq_class, 2>{br.lo, br.hi};
   return k;
 }
 

@@ -58,13 +58,27 @@ int ball_sign(const Ball& b) {
 
 }  // namespace
 
+// A keyed point's images are cached per frame (and precision): the junction rule evaluates
+// every record at one point (enclosing the rational point costs more than the comparison).
 DiscPoint Certifier::target_disc(std::uint32_t t, const Target& x) const {
+  if (x.point && x.key) {
+    const MemoKey k{u_.frame(t), x.key, 0};
+    if (const auto it = disc_cache_.find(k); it != disc_cache_.end()) return it->second;
+    if (disc_cache_.size() > 1'000'000) disc_cache_.clear();
+    return disc_cache_.emplace(k, u_.point_image(t, *x.point)).first->second;
+  }
   if (x.point) return u_.point_image(t, *x.point);
   if (is_edge_point(x.vertex)) return edge_point_image(u_, s_, t, x.vertex & ~kEdgePointBound);
   return u_.vertex_image(t, x.vertex);
 }
 
 BallVec2 Certifier::target_ball(std::uint32_t t, const Target& x) const {
+  if (x.point && x.key) {
+    const MemoKey k{u_.frame(t), x.key, static_cast<std::uint64_t>(BallPrecision::bits())};
+    if (const auto it = ball_cache_.find(k); it != ball_cache_.end()) return it->second;
+    if (ball_cache_.size() > 1'000'000) ball_cache_.clear();
+    return ball_cache_.emplace(k, u_.point_ball(t, *x.point)).first->second;
+  }
   if (x.point) return u_.point_ball(t, *x.point);
   if (is_edge_point(x.vertex)) return edge_point_ball(u_, s_, t, x.vertex & ~kEdgePointBound);
   return u_.vertex_ball(t, x.vertex);

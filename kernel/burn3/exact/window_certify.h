@@ -146,6 +146,8 @@ class Certifier {
   std::unordered_map<MemoKey, std::uint32_t, MemoHash> ids_;  // front, expression and point ids
   std::vector<std::uint32_t> front_ids_, expr_ids_;           // per window / TimeExpr (+1; 0: none yet)
   std::unordered_map<MemoKey, int, MemoHash> decided_;
+  mutable std::unordered_map<MemoKey, DiscPoint, MemoHash> disc_cache_;  // (frame, point key)
+  mutable std::unordered_map<MemoKey, BallVec2, MemoHash> ball_cache_;   // (frame, point key, bits)
   std::unordered_map<long, std::unordered_map<std::uint32_t, Ball>> time_memo_;  // bits -> TimeExpr -> ball
   std::unordered_map<std::uint32_t, std::unique_ptr<ExactWindow>> exact_memo_;
   std::unordered_map<std::uint32_t, std::unique_ptr<ExactSum>> exact_time_memo_;

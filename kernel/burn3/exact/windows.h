@@ -48,6 +48,10 @@ struct EdgePoint {
   std::uint32_t edge = kNoIndex;
   Interval lambda;
   std::int32_t exact = -1;
+  // Without an exact value: the certified bracket lo <= lambda <= hi with rational ends
+  // (narrower than `lambda`, a double enclosure), for the Arb stage; none when !bracketed.
+  bool bracketed = false;
+  mpq_class lo, hi;
 };
 // A wedge bound or a TimeExpr::WindowAt target with this bit set names edge_points[id & ~bit]
 // instead of a vertex.
