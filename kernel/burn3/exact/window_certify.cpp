@@ -571,7 +571,7 @@ std::uint32_t Certifier::edge_ray_origin(std::uint32_t w, int j) const {
   return kNoIndex;
 }
 
-int Certifier::side_if_certified(std::uint32_t w, int j, const Target& x) {
+int Certifier::side_if_certified(std::uint32_t w, int j, const Target& x, bool arb_first) {
   trim_memos();
   const Window& win = s_.windows[w];
   const int s = approx_side(win, win.image[j], target_disc(win.triangle, x)).sign();
@@ -584,6 +584,17 @@ int Certifier::side_if_certified(std::uint32_t w, int j, const Target& x) {
     return 0;
   }
   const std::uint32_t along = edge_ray_origin(w, j);
+  auto arb = [&] {
+    return escalate(max_bits_, [&] {
+      const WindowBall b = evaluate(w, false, along);
+      const std::uint32_t t = win.triangle;
+      const BallVec2 p = target_ball(t, x);
+      if (b.plane) return ball_sign(ball_cross(b.source, ball_sub(p, b.image[j])));
+      return ball_sign(ball_cross(ball_sub(b.image[j], b.source), ball_sub(p, b.source)));
+    });
+  };
+  if (arb_first)
+    if (const int a = arb(); a != kUndecided) return a;
   std::unique_ptr<ExactWindow> substitute = along == kNoIndex ? nullptr : build_exact_window(w, along);
   if (const ExactWindow* ew = substitute ? substitute.get() : exact_window(w)) {
     const int e = exact_side(*ew, j, x);
@@ -592,16 +603,10 @@ int Certifier::side_if_certified(std::uint32_t w, int j, const Target& x) {
       return e;
     }
   }
-  return escalate(max_bits_, [&] {
-    const WindowBall b = evaluate(w, false, along);
-    const std::uint32_t t = win.triangle;
-    const BallVec2 p = target_ball(t, x);
-    if (b.plane) return ball_sign(ball_cross(b.source, ball_sub(p, b.image[j])));
-    return ball_sign(ball_cross(ball_sub(b.image[j], b.source), ball_sub(p, b.source)));
-  });
+  return arb_first ? kUndecided : arb();
 }
 
-int Certifier::compare_times(std::uint32_t w1, const Target& x1, std::uint32_t w2, const Target& x2) {
+int Certifier::compare_times(std::uint32_t w1, const Target& x1, std::uint32_t w2, const Target& x2, bool arb_first) {
   trim_memos();
   const int s = certified_sign(time_interval(w1, x1) - time_interval(w2, x2));
   if (s != kUndecided) {
@@ -632,6 +637,9 @@ int Certifier::compare_times(std::uint32_t w1, const Target& x1, std::uint32_t w
     if (!keyed) return r;
     return r == kUndecided ? remember(key, r) : remember(key, flip * r) * flip;
   };
+  auto arb = [&] { return escalate(prune_bits_, [&] { return ball_sign(time_ball(w1, x1) - time_ball(w2, x2)); }); };
+  if (arb_first)
+    if (const int a = arb(); a != kUndecided) return done(a);
   if (exact_window(w1) && exact_window(w2)) {
     const auto t1 = exact_time(w1, x1), t2 = exact_time(w2, x2);
     if (t1 && t2) {
@@ -640,7 +648,7 @@ int Certifier::compare_times(std::uint32_t w1, const Target& x1, std::uint32_t w
       return done(e);
     }
   }
-  const int r = escalate(prune_bits_, [&] { return ball_sign(time_ball(w1, x1) - time_ball(w2, x2)); });
+  const int r = arb_first ? kUndecided : arb();
   if (r == kUndecided) ++counts.kept_undecided;
   return done(r);
 }

@@ -66,8 +66,10 @@ class Certifier {
   int side(std::uint32_t w, int j, const Target& x);
   // side() without its last stage: kUndecided (nothing counted) where no stage decides; for
   // callers that stop there instead of taking the point as collinear (certified bisections).
-  int side_if_certified(std::uint32_t w, int j, const Target& x);
-  int compare_times(std::uint32_t w1, const Target& x1, std::uint32_t w2, const Target& x2);
+  // arb_first: the Arb stage before the exact one (bisections: thousands of decisions near a
+  // point that Arb settles at once, where the exact sums of long rationals cost far more).
+  int side_if_certified(std::uint32_t w, int j, const Target& x, bool arb_first = false);
+  int compare_times(std::uint32_t w1, const Target& x1, std::uint32_t w2, const Target& x2, bool arb_first = false);
   int compare_directions(std::uint32_t w1, std::uint32_t w2, std::uint32_t v);
   // The identity of w's front (equal ids: the same source image and offset in the same
   // frame, as same_expression decides), and of a time expression (equal ids: one value).
