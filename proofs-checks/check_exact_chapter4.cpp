@@ -354,7 +354,8 @@ void run_instance(const CheckContext& ctx, const Instance3& in, CorpusRun& c) {
   if (in.mc.count(EdgeStratum::Singular) > kMaxSingularEdges) {
     ++c.refused;
     c.reason = "more than " + std::to_string(kMaxSingularEdges) +
-               " singular edges (the junction rule is not yet fast enough on them for this report)";
+               " singular edges (joint.ma: two singular points burn later than the discrete baseline there; README, "
+               "Exact 3D burning, Limitations)";
     return;
   }
   ExactBurning eb(in.mc);
