@@ -19,6 +19,7 @@
 #include "complex3/refined_mesh.h"
 #include "complex3/synthetic_complexes.h"
 #include "io/mesh_io.h"
+#include "test_burn3_exact_support.h"
 #include "test_complex3_support.h"
 #include "test_sheets_support.h"
 
@@ -173,15 +174,7 @@ TEST_CASE("the discrete baseline is an upper bound of the exact engine, convergi
   const std::vector<Interval> exact = eb.vertex_burn_times();
   double previous = 1e9, first = 0;
   for (double h : {0.1, 0.05, 0.025}) {
-    DiscreteBurningOptions o;
-    o.spacing = h;
-    o.sources = sources;
-    const DiscreteBurning d = burn_discrete(mc, o);
-    double worst = 0;
-    for (std::uint32_t v = 0; v < mc.vertex_count(); ++v) {
-      CHECK(d.vertex_bt[v] >= exact[v].lo - 1e-12);
-      worst = std::max(worst, d.vertex_bt[v] - exact[v].lo);
-    }
+    const double worst = testing::baseline_gap(mc, exact, h, sources);
     CAPTURE(h, worst);
     CHECK(worst <= previous);  // equal while h exceeds the edges (no Steiner points added)
     CHECK(worst <= h);

@@ -4,6 +4,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "burn3/discrete_burning.h"
+
 namespace grassfire::testing {
 
 RawComplex grid_sheet(int w, int h, int g, const std::vector<std::pair<int, int>>& holes, IgnitionRule rule) {
@@ -47,6 +49,21 @@ std::vector<ExactPoint3> sample_triangle(const MedialComplex& mc, std::uint32_t 
     r.push_back(triangle_point(mc, t, mpq_class(a, 64), mpq_class(b, 64)));
   }
   return r;
+}
+
+double baseline_gap(const MedialComplex& mc, const std::vector<Interval>& exact, double h,
+                    const std::vector<PointSource>& sources) {
+  DiscreteBurningOptions o;
+  o.spacing = h;
+  o.sources = sources;
+  const DiscreteBurning d = burn_discrete(mc, o);
+  double worst = 0.0;
+  for (std::uint32_t v = 0; v < mc.vertex_count(); ++v) {
+    CAPTURE(h, v);
+    CHECK(d.vertex_bt[v] >= exact[v].lo - 1e-12);
+    worst = std::max(worst, d.vertex_bt[v] - exact[v].lo);
+  }
+  return worst;
 }
 
 Vec3d to_vec(const ExactPoint3& p) { return {p.x.get_d(), p.y.get_d(), p.z.get_d()}; }

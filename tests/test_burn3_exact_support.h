@@ -8,6 +8,7 @@
 
 #include "burn3/exact/exact_burning.h"
 #include "burn3/exact/junction_points.h"
+#include "burn3/point_sources.h"
 #include "complex3/complex_builder.h"
 #include "test_complex3_support.h"
 
@@ -26,6 +27,11 @@ std::vector<ExactPoint3> sample_triangle(const MedialComplex& mc, std::uint32_t 
 
 Vec3d to_vec(const ExactPoint3& p);
 double distance3(const Vec3d& a, const Vec3d& b);
+
+// The discrete baseline at spacing h (with `sources`, and the border as the complex says)
+// checked to be an upper bound of the exact vertex values; returns its largest gap to them.
+double baseline_gap(const MedialComplex& mc, const std::vector<Interval>& exact, double h,
+                    const std::vector<PointSource>& sources = {});
 
 // The enclosure's width, and whether it contains x.
 inline bool encloses(const Interval& i, double x, double slack = 0.0) { return i.lo - slack <= x && x <= i.hi + slack; }

@@ -15,11 +15,15 @@
 // |R~ - R| |p~| + |p~ - p|. eR bounds the spectral norm of R~ - R (by its Frobenius norm),
 // eT the length of T~ - T; rounding of the two 3-term dot products is at most
 // gamma_3 (|r00 x| + |r01 y| + |t0|) per coordinate (Higham, gamma_n = n u / (1 - n u)).
-// Contract: finite inputs; the RigidMotion's bounds enclose an exact orthogonal motion.
+// Contract: the RigidMotion's bounds enclose an exact orthogonal motion. A point whose
+// midpoint or radius is not finite (an enclosure that overflowed, a division by an interval
+// holding 0, a motion with unbounded error) is `unknown()`: midpoint 0, radius +infinity,
+// so that every filter built on it fails and the caller's next stage decides (never NaN).
 // Complexity: O(1).
 #pragma once
 
 #include <cmath>
+#include <limits>
 
 #include "number/interval.h"
 
@@ -29,10 +33,16 @@ struct DiscPoint {
   double x = 0.0, y = 0.0;
   double r = 0.0;  // |exact - (x, y)| <= r
 
+  static DiscPoint unknown() { return {0.0, 0.0, std::numeric_limits<double>::infinity()}; }
+  // (x, y, r) when all three are finite, else unknown().
+  static DiscPoint checked(double x, double y, double r) {
+    return std::isfinite(x) && std::isfinite(y) && std::isfinite(r) ? DiscPoint{x, y, r} : unknown();
+  }
   static DiscPoint from_intervals(const Interval& ix, const Interval& iy) {
     const double rx = ix.radius(), ry = iy.radius();
-    return {ix.mid(), iy.mid(), round_up(std::sqrt(round_up(rx * rx + ry * ry)))};
+    return checked(ix.mid(), iy.mid(), round_up(std::sqrt(round_up(rx * rx + ry * ry))));
   }
+  bool known() const { return std::isfinite(r); }
   Interval ix() const { return {round_down(x - r), round_up(x + r)}; }
   Interval iy() const { return {round_down(y - r), round_up(y + r)}; }
   double norm() const { return std::sqrt(x * x + y * y); }
@@ -54,8 +64,7 @@ struct RigidMotion2 {
     q.y = r10 * p.x + r11 * p.y + t1;
     const double ex = gamma3 * (std::fabs(r00 * p.x) + std::fabs(r01 * p.y) + std::fabs(t0));
     const double ey = gamma3 * (std::fabs(r10 * p.x) + std::fabs(r11 * p.y) + std::fabs(t1));
-    q.r = grow(p.r + rot_error * p.norm() + trans_error + ex + ey);
-    return q;
+    return DiscPoint::checked(q.x, q.y, grow(p.r + rot_error * p.norm() + trans_error + ex + ey));
   }
   // A direction (no translation), for plane waves.
   DiscPoint apply_vector(const DiscPoint& p) const {
@@ -65,8 +74,7 @@ struct RigidMotion2 {
     q.y = r10 * p.x + r11 * p.y;
     const double ex = gamma2 * (std::fabs(r00 * p.x) + std::fabs(r01 * p.y));
     const double ey = gamma2 * (std::fabs(r10 * p.x) + std::fabs(r11 * p.y));
-    q.r = grow(p.r + rot_error * p.norm() + ex + ey);
-    return q;
+    return DiscPoint::checked(q.x, q.y, grow(p.r + rot_error * p.norm() + ex + ey));
   }
 
  private:

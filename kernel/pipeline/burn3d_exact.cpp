@@ -84,6 +84,7 @@ nlohmann::json certification_report(const CertificationCounts& c) {
           {"exact_equal", c.exact_equal},
           {"structural_equal", c.structural_equal},
           {"kept_undecided", c.kept_undecided},
+          {"memo", c.memo},
           {"uncertified", c.uncertified},
           {"max_bits", c.max_bits}};
 }

@@ -165,7 +165,7 @@ std::uint32_t WindowPropagation::realising_record(std::uint32_t edge, const std:
         c = static_cast<int>((*it)[2]) - 2;
       } else {
         if (!p) p = edge_point3(edge, at);
-        const Target x{kNoIndex, &*p};
+        const Target x{kNoIndex, &*p, cert_.point_key(edge, at)};
         c = cert_.compare_times(records_[recs[a]].window, x, records_[recs[b]].window, x);
         staged.push_back({a, b, static_cast<std::size_t>(c + 2)});
       }
@@ -291,6 +291,17 @@ void WindowPropagation::process_junction(std::uint32_t edge, double key) {
     if (right_gap && burned_at(p, p.hi)) edge_point_source(edge, p.hi, p.record, SweepEvent::Kind::StretchEnd);
     if (i + 1 < pieces.size() && pieces[i + 1].record != kNoIndex && (p.hi.id >> 60) != 0 && burned_at(p, p.hi))
       edge_point_source(edge, p.hi, p.record, SweepEvent::Kind::Kink);
+    // A piece ending at an end vertex of the edge: the edge's points next to the vertex burn
+    // at the piece's time there, which the vertex's own link rule may exceed (joint.ma: the
+    // edge (3, 188) next to vertex 3 at 0.3159, vertex 3 at 0.3404), and they are sources into
+    // every side: a point source at the vertex's position with that time (their limit),
+    // unless the vertex burned by then (its own emission dominates; equal keys: burns first).
+    for (const Break& b : {p.lo, p.hi}) {
+      if ((b.id >> 60) != 0) continue;
+      const std::uint32_t v = mc_.edge(edge).v[b.id & 1];
+      if (is_link_vertex(v) && link_burn_time(v) != kNoIndex) continue;
+      if (burned_at(p, b)) edge_point_source(edge, b, p.record, SweepEvent::Kind::StretchEnd);
+    }
   }
   if (next < kInf) schedule_junction(edge, next);
 }
@@ -303,11 +314,17 @@ std::uint32_t WindowPropagation::break_point(std::uint32_t edge, const Break& b)
     if (id == b.id) return ep;
   EdgePoint ep;
   ep.edge = edge;
-  if ((b.id >> 60) == (kCrossing >> 60)) {
+  if ((b.id >> 60) == 0) {  // an end vertex of the edge: lambda 0 or 1
+    const int j = static_cast<int>(b.id & 1);
+    ep.lambda = Interval(j);
+    s_.exact_times.push_back(ExactSum::rational(mpq_class(j)));
+    ep.exact = static_cast<std::int32_t>(s_.exact_times.size() - 1);
+  } else if ((b.id >> 60) == (kCrossing >> 60)) {
     const std::uint32_t ra = static_cast<std::uint32_t>((b.id >> 30) & 0x3fffffff);
     const std::uint32_t rb = static_cast<std::uint32_t>((b.id >> 1) & 0x1fffffff);
     const KinkParameter k = kink_parameter(u_, s_, cert_, edge, records_[ra].window, records_[rb].window, b.at);
     ep.lambda = k.lambda;
+    if (k.bracket) ep.bracketed = true, ep.lo = (*k.bracket)[0], ep.hi = (*k.bracket)[1];
     if (k.exact) {
       s_.exact_times.push_back(*k.exact);
       ep.exact = static_cast<std::int32_t>(s_.exact_times.size() - 1);
@@ -318,6 +335,7 @@ std::uint32_t WindowPropagation::break_point(std::uint32_t edge, const Break& b)
     const int j = static_cast<int>(b.id & 1);
     const KinkParameter k = ray_parameter(u_, s_, cert_, edge, records_[r].window, records_[r].end[j].vertex, b.at);
     ep.lambda = k.lambda;
+    if (k.bracket) ep.bracketed = true, ep.lo = (*k.bracket)[0], ep.hi = (*k.bracket)[1];
     if (k.exact) {
       s_.exact_times.push_back(*k.exact);
       ep.exact = static_cast<std::int32_t>(s_.exact_times.size() - 1);
@@ -410,7 +428,6 @@ bool WindowPropagation::same_point_as_source(std::uint32_t edge, std::uint32_t e
 void WindowPropagation::edge_point_source(std::uint32_t edge, const Break& b, std::uint32_t record,
                                           SweepEvent::Kind kind) {
   JunctionState& st = junctions_[junction_of_[edge]];
-  if ((b.id >> 60) == 0) return;  // an end vertex: its link rule emits
   if (std::find(st.sources.begin(), st.sources.end(), b.id) != st.sources.end()) return;
   st.sources.push_back(b.id);
   const std::uint32_t ep = break_point(edge, b);

@@ -106,7 +106,11 @@ Interval ExactBurning::burn_time(std::uint32_t t, const Target& x) {
     const int m = membership(w, x, &widen);
     if (m == 0) continue;
     if (m < 0) ++queries_.widened;
-    const Interval tw = cert.time_interval(w, x);
+    Interval tw = cert.time_interval(w, x);
+    if (!std::isfinite(tw.hi - tw.lo)) {  // the double stage could not bound it (a sliver): Arb
+      BallPrecision guard(128);
+      tw = cert.time_ball(w, x).to_interval();
+    }
     best = {std::min(best.lo, tw.lo), std::min(best.hi, round_up(tw.hi + widen))};
   }
   return best;

@@ -31,28 +31,26 @@ Interval time_on(const Unfolding& u, const WindowStore& s, std::uint32_t edge, s
 }
 
 // A certified bracket [l1, l2] around `at` where sign_at changes sign (each sign certified,
-// or 0 for a proved zero at that end), narrowed by bisection until its ends are neighbouring
-// doubles. The ends are doubles (exact as rationals: no gcd to normalise a rational midpoint),
-// and the bisection stops there because callers keep the parameter as a double enclosure
-// (rational_enclosure): narrowing further only cost certified comparisons at points so
-// close to the crossing that the double filter fails and the exact or Arb stage decides.
+// or 0 for a proved zero at that end), narrowed by bisection to about 2^-100 of its width
+// (Arb decides there unless the compared values are themselves that uncertain: the bracket
+// becomes the kink's rational enclosure, which the kink's own source carries into its
+// windows' Arb evaluations; at 2^-50, joint.ma's kinks of kinks compounded to 1e-5).
 struct Bracket {
   mpq_class lo, hi;
   bool ok = false;
 };
 Bracket bracket(const std::function<int(const mpq_class&)>& sign_at, double at) {
   for (const double delta : {1e-6, 1e-9, 1e-3, 1e-12}) {
-    double lo = std::max(0.0, at - delta), hi = std::min(1.0, at + delta);
-    const int slo = sign_at(mpq_class(lo)), shi = sign_at(mpq_class(hi));
+    mpq_class lo(std::max(0.0, at - delta)), hi(std::min(1.0, at + delta));
+    const int slo = sign_at(lo), shi = sign_at(hi);
     if (slo == kUndecided || shi == kUndecided || slo == 0 || shi == 0 || slo == shi) continue;
-    for (;;) {
-      const double mid = 0.5 * (lo + hi);
-      if (!(lo < mid && mid < hi)) break;
-      const int sm = sign_at(mpq_class(mid));
+    for (int i = 0; i < 100; ++i) {
+      const mpq_class mid((lo + hi) / 2);
+      const int sm = sign_at(mid);
       if (sm == kUndecided || sm == 0) break;
       (sm == slo ? lo : hi) = mid;
     }
-    return {mpq_class(lo), mpq_class(hi), true};
+    return {lo, hi, true};
   }
   return {};
 }
@@ -255,7 +253,7 @@ KinkParameter kink_parameter(const Unfolding& u, const WindowStore& s, Certifier
       [&](const mpq_class& l) {
         const ExactPoint3 p = point_on(mc, edge, l);
         const Target x{kNoIndex, &p};
-        return cert.compare_times(wa, x, wb, x);
+        return cert.compare_times(wa, x, wb, x, true);
       },
       at);
   KinkParameter k;
@@ -265,6 +263,7 @@ KinkParameter kink_parameter(const Unfolding& u, const WindowStore& s, Certifier
   }
   k.certified = true;
   k.lambda = rational_enclosure(br.lo, br.hi);
+  k.bracket = std::array<mpq_class, 2>{br.lo, br.hi};
   const auto p = edge_time(u, s, cert, edge, wa);
   const auto q = p ? edge_time(u, s, cert, edge, wb) : std::nullopt;
   if (!p || !q) return k;
@@ -326,11 +325,12 @@ KinkParameter ray_parameter(const Unfolding& u, const WindowStore& s, Certifier&
   const Bracket br = bracket(
       [&](const mpq_class& l) {
         const ExactPoint3 p = point_on(mc, edge, l);
-        return cert.side(w, j, Target{kNoIndex, &p});
+        return cert.side_if_certified(w, j, Target{kNoIndex, &p}, true);  // undecided: the bisection stops
       },
       at);
   k.certified = br.ok;
   k.lambda = br.ok ? rational_enclosure(br.lo, br.hi) : Interval(at);
+  if (br.ok) k.bracket = std::array<mpq_class, 2>{br.lo, br.hi};
   return k;
 }
 

@@ -13,7 +13,8 @@
 //    multiquadratic.h): its roots are lambda0 +- sqrt(delta) with lambda0, delta in the field
 //    (the board-and-fin kink: lambda = sqrt2 - 1 on the edge from (3,3,0) to (4,4,0), i.e.
 //    s = 2 + sqrt2). Squaring adds roots: the crossing is first bracketed by two rational
-//    parameters at which Certifier::compare_times certifies opposite orders, and the exact
+//    parameters at which Certifier::compare_times certifies opposite orders (bisected to
+//    2^-100 of its width, or until no stage decides), and the exact
 //    root is the only candidate between them (decided exactly). Without exact window data
 //    (curved sheets, large expressions) the bracket is narrowed by certified bisection and
 //    the enclosure is the answer (exact = none);
@@ -25,6 +26,7 @@
 // Complexity: O(1) field operations (at most 6 generators), or O(bits) certified comparisons.
 #pragma once
 
+#include <array>
 #include <optional>
 #include <vector>
 
@@ -36,6 +38,7 @@ struct KinkParameter {
   Interval lambda;
   std::optional<ExactSum> exact;
   bool certified = false;
+  std::optional<std::array<mpq_class, 2>> bracket;  // certified rational ends, when bisected
 };
 
 std::vector<double> approx_crossings(const Unfolding& u, const WindowStore& s, std::uint32_t edge, std::uint32_t wa,

@@ -103,7 +103,8 @@ std::optional<ExactSum> exact_vertex_ignition(const MedialComplex& mc, std::uint
 
 Ball edge_point_lambda_ball(const WindowStore& s, std::uint32_t id) {
   const EdgePoint& ep = s.edge_points[id];
-  return ep.exact >= 0 ? ball_of(s.exact_times[ep.exact]) : Ball::from_interval(ep.lambda);
+  if (ep.exact >= 0) return ball_of(s.exact_times[ep.exact]);
+  return ep.bracketed ? hull(ball_of(ep.lo), ball_of(ep.hi)) : Ball::from_interval(ep.lambda);
 }
 
 DiscPoint edge_point_image(const Unfolding& u, const WindowStore& s, std::uint32_t t, std::uint32_t id) {

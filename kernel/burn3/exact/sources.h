@@ -58,7 +58,8 @@ RootBall root_ball(const Unfolding& u, const WindowStore& s, std::uint32_t p, st
 // which contains its edge: (1 - lambda) A + lambda B from the edge ends' images.
 DiscPoint edge_point_image(const Unfolding& u, const WindowStore& s, std::uint32_t t, std::uint32_t id);
 BallVec2 edge_point_ball(const Unfolding& u, const WindowStore& s, std::uint32_t t, std::uint32_t id);
-// lambda as a ball at the current precision (exact: from its ExactSum; else its enclosure).
+// lambda as a ball at the current precision (exact: from its ExactSum; else its rational
+// bracket, or its double enclosure).
 Ball edge_point_lambda_ball(const WindowStore& s, std::uint32_t id);
 
 // The border edge's only triangle (the sheet side that a border rule ignites).

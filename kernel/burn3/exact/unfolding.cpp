@@ -55,6 +55,11 @@ std::array<N, 6> motion_from_edges(const N& ax, const N& ay, const N& bx, const 
   return {r00, r01, r10, r11, t0, t1};
 }
 
+// A length enclosure usable as a divisor in the double stage: positive, and known to 2^-40
+// relative. Slivers (a 1e-17 edge of tripod-s2.ma's axis among coordinates near 0.1) give
+// enclosures that hold 0; their frames and crossings then come from the exact data.
+bool tight(const Interval& l) { return l.lo > 0.0 && l.hi - l.lo <= 0x1p-40 * l.lo; }
+
 double norm_of_radii(std::initializer_list<double> radii) {
   double s = 0.0;
   for (double r : radii) s += r * r;
@@ -74,8 +79,11 @@ Unfolding::Unfolding(const MedialComplex& mc) : mc_(mc) {
       const auto a = vertex_iv_[tv[0]], e1 = sub3(vertex_iv_[tv[1]], a), ac = sub3(vertex_iv_[tv[2]], a);
       const auto e2 = cross3(cross3(e1, ac), e1);
       const Interval s1 = sqrt(dot3(e1, e1)), s2 = sqrt(dot3(e2, e2));
-      frame_iv_[f] = {a, {e1[0] / s1, e1[1] / s1, e1[2] / s1}, {e2[0] / s2, e2[1] / s2, e2[2] / s2}};
-      continue;
+      if (tight(s1) && tight(s2)) {
+        frame_iv_[f] = {a, {e1[0] / s1, e1[1] / s1, e1[2] / s1}, {e2[0] / s2, e2[1] / s2, e2[2] / s2}};
+        continue;
+      }
+      planar_frame(static_cast<std::uint32_t>(f));  // a sliver: the exact frame, enclosed below
     }
     const PlanarFrame& fr = *frames_[f];
     const Interval s1 = sqrt(enclose(fr.e1_norm2)), s2 = sqrt(enclose(fr.e2_norm2));
@@ -201,7 +209,17 @@ RigidMotion2 Unfolding::compute_crossing(std::uint32_t e, std::uint32_t t, std::
   const DiscPoint A = vertex_image(t, ev[0]), B = vertex_image(t, ev[1]);
   const DiscPoint A2 = vertex_image(t2, ev[0]), B2 = vertex_image(t2, ev[1]);
   const bool proper = edge_side(e, t) == -edge_side(e, t2);
-  const auto m = motion_from_edges<Interval>(A.ix(), A.iy(), B.ix(), B.iy(), A2.ix(), A2.iy(), B2.ix(), B2.iy(), proper);
+  std::array<Interval, 6> m;
+  const Interval l = sqrt(square(B.ix() - A.ix()) + square(B.iy() - A.iy()));
+  const Interval l2 = sqrt(square(B2.ix() - A2.ix()) + square(B2.iy() - A2.iy()));
+  if (tight(l) && tight(l2)) {
+    m = motion_from_edges<Interval>(A.ix(), A.iy(), B.ix(), B.iy(), A2.ix(), A2.iy(), B2.ix(), B2.iy(), proper);
+  } else {  // a short edge: the images' discs do not give its direction; Arb from the exact data
+    BallPrecision guard(256);
+    const BallMotion b = crossing_ball(e, t, t2);
+    m = {b.r00.to_interval(), b.r01.to_interval(), b.r10.to_interval(),
+         b.r11.to_interval(), b.t0.to_interval(),  b.t1.to_interval()};
+  }
   RigidMotion2 r;
   r.reflect = !proper;
   r.r00 = m[0].mid(), r.r01 = m[1].mid(), r.r10 = m[2].mid(), r.r11 = m[3].mid();

@@ -2,6 +2,7 @@
 #include "burn3/exact/window_certify.h"
 
 #include <algorithm>
+#include <cstring>
 #include <stdexcept>
 
 #include "burn3/exact/window_values.h"
@@ -14,6 +15,7 @@ namespace grassfire {
 void CertificationCounts::merge(const CertificationCounts& o) {
   filter += o.filter, exact += o.exact, arb += o.arb, exact_equal += o.exact_equal;
   structural_equal += o.structural_equal, kept_undecided += o.kept_undecided, uncertified += o.uncertified;
+  memo += o.memo;
   max_bits = std::max(max_bits, o.max_bits);
 }
 
@@ -56,13 +58,27 @@ int ball_sign(const Ball& b) {
 
 }  // namespace
 
+// A keyed point's images are cached per frame (and precision): the junction rule evaluates
+// every record at one point (enclosing the rational point costs more than the comparison).
 DiscPoint Certifier::target_disc(std::uint32_t t, const Target& x) const {
+  if (x.point && x.key) {
+    const MemoKey k{u_.frame(t), x.key, 0};
+    if (const auto it = disc_cache_.find(k); it != disc_cache_.end()) return it->second;
+    if (disc_cache_.size() > 1'000'000) disc_cache_.clear();
+    return disc_cache_.emplace(k, u_.point_image(t, *x.point)).first->second;
+  }
   if (x.point) return u_.point_image(t, *x.point);
   if (is_edge_point(x.vertex)) return edge_point_image(u_, s_, t, x.vertex & ~kEdgePointBound);
   return u_.vertex_image(t, x.vertex);
 }
 
 BallVec2 Certifier::target_ball(std::uint32_t t, const Target& x) const {
+  if (x.point && x.key) {
+    const MemoKey k{u_.frame(t), x.key, static_cast<std::uint64_t>(BallPrecision::bits())};
+    if (const auto it = ball_cache_.find(k); it != ball_cache_.end()) return it->second;
+    if (ball_cache_.size() > 1'000'000) ball_cache_.clear();
+    return ball_cache_.emplace(k, u_.point_ball(t, *x.point)).first->second;
+  }
   if (x.point) return u_.point_ball(t, *x.point);
   if (is_edge_point(x.vertex)) return edge_point_ball(u_, s_, t, x.vertex & ~kEdgePointBound);
   return u_.vertex_ball(t, x.vertex);
@@ -96,8 +112,8 @@ Ball Certifier::sigma_ball(std::uint32_t p) {
 }
 
 Ball Certifier::expr_ball(std::uint32_t i) {
-  if (memo_bits_ != BallPrecision::bits()) time_memo_.clear(), memo_bits_ = BallPrecision::bits();
-  if (auto it = time_memo_.find(i); it != time_memo_.end()) return it->second;
+  auto& memo = time_memo_[BallPrecision::bits()];
+  if (auto it = memo.find(i); it != memo.end()) return it->second;
   const TimeExpr& e = s_.times[i];
   Ball r;
   switch (e.kind) {
@@ -111,7 +127,7 @@ Ball Certifier::expr_ball(std::uint32_t i) {
       break;
     }
   }
-  time_memo_.emplace(i, r);
+  time_memo_[BallPrecision::bits()].emplace(i, r);
   return r;
 }
 
@@ -120,7 +136,7 @@ mpq_class Certifier::edge_length2(std::uint32_t e) const {
   return squared_distance(u_.complex().vertex(ev[0]).exact, u_.complex().vertex(ev[1]).exact);
 }
 
-WindowBall Certifier::evaluate(std::uint32_t w, bool with_offset) {
+WindowBall Certifier::evaluate(std::uint32_t w, bool with_offset, std::uint32_t source_vertex) {
   std::vector<std::uint32_t> chain;
   for (std::uint32_t x = w; x != kNoIndex; x = s_.windows[x].parent) chain.push_back(x);
   std::reverse(chain.begin(), chain.end());
@@ -131,6 +147,7 @@ WindowBall Certifier::evaluate(std::uint32_t w, bool with_offset) {
   const RootBall r =
       root_ball(u_, s_, first.pseudo, first.triangle, point_kind && with_offset ? sigma_ball(first.pseudo) : Ball(0.0));
   WindowBall b{r.source, r.offset, {}, r.plane};
+  if (source_vertex != kNoIndex) b.source = u_.vertex_ball(first.triangle, source_vertex);
   std::array<bool, 2> taken{false, false};
   for (std::size_t i = 0; i < chain.size(); ++i) {
     const Window& wi = s_.windows[chain[i]];
@@ -238,6 +255,86 @@ bool Certifier::bound_fixed(std::uint32_t w, int j, std::uint32_t v) const {
   return false;
 }
 
+// ---- identities and the memo of decisions -----------------------------------------------
+
+namespace {
+// Tags of the interned keys (top byte of MemoKey::a).
+enum : std::uint64_t { kRootFront = 1, kPlaneRoot, kCrossed, kWindowAt, kPlus, kMin, kLeaf, kPoint, kExprs, kTimes };
+constexpr std::uint64_t tag(std::uint64_t t, std::uint64_t payload) { return t << 56 | payload; }
+// The precision cap as a small code (128 .. 2^k bits), kept under the tag.
+std::uint64_t cap_code(long bits) { return static_cast<std::uint64_t>(bits / 128) << 40; }
+}  // namespace
+
+std::uint32_t Certifier::intern(const MemoKey& k) {
+  return ids_.emplace(k, static_cast<std::uint32_t>(ids_.size())).first->second;
+}
+
+std::optional<int> Certifier::recall(const MemoKey& k) {
+  const auto it = decided_.find(k);
+  if (it == decided_.end()) return std::nullopt;
+  ++counts.memo;
+  return it->second;
+}
+
+int Certifier::remember(const MemoKey& k, int outcome) {
+  if (decided_.size() > 4'000'000) decided_.clear();
+  decided_.emplace(k, outcome);
+  return outcome;
+}
+
+// Mirrors same_expression: a window has its anchor's front; an anchor without a parent is
+// its pseudo-source (point kinds: one image per frame; plane waves: itself); an anchor with
+// one is the crossing (edge, triangle, parent's triangle) applied to its parent's front.
+std::uint32_t Certifier::front_id(std::uint32_t w) {
+  if (front_ids_.size() < s_.windows.size()) front_ids_.resize(s_.windows.size(), 0);
+  std::vector<std::uint32_t> todo;  // anchors without an id, nearest first (iterative: long chains)
+  for (std::uint32_t x = w; front_ids_[x] == 0;) {
+    todo.push_back(x);
+    const Window& W = s_.windows[x];
+    if (W.anchor != x) x = W.anchor;
+    else if (W.parent != kNoIndex) x = s_.windows[W.parent].anchor;
+    else break;
+  }
+  for (auto it = todo.rbegin(); it != todo.rend(); ++it) {
+    const std::uint32_t x = *it;
+    const Window& W = s_.windows[x];
+    std::uint32_t id;
+    if (W.anchor != x) {
+      id = front_ids_[W.anchor] - 1;
+    } else if (W.parent == kNoIndex) {
+      const SourceOrigin o = s_.pseudo[W.pseudo].origin;
+      const bool point_kind = o == SourceOrigin::Vertex || o == SourceOrigin::GivenPoint || o == SourceOrigin::EdgePoint;
+      id = point_kind ? intern({tag(kRootFront, W.pseudo), u_.frame(W.triangle), 0}) : intern({tag(kPlaneRoot, x), 0, 0});
+    } else {
+      const std::uint32_t parent = front_ids_[s_.windows[W.parent].anchor] - 1;
+      id = intern({tag(kCrossed, W.edge), std::uint64_t(W.triangle) << 32 | s_.windows[W.parent].triangle, parent});
+    }
+    front_ids_[x] = id + 1;
+  }
+  return front_ids_[w] - 1;
+}
+
+std::uint32_t Certifier::expr_id(std::uint32_t i) {
+  if (expr_ids_.size() < s_.times.size()) expr_ids_.resize(s_.times.size(), 0);
+  if (expr_ids_[i] != 0) return expr_ids_[i] - 1;
+  const TimeExpr& e = s_.times[i];
+  std::uint32_t id;
+  switch (e.kind) {
+    case TimeExpr::Kind::WindowAt: id = intern({tag(kWindowAt, front_id(e.a)), e.b, 0}); break;
+    case TimeExpr::Kind::Plus: id = intern({tag(kPlus, expr_id(e.a)), e.b, 0}); break;
+    case TimeExpr::Kind::Min: id = intern({tag(kMin, expr_id(e.a)), expr_id(e.b), 0}); break;
+    default: id = intern({tag(kLeaf, i), 0, 0}); break;
+  }
+  expr_ids_[i] = id + 1;
+  return id;
+}
+
+std::uint64_t Certifier::point_key(std::uint32_t edge, double at) {
+  std::uint64_t bits;
+  std::memcpy(&bits, &at, sizeof bits);
+  return (1ull << 63) | intern({tag(kPoint, edge), bits, 0});
+}
+
 // ---- stage 3: exact (rational frames and crossings) -------------------------------------
 
 const ExactSum* Certifier::exact_sigma(std::uint32_t p) {
@@ -280,21 +377,26 @@ int Certifier::compare_time_exprs(std::uint32_t a, std::uint32_t b, bool prune_o
     return s;
   }
   const TimeExpr &ea = s_.times[a], &eb = s_.times[b];
-  if (a == b || (ea.kind == TimeExpr::Kind::WindowAt && eb.kind == TimeExpr::Kind::WindowAt && ea.b == eb.b &&
-                 same_expression(ea.a, eb.a, Target{ea.b, nullptr}))) {
+  const std::uint32_t ia = expr_id(a), ib = expr_id(b);
+  if (ia == ib || (ea.kind == TimeExpr::Kind::WindowAt && eb.kind == TimeExpr::Kind::WindowAt && ea.b == eb.b &&
+                   same_expression(ea.a, eb.a, Target{ea.b, nullptr}))) {
     ++counts.structural_equal;
     return 0;
   }
+  const long cap = prune_only ? prune_bits_ : max_bits_;
+  const int flip = ia < ib ? 1 : -1;  // the key names the pair in one order
+  const MemoKey key{tag(kExprs, std::min(ia, ib)) | cap_code(cap), std::max(ia, ib), 0};
+  if (const std::optional<int> m = recall(key)) return *m == kUndecided ? *m : flip * *m;
   const ExactSum* x = exact_expr(a);
   const ExactSum* y = x ? exact_expr(b) : nullptr;
   if (x && y) {
     const int e = exact_sign(*x - *y);
     ++(e == 0 ? counts.exact_equal : counts.exact);
-    return e;
+    return remember(key, flip * e) * flip;
   }
-  const int r = escalate(prune_only ? prune_bits_ : max_bits_, [&] { return ball_sign(expr_ball(a) - expr_ball(b)); });
+  const int r = escalate(cap, [&] { return ball_sign(expr_ball(a) - expr_ball(b)); });
   if (r == kUndecided) ++counts.kept_undecided;
-  return r;
+  return r == kUndecided ? remember(key, r) : remember(key, flip * r) * flip;
 }
 
 const Certifier::ExactWindow* Certifier::exact_window(std::uint32_t w) {
@@ -303,7 +405,7 @@ const Certifier::ExactWindow* Certifier::exact_window(std::uint32_t w) {
   return exact_memo_.emplace(w, std::move(r)).first->second.get();
 }
 
-std::unique_ptr<Certifier::ExactWindow> Certifier::build_exact_window(std::uint32_t w) {
+std::unique_ptr<Certifier::ExactWindow> Certifier::build_exact_window(std::uint32_t w, std::uint32_t source_vertex) {
   std::vector<std::uint32_t> chain;
   for (std::uint32_t x = w; x != kNoIndex; x = s_.windows[x].parent) chain.push_back(x);
   std::reverse(chain.begin(), chain.end());
@@ -313,7 +415,9 @@ std::unique_ptr<Certifier::ExactWindow> Certifier::build_exact_window(std::uint3
   const MedialComplex& mc = u_.complex();
   auto e = std::make_unique<ExactWindow>();
   e->frame = u_.frame(first.triangle);
-  if (ps.origin == SourceOrigin::BorderPoint) {
+  if (source_vertex != kNoIndex) {
+    e->s = xv(u_.vertex_uv(e->frame, source_vertex));
+  } else if (ps.origin == SourceOrigin::BorderPoint) {
     // S = A + alpha E - sqrt(h^2 / |N|^2) N, N the part of C - A orthogonal to E (sources.h),
     // all rational in local coordinates but the one square root.
     const std::uint32_t edge = ps.data;
@@ -443,6 +547,31 @@ void Certifier::trim_memos() {
 }
 
 int Certifier::side(std::uint32_t w, int j, const Target& x) {
+  const int s = side_if_certified(w, j, x);
+  if (s != kUndecided) return s;
+  ++counts.uncertified;
+  return 0;
+}
+
+// A window whose source S is a point inside edge E = (a, b) (a kink or stretch end located
+// by an enclosure only) and whose bound j is b taken at depth 0: S, a and b are collinear
+// in the first triangle's frame and stay so through the chain, S before b seen from a, so
+// the ray from S through b and the ray from a through b have the same sides (cross(b - S,
+// x - S) = cross(b - S, x - b) = |b - S| / |b - a| cross(b - a, x - b)), whatever S's place
+// on E. Returns a (kNoIndex when w is not such a window); a is exact where S is not.
+std::uint32_t Certifier::edge_ray_origin(std::uint32_t w, int j) const {
+  const Window& win = s_.windows[w];
+  const PseudoSource& ps = s_.pseudo[win.pseudo];
+  if (ps.origin != SourceOrigin::EdgePoint || win.bound_depth[j] != 0) return kNoIndex;
+  const EdgePoint& ep = s_.edge_points[ps.data];
+  if (!(ep.lambda.lo > 0.0 && ep.lambda.hi < 1.0)) return kNoIndex;
+  const auto& ev = u_.complex().edge(ep.edge).v;
+  if (win.bound[j] == ev[0]) return ev[1];
+  if (win.bound[j] == ev[1]) return ev[0];
+  return kNoIndex;
+}
+
+int Certifier::side_if_certified(std::uint32_t w, int j, const Target& x, bool arb_first) {
   trim_memos();
   const Window& win = s_.windows[w];
   const int s = approx_side(win, win.image[j], target_disc(win.triangle, x)).sign();
@@ -454,26 +583,30 @@ int Certifier::side(std::uint32_t w, int j, const Target& x) {
     ++counts.structural_equal;
     return 0;
   }
-  if (const ExactWindow* ew = exact_window(w)) {
+  const std::uint32_t along = edge_ray_origin(w, j);
+  auto arb = [&] {
+    return escalate(max_bits_, [&] {
+      const WindowBall b = evaluate(w, false, along);
+      const std::uint32_t t = win.triangle;
+      const BallVec2 p = target_ball(t, x);
+      if (b.plane) return ball_sign(ball_cross(b.source, ball_sub(p, b.image[j])));
+      return ball_sign(ball_cross(ball_sub(b.image[j], b.source), ball_sub(p, b.source)));
+    });
+  };
+  if (arb_first)
+    if (const int a = arb(); a != kUndecided) return a;
+  std::unique_ptr<ExactWindow> substitute = along == kNoIndex ? nullptr : build_exact_window(w, along);
+  if (const ExactWindow* ew = substitute ? substitute.get() : exact_window(w)) {
     const int e = exact_side(*ew, j, x);
     if (e != kUndecided) {
       ++(e == 0 ? counts.exact_equal : counts.exact);
       return e;
     }
   }
-  const int a = escalate(max_bits_, [&] {
-    const WindowBall b = evaluate(w, false);
-    const std::uint32_t t = win.triangle;
-    const BallVec2 p = target_ball(t, x);
-    if (b.plane) return ball_sign(ball_cross(b.source, ball_sub(p, b.image[j])));
-    return ball_sign(ball_cross(ball_sub(b.image[j], b.source), ball_sub(p, b.source)));
-  });
-  if (a != kUndecided) return a;
-  ++counts.uncertified;
-  return 0;
+  return arb_first ? kUndecided : arb();
 }
 
-int Certifier::compare_times(std::uint32_t w1, const Target& x1, std::uint32_t w2, const Target& x2) {
+int Certifier::compare_times(std::uint32_t w1, const Target& x1, std::uint32_t w2, const Target& x2, bool arb_first) {
   trim_memos();
   const int s = certified_sign(time_interval(w1, x1) - time_interval(w2, x2));
   if (s != kUndecided) {
@@ -485,17 +618,39 @@ int Certifier::compare_times(std::uint32_t w1, const Target& x1, std::uint32_t w
     ++counts.structural_equal;
     return 0;
   }
+  // The memo, where both targets are one named point (a vertex, an edge point, a keyed point).
+  const std::uint64_t where = x1.point ? x1.key : x1.vertex;
+  const bool keyed = same_target && (x1.point ? x1.key != 0 : x1.vertex != kNoIndex);
+  std::uint32_t fa = 0, fb = 0;
+  if (keyed) {
+    fa = front_id(w1), fb = front_id(w2);
+    if (fa == fb) {
+      ++counts.structural_equal;
+      return 0;
+    }
+  }
+  const int flip = fa < fb ? 1 : -1;
+  const MemoKey key{tag(kTimes, std::min(fa, fb)) | cap_code(prune_bits_), std::max(fa, fb), where};
+  if (keyed)
+    if (const std::optional<int> m = recall(key)) return *m == kUndecided ? *m : flip * *m;
+  auto done = [&](int r) {
+    if (!keyed) return r;
+    return r == kUndecided ? remember(key, r) : remember(key, flip * r) * flip;
+  };
+  auto arb = [&] { return escalate(prune_bits_, [&] { return ball_sign(time_ball(w1, x1) - time_ball(w2, x2)); }); };
+  if (arb_first)
+    if (const int a = arb(); a != kUndecided) return done(a);
   if (exact_window(w1) && exact_window(w2)) {
     const auto t1 = exact_time(w1, x1), t2 = exact_time(w2, x2);
     if (t1 && t2) {
       const int e = exact_sign(*t1 - *t2);
       ++(e == 0 ? counts.exact_equal : counts.exact);
-      return e;
+      return done(e);
     }
   }
-  const int r = escalate(prune_bits_, [&] { return ball_sign(time_ball(w1, x1) - time_ball(w2, x2)); });
+  const int r = arb_first ? kUndecided : arb();
   if (r == kUndecided) ++counts.kept_undecided;
-  return r;
+  return done(r);
 }
 
 int Certifier::compare_directions(std::uint32_t w1, std::uint32_t w2, std::uint32_t v) {

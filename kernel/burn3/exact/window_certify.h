@@ -20,6 +20,13 @@
 //  5. undecided: side decisions return 0 and count `uncertified` (the point is taken to lie
 //     on the ray; right when the configuration is exactly collinear, the usual cause);
 //     comparisons return kUndecided and the caller keeps every window (`kept_undecided`).
+// Memo: a comparison that passes the filter is keyed by the identity of what it compares
+// (front_id: windows with the same pseudo-source through the same frame changes, whose
+// times are one expression; expression ids of time expressions built from them; the point
+// by vertex or Certifier::point_key) and by the precision cap; asked again, the outcome of
+// stages 2-5 is repeated (counted `memo`), not re-decided. The junction rule asks the same
+// questions in every pass and for every window of the same front (exact ties between the
+// sheets' fronts cost two or three Arb evaluations each time: 3 s of joint.ma's ...).
 // Contract: windows in `store` as the engine builds them; targets are vertices of the
 // window's triangle or exact points in its plane.
 // Complexity: stage 1 O(1); stages 3-4 O(chain length) exact or Arb operations per level.
@@ -40,6 +47,7 @@ namespace grassfire {
 struct Target {
   std::uint32_t vertex = kNoIndex;
   const ExactPoint3* point = nullptr;
+  std::uint64_t key = 0;  // nonzero: names `point` for the memo (Certifier::point_key)
 };
 
 struct WindowBall {
@@ -56,8 +64,19 @@ class Certifier {
       : u_(u), s_(s), max_bits_(max_bits), prune_bits_(prune_bits) {}
 
   int side(std::uint32_t w, int j, const Target& x);
-  int compare_times(std::uint32_t w1, const Target& x1, std::uint32_t w2, const Target& x2);
+  // side() without its last stage: kUndecided (nothing counted) where no stage decides; for
+  // callers that stop there instead of taking the point as collinear (certified bisections).
+  // arb_first: the Arb stage before the exact one (bisections: thousands of decisions near a
+  // point that Arb settles at once, where the exact sums of long rationals cost far more).
+  int side_if_certified(std::uint32_t w, int j, const Target& x, bool arb_first = false);
+  int compare_times(std::uint32_t w1, const Target& x1, std::uint32_t w2, const Target& x2, bool arb_first = false);
   int compare_directions(std::uint32_t w1, std::uint32_t w2, std::uint32_t v);
+  // The identity of w's front (equal ids: the same source image and offset in the same
+  // frame, as same_expression decides), and of a time expression (equal ids: one value).
+  std::uint32_t front_id(std::uint32_t w);
+  std::uint32_t expr_id(std::uint32_t expr);
+  // A key naming the point of parameter `at` (a double, taken exactly) of an edge.
+  std::uint64_t point_key(std::uint32_t edge, double at);
 
   // Enclosures at the double stage and at the current BallPrecision.
   DiscPoint target_disc(std::uint32_t t, const Target& x) const;
@@ -66,7 +85,9 @@ class Certifier {
   Ball time_ball(std::uint32_t w, const Target& x);
   // The chain re-evaluated in Arb; the offset only when asked (it recurses through the
   // offsets of the vertex sources the chain descends from).
-  WindowBall evaluate(std::uint32_t w, bool with_offset);
+  // `source_vertex` (not kNoIndex): the chain applied to that vertex of the first window's
+  // triangle instead of the pseudo-source (edge_ray_origin).
+  WindowBall evaluate(std::uint32_t w, bool with_offset, std::uint32_t source_vertex = kNoIndex);
   // The window's geometry in exact local coordinates of its frame (sums of square roots),
   // when its pseudo-source's position is exact and its chain's unfoldings keep the
   // coordinates small (see 3.); its offset is exact_sigma(pseudo), when that exists.
@@ -103,15 +124,33 @@ class Certifier {
   std::optional<ExactVector> target_uv(std::uint32_t f, const Target& x) const;
   int exact_side(const ExactWindow& e, int j, const Target& x) const;
   int exact_direction_cross(const ExactWindow& a, const ExactWindow& b, std::uint32_t v) const;
-  std::unique_ptr<ExactWindow> build_exact_window(std::uint32_t w);
+  std::unique_ptr<ExactWindow> build_exact_window(std::uint32_t w, std::uint32_t source_vertex = kNoIndex);
+  std::uint32_t edge_ray_origin(std::uint32_t w, int j) const;
   template <class F>
   int escalate(long cap, F&& sign_at_precision);
+
+  struct MemoKey {
+    std::uint64_t a, b, c;
+    bool operator==(const MemoKey& o) const { return a == o.a && b == o.b && c == o.c; }
+  };
+  struct MemoHash {
+    std::size_t operator()(const MemoKey& k) const {
+      return std::hash<std::uint64_t>()(k.a * 0x9E3779B97F4A7C15ull ^ (k.b + 0x632BE59BD9B4E019ull) * 31 ^ k.c);
+    }
+  };
+  std::uint32_t intern(const MemoKey& k);
+  std::optional<int> recall(const MemoKey& k);
+  int remember(const MemoKey& k, int outcome);
 
   const Unfolding& u_;
   const WindowStore& s_;
   long max_bits_, prune_bits_;
-  long memo_bits_ = 0;
-  std::unordered_map<std::uint32_t, Ball> time_memo_;  // per TimeExpr, at memo_bits_
+  std::unordered_map<MemoKey, std::uint32_t, MemoHash> ids_;  // front, expression and point ids
+  std::vector<std::uint32_t> front_ids_, expr_ids_;           // per window / TimeExpr (+1; 0: none yet)
+  std::unordered_map<MemoKey, int, MemoHash> decided_;
+  mutable std::unordered_map<MemoKey, DiscPoint, MemoHash> disc_cache_;  // (frame, point key)
+  mutable std::unordered_map<MemoKey, BallVec2, MemoHash> ball_cache_;   // (frame, point key, bits)
+  std::unordered_map<long, std::unordered_map<std::uint32_t, Ball>> time_memo_;  // bits -> TimeExpr -> ball
   std::unordered_map<std::uint32_t, std::unique_ptr<ExactWindow>> exact_memo_;
   std::unordered_map<std::uint32_t, std::unique_ptr<ExactSum>> exact_time_memo_;
 };

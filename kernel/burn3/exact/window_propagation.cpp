@@ -257,7 +257,12 @@ void WindowPropagation::process_root(std::uint32_t w) {
   const Window W = s_.windows[w];
   const ComplexTriangle& tr = mc_.triangle(W.triangle);
   const PseudoSource& ps = s_.pseudo[W.pseudo];
-  const std::uint32_t at = ps.origin == SourceOrigin::Vertex ? ps.vertex : kNoIndex;
+  std::uint32_t at = ps.origin == SourceOrigin::Vertex ? ps.vertex : kNoIndex;
+  if (ps.origin == SourceOrigin::EdgePoint) {  // a source at an end vertex of its edge: that vertex is not reached
+    const EdgePoint& ep = s_.edge_points[ps.data];
+    if (ep.lambda.is_point() && (ep.lambda.lo == 0.0 || ep.lambda.lo == 1.0))
+      at = mc_.edge(ep.edge).v[ep.lambda.lo == 0.0 ? 0 : 1];
+  }
   for (int i = 0; i < 3; ++i)
     if (tr.v[i] != at) vertex_arrival(w, tr.v[i], sectors_.corner_sector[3 * W.triangle + i]);
   for (int k = 0; k < 3; ++k) {

@@ -9,8 +9,15 @@
 //  - the time of w at X: offset + |X - S|, or c + u . X;
 //  - the parameter where the ray of w through B meets the line P -> Q;
 //  - a certified lower bound of w's times over a segment (the queue key).
+// Never NaN: where an input disc is unknown (DiscPoint::unknown(), infinite radius) or a
+// value overflows, the Approx is {0, +infinity} (its sign undecided, its lower end -infinity)
+// and a ray hit is not `ok`, so the filter fails and the next stage decides (a sliver with
+// a 1e-17 edge on tripod-s2.ma made NaN here, which broke the queue's order).
 // Contract: windows as windows.h defines them. Complexity: O(1).
 #pragma once
+
+#include <cmath>
+#include <limits>
 
 #include "burn3/exact/windows.h"
 
@@ -27,6 +34,13 @@ struct Approx {
 };
 constexpr double kUnit = 0x1p-53;  // unit roundoff
 
+// v within e (e inflated for its own rounding), or {0, inf} when either is not finite.
+inline Approx bounded(double v, double e) {
+  const double eb = e * (1 + 8 * kUnit) + 0x1p-1000;
+  if (!std::isfinite(v) || !std::isfinite(eb)) return {0.0, std::numeric_limits<double>::infinity()};
+  return {v, eb};
+}
+
 // side(B, X) = cross(a, b), a = B - S, b = X - S: moving the points within their discs
 // moves a by da <= rB + rS and b by db <= rX + rS, so the cross product by at most
 // |da||b| + |a||db| + |da||db|; the three roundings of the subtractions and the two
@@ -41,14 +55,14 @@ inline Approx approx_side(const Window& w, const DiscPoint& b, const DiscPoint& 
   const double na = std::fabs(ax) + std::fabs(ay), nb = std::fabs(bx) + std::fabs(by);
   const double v = ax * by - ay * bx;
   const double e = da * nb + na * db + da * db + 6 * kUnit * na * nb;
-  return {v, e * (1 + 8 * kUnit) + 0x1p-1000};
+  return bounded(v, e);
 }
 
 // cross(a, b) for vectors known within da and db (|a~ - a| <= da, |b~ - b| <= db).
 inline Approx approx_cross(double ax, double ay, double da, double bx, double by, double db) {
   const double na = std::fabs(ax) + std::fabs(ay), nb = std::fabs(bx) + std::fabs(by);
   const double e = da * nb + na * db + da * db + 6 * kUnit * na * nb;
-  return {ax * by - ay * bx, e * (1 + 8 * kUnit) + 0x1p-1000};
+  return bounded(ax * by - ay * bx, e);
 }
 
 // The point where the ray of w through the bound image b meets the line p -> q, as a disc:
@@ -77,7 +91,9 @@ inline RayHit approx_ray_hit(const Window& w, const DiscPoint& b, const DiscPoin
   const double nq = std::fabs(qx) + std::fabs(qy);
   const double r = p.r + emu * (nq + dq) + std::fabs(mu) * dq +
                    3 * kUnit * (std::fabs(p.x) + std::fabs(p.y) + std::fabs(mu) * nq);
-  return {true, {x, y, r * (1 + 8 * kUnit) + 0x1p-1000}};
+  const DiscPoint hit = DiscPoint::checked(x, y, r * (1 + 8 * kUnit) + 0x1p-1000);
+  if (!hit.known()) return {};
+  return {true, hit};
 }
 
 // time(X) = sigma + |X - S|: |X - S| moves by at most rX + rS; its double evaluation errs by
@@ -91,13 +107,13 @@ inline Approx approx_time(const Window& w, const DiscPoint& x) {
     const double v = c + p;
     const double e = cr + s.r * (std::fabs(x.x) + std::fabs(x.y)) + x.r * (1 + s.r) +
                      4 * kUnit * (std::fabs(c) + std::fabs(s.x * x.x) + std::fabs(s.y * x.y));
-    return {v, e * (1 + 8 * kUnit) + 0x1p-1000};
+    return bounded(v, e);
   }
   const double dx = x.x - s.x, dy = x.y - s.y;
   const double d = std::sqrt(dx * dx + dy * dy);
   const double v = c + d;
   const double e = cr + s.r + x.r + 4 * kUnit * d + kUnit * std::fabs(v);
-  return {v, e * (1 + 8 * kUnit) + 0x1p-1000};
+  return bounded(v, e);
 }
 inline IPoint ipoint(const DiscPoint& p) { return {p.ix(), p.iy()}; }
 inline Interval icross(const Interval& ax, const Interval& ay, const Interval& bx, const Interval& by) {
@@ -184,6 +200,7 @@ inline double approx_lower_bound(const Window& w, const DiscPoint& a, const Disc
   const double line = cr / len;
   const double err = s.r + std::max(a.r, b.r) + 8 * kUnit * (line + std::fabs(s.x - a.x) + std::fabs(s.y - a.y));
   const double lo = w.offset.lo + line - err * (1 + 8 * kUnit) - 0x1p-1000;
+  if (std::isnan(lo)) return -std::numeric_limits<double>::infinity();
   return std::min(ends, lo);
 }
 

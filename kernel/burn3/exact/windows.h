@@ -48,6 +48,10 @@ struct EdgePoint {
   std::uint32_t edge = kNoIndex;
   Interval lambda;
   std::int32_t exact = -1;
+  // Without an exact value: the certified bracket lo <= lambda <= hi with rational ends
+  // (narrower than `lambda`, a double enclosure), for the Arb stage; none when !bracketed.
+  bool bracketed = false;
+  mpq_class lo, hi;
 };
 // A wedge bound or a TimeExpr::WindowAt target with this bit set names edge_points[id & ~bit]
 // instead of a vertex.
@@ -160,6 +164,7 @@ struct CertificationCounts {
   std::uint64_t structural_equal = 0;  // proved zero by identical expressions
   std::uint64_t kept_undecided = 0; // pruning comparisons left undecided: nothing pruned
   std::uint64_t uncertified = 0;    // wedge decisions no stage certified: taken as collinear
+  std::uint64_t memo = 0;           // comparisons asked before (same fronts, point, cap): repeated
   long max_bits = 0;                // highest Arb precision used
   void merge(const CertificationCounts& o);
 };
