@@ -7,11 +7,11 @@
 // rounding keeps the symmetry: thousands of exactly equal burn times, proved by value
 // classes, burn2/burn_times.h), and the phase-shifted r(t) = 10^6 (1 + 0.1 sin(7t + 0.3)),
 // which has no symmetry (generic input), and the "unrounded" variant: the shifted curve's
-// points as computed (full-mantissa doubles, no decimal or int32 binary frame: the CGAL
-// SDG path of polygon_axis.h; run up to --max-unrounded segments, default 20000, because
-// that path is superlinear on such input; its near-0 coordinates such as 10^6 cos(pi/2)
-// ~ 6e-11 with 53 significant bits span ~107 bits once scaled to integers, beyond the wide
-// binary frame), and the "offset" variant: the shifted curve centred at (3 10^6, 3 10^6),
+// points as computed (full-mantissa doubles, no decimal or int32 binary frame; its near-0
+// coordinates such as 10^6 cos(pi/2) ~ 6e-11 with 53 significant bits span ~107 bits once
+// scaled to integers, beyond the wide binary frame: the mp binary policy of polygon_axis.h,
+// Boost's builder with the mp traits; run up to --max-unrounded segments, default 100000),
+// and the "offset" variant: the shifted curve centred at (3 10^6, 3 10^6),
 // its points as computed (full-mantissa doubles away from 0: 2^K x them span ~54 bits, the
 // wide binary policy runs Boost's builder on 64-bit integers). Each row runs: Boost alone (on the rounded
 // polygon for "unrounded"); CGAL SDG alone (bulk insert_segments, CGAL's default filtered
@@ -30,7 +30,8 @@
 // (where its CPU time goes: Voronoi, values, value classes, burning; contractions, double-
 // double and Arb refinements), the engine's comparison counts and the value classes.
 // Usage: bench_polygon_axis [--sizes 1000,10000,100000] [--max-cgal N] [--max-unrounded N]
-//        [--repeat K]
+//        [--repeat K] [--shapes symmetric,shifted,offset,unrounded] (the rows to run; the
+//        ratio_to_decimal column needs "shifted")
 #include <CGAL/Segment_Delaunay_graph_2.h>
 #include <CGAL/Segment_Delaunay_graph_filtered_traits_2.h>
 #include <CGAL/Simple_cartesian.h>
@@ -135,6 +136,10 @@ void report_details(int n, const char* shape, const PolygonAxisReport& rep, cons
                (unsigned long long)st.mpfr_decided, (unsigned long long)st.exact_zero,
                (unsigned long long)st.class_zero, (unsigned long long)st.uncertified_zero,
                (unsigned long long)st.max_bits_used);
+  if (rep.construction == AxisConstruction::BoostPolygonMp)
+    std::fprintf(stderr, "  mp traits: %d-bit integers, %d-bit floats, filter stage %s, %llu decisions by MPFR\n",
+                 rep.mp_input_bits, rep.mp_float_bits, rep.mp_filtered ? "completed" : "undecided (MPFR rerun)",
+                 (unsigned long long)rep.mp_fallbacks);
   if (const auto* geo = dynamic_cast<const PolygonAxisGeometry*>(&g.geometry())) {
     const AxisValueClasses& vc = geo->value_classes();
     std::fprintf(stderr, "  symmetries %u: nodes in shared classes %llu / %u, edges %llu / %u, unmapped %llu + %llu\n",
@@ -148,7 +153,8 @@ void report_details(int n, const char* shape, const PolygonAxisReport& rep, cons
 
 int main(int argc, char** argv) {
   std::vector<int> sizes{1000, 10000, 100000};
-  long max_cgal = 100000, max_unrounded = 20000;
+  long max_cgal = 100000, max_unrounded = 100000;
+  std::string shapes = ",symmetric,shifted,offset,unrounded,";
   int repeat = 1;
   for (int i = 1; i + 1 < argc; i += 2) {
     const std::string a = argv[i];
@@ -156,6 +162,8 @@ int main(int argc, char** argv) {
       max_cgal = std::atol(argv[i + 1]);
     } else if (a == "--max-unrounded") {
       max_unrounded = std::atol(argv[i + 1]);
+    } else if (a == "--shapes") {
+      shapes = "," + std::string(argv[i + 1]) + ",";
     } else if (a == "--repeat") {
       repeat = std::max(1, std::atoi(argv[i + 1]));
     } else if (a == "--sizes") {
@@ -163,7 +171,7 @@ int main(int argc, char** argv) {
       std::stringstream ss(argv[i + 1]);
       for (std::string t; std::getline(ss, t, ',');) sizes.push_back(std::atoi(t.c_str()));
     } else {
-      std::fprintf(stderr, "usage: bench_polygon_axis [--sizes a,b,c] [--max-cgal N] [--max-unrounded N] [--repeat K]\n");
+      std::fprintf(stderr, "usage: bench_polygon_axis [--sizes a,b,c] [--max-cgal N] [--max-unrounded N] [--repeat K] [--shapes a,b]\n");
       return 2;
     }
   }
@@ -175,6 +183,7 @@ int main(int argc, char** argv) {
          {std::pair<const char*, double>{"symmetric", 0.0}, {"shifted", 0.3}, {"offset", 0.3}, {"unrounded", 0.3}}) {
       const bool unrounded = std::string(shape) == "unrounded", offset = std::string(shape) == "offset";
       if (unrounded && n > max_unrounded) continue;
+      if (shapes.find(std::string(",") + shape + ",") == std::string::npos) continue;
       const double centre = offset ? 3e6 : 0;
       const Shape2 s = wavy_circle(n, phase, !unrounded && !offset, centre), rounded = wavy_circle(n, phase, true, centre);
       Row row;

@@ -436,6 +436,36 @@ TEST_CASE("seeded star polygons with full-mantissa doubles: wide Boost axis equa
   }
 }
 
+TEST_CASE("seeded star polygons spanning ~107 and ~400 bits: mp Boost axis equals CGAL's, engine = oracle", "[exact2d]") {
+  // Vertices r (cos t, sin t) about the origin as computed, one at t = pi/2 (x ~ 6e-17 r,
+  // full mantissa): ~107 bits once scaled to integers; in odd trials one vertex at t = pi
+  // gets y ~ 1e-110 r: ~420 bits. The mp binary policy runs Boost's builder on those
+  // integers (filter stage, or MPFR); CGAL's SDG runs on the same doubles.
+  std::mt19937 rng(20261208);
+  std::uniform_real_distribution<double> radius(0.3, 1.0), factor(1, 2);
+  for (int trial = 0; trial < 8; ++trial) {
+    const int n = 8 + trial * 4;
+    std::vector<Point2> ring;
+    for (int k = 0; k < n; ++k) {
+      const double t = M_PI / 2 + 2 * M_PI * k / n, r = radius(rng);
+      ring.push_back({r * std::cos(t), r * std::sin(t)});
+    }
+    if (trial % 2) ring[n / 4].y = 1e-110 * factor(rng);
+    const Shape2 s = polygon({ring});
+    PolygonAxisOptions cgal_opt;
+    cgal_opt.construction = AxisConstruction::CgalSdg;
+    PolygonAxisReport rb, rc;
+    const MedialGraph gb = exact_polygon_axis(s, {}, &rb), gc = exact_polygon_axis(s, cgal_opt, &rc);
+    INFO("trial " << trial << ": " << rb.mp_input_bits << "-bit integers");
+    CHECK(rb.construction == AxisConstruction::BoostPolygonMp);
+    CHECK(rc.construction == AxisConstruction::CgalSdg);
+    CHECK(rb.mp_input_bits > (trial % 2 ? 400 : 100));
+    CHECK(rb.uncertified_contractions == 0);
+    CHECK(equal_exact_radii(gb, gc, require_same_axis(gb, gc, true)) >= n);
+    require_valid_and_burns_like_oracle(gb);
+  }
+}
+
 TEST_CASE("a dense near-symmetric wavy curve with full-mantissa doubles: wide Boost axis equals CGAL's", "[exact2d]") {
   // 1500 samples of r = 10^6 (1 + 0.1 sin 7t) about (3 10^6, -2.5 10^6), as computed: the
   // mirror symmetry survives rounding at some sites, which are then exactly cocircular

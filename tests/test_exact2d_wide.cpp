@@ -1,7 +1,9 @@
-// The wide binary policy (medial2/polygon_axis.h, boost_wide_traits.h): Boost.Polygon's
-// builder on 62-bit integer frames against CGAL's Segment_Delaunay_graph_2 on the same
+// The wide and mp binary policies (medial2/polygon_axis.h, boost_wide_traits.h,
+// boost_mp_traits.h): Boost.Polygon's builder on 62-bit integer frames, and on integers of
+// any size (filter stage and MPFR run), against CGAL's Segment_Delaunay_graph_2 on the same
 // exact polygon, Voronoi topology site by site, on seeded polygons with arbitrary
-// (full-mantissa) double coordinates; and where the policy sends which input.
+// (full-mantissa) double coordinates spanning up to ~2000 bits; and where the policy sends
+// which input.
 #include <catch2/catch.hpp>
 
 #include <cmath>
@@ -137,9 +139,103 @@ TEST_CASE("input policy: which construction runs for which doubles", "[exact2d]"
   wide.construction = AxisConstruction::BoostPolygonWide;
   exact_polygon_axis(ints, wide, &rep);
   CHECK(rep.construction == AxisConstruction::BoostPolygonWide);
-  // A full-mantissa coordinate next to 0 with others near 1: beyond 62 bits, CGAL's SDG.
+  // A full-mantissa coordinate next to 0 with others near 1: beyond 62 bits, the mp traits
+  // (CGAL's SDG only when asked for).
   const Shape2 tiny = ring_shape({{1.0 / 3, 1e-30 / 3}, {1, 0.1}, {0.7, 0.9}, {0.1, 0.6}}, "tiny");
   exact_polygon_axis(tiny, {}, &rep);
-  CHECK(rep.construction == AxisConstruction::CgalSdg);
+  CHECK(rep.construction == AxisConstruction::BoostPolygonMp);
+  CHECK(rep.mp_input_bits > 126);
   CHECK(testing::error_of([&] { exact_polygon_axis(tiny, wide); }).find("62 bits") != std::string::npos);
+  PolygonAxisOptions sdg;
+  sdg.construction = AxisConstruction::CgalSdg;
+  exact_polygon_axis(tiny, sdg, &rep);
+  CHECK(rep.construction == AxisConstruction::CgalSdg);
+}
+
+namespace {
+
+// A star polygon about the origin whose vertex k = 0 lies at angle pi/2 as computed
+// (x = r cos(pi/2 as a double) ~ 6e-17 r, full mantissa) and, when `tiny` is not 0, whose
+// vertex k = n/4 (at angle pi) has y = tiny times a seeded full-mantissa factor: spans of ~107 bits
+// (tiny = 0) or 52 + log2(r / tiny) bits.
+Shape2 spanning_star(std::mt19937& rng, int n, double r, double tiny) {
+  std::uniform_real_distribution<double> radius(0.3 * r, r), jitter(-0.3, 0.3), factor(1, 2);
+  std::vector<Point2> ring;
+  for (int k = 0; k < n; ++k) {
+    const double t = k == 0 ? M_PI / 2 : M_PI / 2 + 2 * M_PI * (k + jitter(rng)) / n, rk = k == 0 ? r : radius(rng);
+    ring.push_back({rk * std::cos(t), rk * std::sin(t)});
+  }
+  if (tiny != 0) ring[n / 4] = {-radius(rng), tiny * factor(rng) / 3};  // at angle pi
+  return ring_shape(ring, "spanning star " + std::to_string(n));
+}
+
+// The mp traits (the filter stage and the MPFR run alone) and CGAL's SDG give one topology.
+MpTier require_mp_topology(const Shape2& s) {
+  const PolygonSites sites = make_sites(s, 1.0);
+  MpTier tier, reference;
+  const Canonical f = canonical(boost_segment_voronoi_mp(sites, &tier));
+  const Canonical m = canonical(boost_segment_voronoi_mp(sites, &reference, false));
+  const Canonical c = canonical(cgal_segment_voronoi(sites));
+  INFO(s.name << ": " << tier.input_bits << "-bit integers, " << tier.float_bits << "-bit floats");
+  REQUIRE(f.vertices.size() == c.vertices.size());
+  CHECK(f.vertices == c.vertices);
+  CHECK(f.edges == c.edges);
+  CHECK(m.vertices == c.vertices);
+  CHECK(m.edges == c.edges);
+  CHECK(tier.input_bits == reference.input_bits);
+  return tier;
+}
+
+}  // namespace
+
+TEST_CASE("mp Boost (filter stage and MPFR) = CGAL SDG on 60 seeded stars spanning ~107 bits", "[exact2d]") {
+  std::mt19937 rng(20261205);
+  std::uniform_real_distribution<double> log_r(-3, 6);
+  int filtered = 0;
+  for (int trial = 0; trial < 60; ++trial) {
+    const int n = 5 + (trial * 37) % 240;
+    const double r = std::pow(10.0, log_r(rng));
+    CAPTURE(trial, n, r);
+    const MpTier t = require_mp_topology(spanning_star(rng, n, r, 0));
+    CHECK(t.input_bits > 90);  // beyond the wide traits' 62
+    CHECK(t.input_bits <= 126);
+    filtered += t.filtered;
+  }
+  CHECK(filtered >= 50);  // the filter stage decides (almost) every construction
+}
+
+TEST_CASE("mp Boost = CGAL SDG on dense wavy curves about the origin (~107 bits)", "[exact2d]") {
+  // Nearly cocircular consecutive sites: the filters' hardest case (generic phases).
+  for (const auto& [n, phase] : {std::pair<int, double>{1500, 0.3}, {3000, 1.1}}) {
+    CAPTURE(n, phase);
+    const MpTier t = require_mp_topology(wavy(n, 0, 0, 1e6, phase));
+    CHECK(t.input_bits > 100);
+  }
+}
+
+TEST_CASE("mp Boost = CGAL SDG on 30 seeded stars spanning 300-500 bits", "[exact2d]") {
+  std::mt19937 rng(20261206);
+  std::uniform_real_distribution<double> log_tiny(-150, -75);
+  for (int trial = 0; trial < 30; ++trial) {
+    const int n = 6 + (trial * 29) % 200;
+    const double tiny = std::pow(10.0, log_tiny(rng));
+    CAPTURE(trial, n, tiny);
+    const MpTier t = require_mp_topology(spanning_star(rng, n, 1e3, tiny));
+    CHECK(t.input_bits > 250);
+    CHECK(t.float_bits >= t.input_bits + 64);
+  }
+}
+
+TEST_CASE("mp Boost on coordinates from 1e-300 to 1e300 (~2000 bits)", "[exact2d]") {
+  std::mt19937 rng(20261207);
+  for (int trial = 0; trial < 4; ++trial) {
+    CAPTURE(trial);
+    Shape2 s;
+    const std::string err = testing::error_of([&] { s = spanning_star(rng, 8 + 5 * trial, 1e300, 1e-300); });
+    INFO(err);
+    REQUIRE(err == "no error");  // the validator accepts the polygon
+    const MpTier t = require_mp_topology(s);
+    CHECK(t.input_bits > 1900);
+    CHECK(t.float_bits >= t.input_bits + 64);
+  }
 }

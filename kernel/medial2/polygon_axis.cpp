@@ -79,6 +79,10 @@ Frame choose_frame(const Shape2& shape, const PolygonAxisOptions& options) {
   f.sites = make_sites(shape, 1.0);
   std::vector<long long> ints;
   int k_max = 0;
+  if (options.construction == AxisConstruction::BoostPolygonMp) {
+    f.construction = AxisConstruction::BoostPolygonMp;
+    return f;
+  }
   const bool wide_only = options.construction == AxisConstruction::BoostPolygonWide;
   bool decimal = options.construction != AxisConstruction::CgalSdg && !wide_only;
   std::vector<int> digits;
@@ -112,21 +116,24 @@ Frame choose_frame(const Shape2& shape, const PolygonAxisOptions& options) {
   if (options.construction != AxisConstruction::CgalSdg && dyadic_frame(f, wide_only)) return f;
   if (options.construction == AxisConstruction::BoostPolygon || wide_only)
     throw std::invalid_argument(shape.name + ": Boost.Polygon needs decimal or binary coordinates that fit int32, or 62 bits about their centre, once scaled");
+  if (options.construction != AxisConstruction::CgalSdg) f.construction = AxisConstruction::BoostPolygonMp;
   return f;
 }
 
 
 // The frame's Voronoi topology by its construction; the wide traits' overflow of their
-// 4096-bit exact integers (never observed) falls back to CGAL on the same frame.
-VoronoiTopology voronoi_of(Frame& frame) {
+// 4096-bit exact integers (never observed) falls back to the mp traits on the same frame
+// (exact integers of any size: its integer parts cannot overflow).
+VoronoiTopology voronoi_of(Frame& frame, MpTier* tier) {
   if (frame.construction == AxisConstruction::BoostPolygon) return boost_segment_voronoi(frame.sites);
   if (frame.construction == AxisConstruction::BoostPolygonWide) {
     try {
       return boost_segment_voronoi_wide(frame.sites);
     } catch (const std::overflow_error&) {
-      frame.construction = AxisConstruction::CgalSdg;
+      frame.construction = AxisConstruction::BoostPolygonMp;
     }
   }
+  if (frame.construction == AxisConstruction::BoostPolygonMp) return boost_segment_voronoi_mp(frame.sites, tier);
   return cgal_segment_voronoi(frame.sites);
 }
 
@@ -346,6 +353,7 @@ const char* to_string(AxisConstruction c) {
     case AxisConstruction::Auto: return "auto";
     case AxisConstruction::BoostPolygon: return "boost-polygon";
     case AxisConstruction::BoostPolygonWide: return "boost-polygon-wide";
+    case AxisConstruction::BoostPolygonMp: return "boost-polygon-mp";
     case AxisConstruction::CgalSdg: return "cgal-sdg";
   }
   return "unknown";
@@ -389,8 +397,13 @@ MedialGraph exact_polygon_axis(const Shape2& shape, const PolygonAxisOptions& op
   for (const Ring& r : shape.rings)
     if (r.points.size() < 3) throw std::invalid_argument(shape.name + ": a ring has fewer than 3 vertices");
   Frame frame = choose_frame(shape, options);
-  VoronoiTopology topo = voronoi_of(frame);
+  MpTier tier;
+  VoronoiTopology topo = voronoi_of(frame, &tier);
   rep.construction = frame.construction;
+  rep.mp_input_bits = tier.input_bits;
+  rep.mp_float_bits = tier.float_bits;
+  rep.mp_filtered = tier.filtered;
+  rep.mp_fallbacks = tier.fallbacks;
   rep.decimal_digits = frame.digits;
   rep.binary_digits = frame.binary_digits;
   rep.frame_scale = 1 / frame.to_input.get_d();

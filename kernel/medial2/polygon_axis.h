@@ -37,12 +37,16 @@
 // coordinates span at most 62 bits between the largest magnitude and the smallest lowest
 // set bit, e.g. full-mantissa coordinates away from 0), Boost.Polygon's builder runs on them
 // with wide coordinate traits (boost_wide_traits.h: 64-bit input, exact integer parts,
-// quadruple-precision filters). Otherwise CGAL's SDG runs on the exact double values.
+// quadruple-precision filters). Otherwise (the mp binary policy: any finite doubles, e.g. a
+// full-mantissa coordinate near 0 beside large ones) Boost.Polygon's builder runs on the
+// same exact integers of any size with the mp traits (boost_mp_traits.h: exact big integer
+// parts, MPFR filters with 64 guard bits beyond the integers' span). CGAL's SDG runs on the
+// exact double values only when asked for (PolygonAxisOptions::construction).
 // Every policy gives the axis of the exact input polygon (the decimal one for the first),
 // and every combinatorial decision is exact.
 // Contract: a validated Shape2 (shapes/validate_shape.h). Throws std::invalid_argument
 // for an empty shape.
-// Complexity: O(n log n) (Boost, both traits) plus O(n) circle work; CGAL SDG is superlinear on dense
+// Complexity: O(n log n) (Boost, every traits) plus O(n) circle work; CGAL SDG is superlinear on dense
 // samples of smooth curves with full-mantissa coordinates (its interval filter fails on the
 // near-degenerate incircle tests; measured in experiments/bench_polygon_axis.cpp).
 #pragma once
@@ -59,7 +63,9 @@ namespace grassfire {
 // BoostPolygon: int32 frame (decimal or binary policy); BoostPolygonWide: the wide binary
 // policy. Asking for BoostPolygon accepts either Boost frame; asking for BoostPolygonWide
 // skips the decimal policy and the int32 frame (the wide traits on the binary frame).
-enum class AxisConstruction { Auto, BoostPolygon, BoostPolygonWide, CgalSdg };
+// BoostPolygonMp: the mp binary policy (any finite doubles; asking for it skips the others).
+// CgalSdg runs only when asked for.
+enum class AxisConstruction { Auto, BoostPolygon, BoostPolygonWide, BoostPolygonMp, CgalSdg };
 const char* to_string(AxisConstruction c);
 
 struct PolygonAxisOptions {
@@ -71,6 +77,11 @@ struct PolygonAxisReport {
   AxisConstruction construction = AxisConstruction::Auto;  // the one that ran
   int decimal_digits = -1;  // K when the decimal policy applied, else -1
   int binary_digits = std::numeric_limits<int>::min();  // K when the binary policy applied (frame = input x 2^K)
+  // The mp policy: bits of its integers about their centre and of its floats; whether the
+  // double-interval filter stage ran it, and how many decisions that stage handed to MPFR.
+  int mp_input_bits = 0, mp_float_bits = 0;
+  bool mp_filtered = false;
+  std::uint64_t mp_fallbacks = 0;
   double frame_scale = 1;   // frame coordinates = input coordinates x frame_scale
   std::uint64_t polygon_vertices = 0;
   std::uint64_t voronoi_vertices = 0;   // interior Voronoi vertices before contraction

@@ -9,7 +9,8 @@
 // are apex vertices (R = 0, leaves of the medial axis, DESIGN.md 4).
 // Two constructions with exact topology: Boost.Polygon's voronoi builder (integer input
 // up to int32 with its default traits, or within 2^62 of the frame's centre with the wide
-// traits of boost_wide_traits.h), and CGAL's Segment_Delaunay_graph_2 with filtered exact
+// traits of boost_wide_traits.h, or any finite doubles with the mp traits of
+// boost_mp_traits.h), and CGAL's Segment_Delaunay_graph_2 with filtered exact
 // traits (any double input; exact kernel Gmpzf, segments in seeded random order). Boost's post-pass that merges vertices within 128 ulps is
 // switched off: coincident vertices (cocircular sites) come out as zero-length edges and
 // are contracted later by an exact test (polygon_axis.cpp), never by a tolerance.
@@ -18,7 +19,7 @@
 // boundary only at an endpoint shared by its two sites).
 // Contract: a validated Shape2 (shapes/validate_shape.h) mapped to the exact frame.
 // Complexity: O(n log n) for n polygon vertices (Boost; the wide traits cost 8-13x the
-// default's in bench_polygon_axis); CGAL SDG is superlinear on dense
+// default's in bench_polygon_axis, the mp traits more); CGAL SDG is superlinear on dense
 // samples of smooth curves with full-mantissa coordinates, where its interval filter fails
 // more and more often (measured: experiments/bench_polygon_axis.cpp, notes fast2d2.md).
 #pragma once
@@ -74,6 +75,20 @@ VoronoiTopology boost_segment_voronoi(const PolygonSites& sites);
 // exact intermediate exceeds 4096 bits (boost_wide_traits.h).
 bool fits_wide_boost(const PolygonSites& sites);
 VoronoiTopology boost_segment_voronoi_wide(const PolygonSites& sites);
+// Boost.Polygon's voronoi builder with the mp traits (boost_mp_traits.h): any finite double
+// frame, taken exactly as integers x 2^K (no limit on the coordinates' span); O(n log n).
+// `tier` reports the bits of those integers about the frame's centre and of the floats.
+// `filtered`: the construction ran in the double-interval filter stage (number/
+// filter_float.h), which takes exactly the MPFR run's branches; `fallbacks`: its node
+// comparisons and circle events decided by the MPFR predicates (boost_mp_traits.h).
+struct MpTier {
+  int input_bits = 0;
+  int float_bits = 0;
+  bool filtered = false;
+  std::uint64_t fallbacks = 0;
+};
+// filter = false skips the filter stage (the MPFR run alone: the reference it must equal).
+VoronoiTopology boost_segment_voronoi_mp(const PolygonSites& sites, MpTier* tier = nullptr, bool filter = true);
 // CGAL Segment_Delaunay_graph_2 (filtered exact traits, no intersecting segments).
 VoronoiTopology cgal_segment_voronoi(const PolygonSites& sites);
 
