@@ -56,6 +56,7 @@
 #include "medial2/polygon_axis.h"
 #include "medial2/polygon_axis_geometry.h"
 #include "medial2/polygon_axis_symmetry.h"
+#include "cli.h"
 
 using namespace grassfire;
 
@@ -149,9 +150,10 @@ void report_details(int n, const char* shape, const PolygonAxisReport& rep, cons
   }
 }
 
-}  // namespace
+constexpr const char* kUsage =
+    "usage: bench_polygon_axis [--sizes a,b,c] [--max-cgal N] [--max-unrounded N] [--repeat K] [--shapes a,b]\nthe exact polygon axis (+ EDF) against bare Boost.Polygon construct_voronoi and bare CGAL Segment_Delaunay_graph_2 on the same polygon.\n(CSV columns and details: the header of experiments/bench_polygon_axis.cpp)\n";
 
-int main(int argc, char** argv) {
+int run(int argc, char** argv) {
   std::vector<int> sizes{1000, 10000, 100000};
   long max_cgal = 100000, max_unrounded = 100000;
   std::string shapes = ",symmetric,shifted,offset,unrounded,";
@@ -171,7 +173,7 @@ int main(int argc, char** argv) {
       std::stringstream ss(argv[i + 1]);
       for (std::string t; std::getline(ss, t, ',');) sizes.push_back(std::atoi(t.c_str()));
     } else {
-      std::fprintf(stderr, "usage: bench_polygon_axis [--sizes a,b,c] [--max-cgal N] [--max-unrounded N] [--repeat K] [--shapes a,b]\n");
+      std::fputs(kUsage, stderr);
       return 2;
     }
   }
@@ -228,4 +230,10 @@ int main(int argc, char** argv) {
     }
   }
   return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  return grassfire::experiments::guarded_main(argc, argv, "bench_polygon_axis", kUsage, run);
 }

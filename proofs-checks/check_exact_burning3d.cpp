@@ -255,7 +255,7 @@ std::vector<CheckRow> check_exact_burning3d(const CheckContext& ctx) {
   const int sheets = ctx.tiny() ? 2 : ctx.quick() ? 4 : 12;
   ExactTallies s;
   int refused = 0;
-  for (std::uint32_t seed = 2026, done = 0; done < static_cast<std::uint32_t>(sheets) && seed < 2026 + 4 * sheets; ++seed)
+  for (std::uint32_t seed = 2026, done = 0; done < static_cast<std::uint32_t>(sheets) && seed < 2026u + 4u * static_cast<std::uint32_t>(sheets); ++seed)
     check_sheet(ctx, seed, s) ? ++done : ++refused;
   std::vector<CheckRow> rows = corpus_rows(
       "random planar sheets (seeded grid masks: holes, reflex corners; tilted; random border rules and radii)",

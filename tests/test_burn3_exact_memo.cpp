@@ -17,7 +17,7 @@
 using namespace grassfire;
 using testing::built;
 
-TEST_CASE("the certifier's memo repeats what a fresh certifier decides; equal front ids are one expression",
+TEST_CASE("the certifier's memo repeats what a fresh certifier decides, and equal front ids are one expression",
           "[exact3][memo]") {
   const MedialComplex mc = built(read_ma(std::string(GF_PROJECT_DATA) + "/ma/real/tripod-s2.ma"));
   ExactBurning eb(mc);

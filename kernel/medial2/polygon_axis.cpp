@@ -276,7 +276,7 @@ class Builder {
       const std::uint32_t root = group_[i];
       if (node_of[root] == kNone) {
         node_of[root] = static_cast<std::uint32_t>(nodes.size());
-        data.push_back({circles_[root], {}});
+        data.push_back({circles_[root], {}, {}, true, {}});
         data.back().radius = topo_.vertices[root].apex ? Interval(0.0) : values_[root].r;
         const CircleValue<Interval>& v = values_[root];
         nodes.push_back({{v.x.mid() * scale_d, v.y.mid() * scale_d}, v.r * scale});
@@ -301,7 +301,7 @@ class Builder {
     for (std::size_t e = 0; e < topo_.edges.size(); ++e) {
       if (contracted_[e]) continue;
       const auto& ed = topo_.edges[e];
-      AxisEdgeData a{node_of[ed.u], node_of[ed.v], ed.site_a, ed.site_b, is_parabolic(ed.site_a, ed.site_b)};
+      AxisEdgeData a{node_of[ed.u], node_of[ed.v], ed.site_a, ed.site_b, is_parabolic(ed.site_a, ed.site_b), {}};
       Interval len = edge_length(*sites_, a, values_[group_[ed.u]], values_[group_[ed.v]]);
       if (!is_tight(len)) {
         ++report_.dd_refinements;
