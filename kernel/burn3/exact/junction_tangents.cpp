@@ -81,14 +81,22 @@ class Prover {
     if (x.kind == TimeExpr::Kind::WindowAt && x.b == q_ && window_term(x.a)) return true;
     return endpoint_ && equals_r(e);
   }
-  // w(Q) = a(S_b): w is a's ancestor, or of one front with one in the same frame (then Q's
-  // image in that frame is its image in w's triangle).
+  // w(Q) = a(S_b): w is of one front with a window y of a's chain in the same frame, or w
+  // and y descend from one window z by unfoldings that all fix Q (the fan of windows about
+  // Q: then w(Q) = z(Q) = y(Q)); and Q's image in y's frame is carried to S_b.
   bool window_term(std::uint32_t w) {
     const std::uint32_t fw = cert_.front_id(w);
-    for (std::uint32_t y = a_; y != kNoIndex; y = s_.windows[y].parent)
-      if ((y == w || (cert_.front_id(y) == fw && u_.same_frame(s_.windows[y].triangle, s_.windows[w].triangle))) &&
-          same_carriage(y))
-        return true;
+    for (std::uint32_t y = a_; y != kNoIndex; y = s_.windows[y].parent) {
+      if (!same_carriage(y)) continue;
+      if (cert_.front_id(y) == fw && u_.same_frame(s_.windows[y].triangle, s_.windows[w].triangle)) return true;
+      for (std::uint32_t z = w; z != kNoIndex && carried(w, z).empty(); z = s_.windows[z].parent)
+        if (ancestor_or_self(z, y) && carried(y, z).empty()) return true;
+    }
+    return false;
+  }
+  bool ancestor_or_self(std::uint32_t z, std::uint32_t y) const {
+    for (; y != kNoIndex; y = s_.windows[y].parent)
+      if (y == z) return true;
     return false;
   }
   // Term e is exactly sqrt(R^2(Q)).
