@@ -108,7 +108,7 @@ TEST_CASE("tangent handover: a sloped plane wave hands over to the circle about 
 // unclassified before the proof, 9 after, 47 tangents; exact counts, so that a proof that
 // claims more than it should is seen too: with unfoldings taken to fix Q whatever edge they
 // cross and a Min proved by either term, it claims 48).
-TEST_CASE("tangent handovers: never claimed at a certified corner; tripod-s2's counts", "[exact3][junction][tangent]") {
+TEST_CASE("tangent handovers: never claimed at a certified corner, and tripod-s2's counts", "[exact3][junction][tangent]") {
   BorderBurn b(read_ma(std::string(GF_PROJECT_DATA) + "/ma/real/tripod-s2.ma"));
   const JunctionPoints& j = b.points;
   CHECK(j.unclassified == 9);
