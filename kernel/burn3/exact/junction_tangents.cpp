@@ -78,7 +78,7 @@ class Prover {
   bool proved(std::uint32_t e) {
     const TimeExpr& x = s_.times[e];
     if (x.kind == TimeExpr::Kind::Min) return proved(x.a) && proved(x.b);
-    if (x.kind == TimeExpr::Kind::WindowAt && x.b == q_ && window_term(x.a)) return true;
+    if (x.kind == TimeExpr::Kind::WindowAt && x.b == q_ && (window_term(x.a) || crossing_term(x.a))) return true;
     return endpoint_ && equals_r(e);
   }
   // w(Q) = a(S_b): w is of one front with a window y of a's chain in the same frame, or w
@@ -93,6 +93,14 @@ class Prover {
         if (ancestor_or_self(z, y) && carried(y, z).empty()) return true;
     }
     return false;
+  }
+  // At a certified crossing Q of w and w2 (a kink's edge point), w(Q) = w2(Q) by Q's
+  // defining equation: w's term is proved when w2's is.
+  bool crossing_term(std::uint32_t w) {
+    if (!is_edge_point(q_)) return false;
+    const auto& eq = s_.edge_points[q_ & ~kEdgePointBound].equal_windows;
+    if (eq[0] == kNoIndex || (w != eq[0] && w != eq[1])) return false;
+    return window_term(w == eq[0] ? eq[1] : eq[0]);
   }
   bool ancestor_or_self(std::uint32_t z, std::uint32_t y) const {
     for (; y != kNoIndex; y = s_.windows[y].parent)

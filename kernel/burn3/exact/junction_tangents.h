@@ -21,6 +21,9 @@
 //    source image reaches t by the same unfoldings as a's front from w (equal crossing lists:
 //    edge, triangle entered, triangle left), starting in w's frame: then S_b is the image of
 //    Q by the isometry that carries w's function to a's, and a(S_b) = w(Q);
+//  - WindowAt(w, Q) at a kink's edge point Q that is a certified crossing of w and w2
+//    (EdgePoint::equal_windows: Q is defined as the only root of w - w2 in its bracket, so
+//    w(Q) = w2(Q)): proved when the term WindowAt(w2, Q) is;
 //  - at a vertex Q that ends the border edge of a's plane wave, with a reaching t from its
 //    root by the same unfoldings as b from its root (both roots in one frame): a(S_b) =
 //    sqrt(R^2(Q)) (plane_wave_in_frame matches the ignition at both ends), and a term is
