@@ -39,7 +39,7 @@
 // |BT_h - BT_exact| (midpoint of the enclosure).
 // Times are processor seconds in forked children, the complex built outside both.
 // CSV: axis,triangles,singular_edges,exact_s,uncertified,uncertified_breaks,kinks,merges,
-// quenches,unclassified,max_bt,h_1pct,discrete_s,discrete_err,ratio (= exact_s /
+// quenches,unclassified,tangents (junction_points.h),max_bt,h_1pct,discrete_s,discrete_err,ratio (= exact_s /
 // discrete_s at h_1pct; at the finest h tried when not reached)
 // Usage: bench_burn3d_exact --axes [--quick] [--axis NAME]   (--quick: the two smallest
 // axes; --axis: only the axes whose name contains NAME)
@@ -126,7 +126,7 @@ std::vector<double> run_exact(const TriangleMesh3& m) {
   return out;
 }
 
-// [seconds, uncertified, uncertified breaks, kinks, merges, quenches, unclassified, mid
+// [seconds, uncertified, uncertified breaks, kinks, merges, quenches, unclassified, tangents, mid
 //  per vertex]
 std::vector<double> run_exact_axis(const MedialComplex& mc) {
   const std::clock_t start = std::clock();
@@ -141,11 +141,12 @@ std::vector<double> run_exact_axis(const MedialComplex& mc) {
                              static_cast<double>(j.kinks.size()),
                              static_cast<double>(j.merges.size()),
                              static_cast<double>(j.quenches.size()),
-                             static_cast<double>(j.unclassified)};
+                             static_cast<double>(j.unclassified),
+                             static_cast<double>(j.tangents.size())};
   for (const Interval& bt : eb.vertex_burn_times()) out.push_back(bt.is_infinite() ? INFINITY : bt.mid());
   return out;
 }
-constexpr std::size_t kExactHeader = 7;
+constexpr std::size_t kExactHeader = 8;
 
 // [seconds, BT_h per vertex]
 std::vector<double> run_discrete_axis(const MedialComplex& mc, double h) {
@@ -173,7 +174,7 @@ double max_error(const std::vector<double>& exact, const std::vector<double>& di
 
 int bench_axes(bool quick, const std::string& only) {
   std::printf("axis,triangles,singular_edges,exact_s,uncertified,uncertified_breaks,kinks,merges,quenches,unclassified,"
-              "max_bt,h_1pct,discrete_s,discrete_err,ratio\n");
+              "tangents,max_bt,h_1pct,discrete_s,discrete_err,ratio\n");
   struct Axis {
     std::string name;
     RawComplex raw;
@@ -199,7 +200,7 @@ int bench_axes(bool quick, const std::string& only) {
       exact = bench::in_child([&] { return run_exact_axis(mc); }, a.cpu_limit_s);
     } catch (const std::runtime_error&) {  // killed at the limit
       const std::vector<double> d = bench::in_child([&] { return run_discrete_axis(mc, default_burn_spacing(mc)); });
-      std::printf("%s,%zu,%zu,DNF (>%ld s),,,,,,,,,%.3f,,\n", a.name.c_str(), mc.triangle_count(),
+      std::printf("%s,%zu,%zu,DNF (>%ld s),,,,,,,,,,%.3f,,\n", a.name.c_str(), mc.triangle_count(),
                   mc.count(EdgeStratum::Singular), a.cpu_limit_s, d[0]);
       std::fflush(stdout);
       continue;
@@ -219,8 +220,9 @@ int bench_axes(bool quick, const std::string& only) {
       if (reached || !std::isfinite(err) || err > 0.9 * previous || discrete_s > 60) break;
     }
     if (exact[1] != 0) ++failures;
-    std::printf("%s,%zu,%zu,%.3f,%.0f,%.0f,%.0f,%.0f,%.0f,%.0f,%.4g,%s,%.3f,%.3g,%.3f\n", a.name.c_str(), mc.triangle_count(),
-                mc.count(EdgeStratum::Singular), exact[0], exact[1], exact[2], exact[3], exact[4], exact[5], exact[6], max_bt,
+    std::printf("%s,%zu,%zu,%.3f,%.0f,%.0f,%.0f,%.0f,%.0f,%.0f,%.0f,%.4g,%s,%.3f,%.3g,%.3f\n", a.name.c_str(), mc.triangle_count(),
+                mc.count(EdgeStratum::Singular), exact[0], exact[1], exact[2], exact[3], exact[4], exact[5], exact[6], exact[7],
+                max_bt,
                 reached ? std::to_string(h).c_str() : ("not reached (" + std::to_string(h) + ")").c_str(), discrete_s, err,
                 exact[0] / discrete_s);
     std::fflush(stdout);

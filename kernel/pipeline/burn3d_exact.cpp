@@ -49,8 +49,8 @@ nlohmann::json propagation_report(const PropagationStats& s) {
 }
 
 // Events by type (issue 9): windows reaching a vertex or a singular edge, the switch
-// points of the singular edges' (k-1)-th arrival by type (kinks, merges, quenches,
-// unclassified; junction_points.h), vertices burned by the link rule (singular points and
+// points of the singular edges' (k-1)-th arrival by type (kinks, merges, quenches, tangent
+// handovers, unclassified; junction_points.h), vertices burned by the link rule (singular points and
 // curve vertices included), ends of burned stretches; then the engine's own counters:
 // edge-point sources made at switches, pieces continued across a burned curve, arrivals
 // that realise no piece.
@@ -60,6 +60,7 @@ nlohmann::json event_report(const PropagationStats& s, const JunctionPoints& j) 
           {"kinks", j.kinks.size()},
           {"merges", j.merges.size()},
           {"quenches", j.quenches.size()},
+          {"tangents", j.tangents.size()},
           {"unclassified_switches", j.unclassified},
           {"link_rule_burns", s.vertex_burns},
           {"stretch_ends", s.stretch_ends},
@@ -147,6 +148,7 @@ BurnOutcome burn_by_exact(const BurnRequest& request) {
                 {"kinks", point_report(junction.kinks)},
                 {"merges", point_report(junction.merges)},
                 {"quenches", point_report(junction.quenches)},
+                {"tangents", point_report(junction.tangents)},
                 {"unclassified_switches", junction.unclassified},
                 {"singular_edges", walls ? "walls (not Definition 9: fronts stop at singular edges)"
                                          : mc.count(EdgeStratum::Singular) > 0 ? "junction rule (Definition 9)" : "none"}};

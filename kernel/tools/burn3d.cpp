@@ -65,7 +65,7 @@ int run_burn3d(int argc, char** argv) {
               "bt is an upper bound from the graph points of the point's triangles (kernel/burn3/discrete_query.h).\n"
               "The exact method returns certified enclosures: |bt - BT| <= bt_error at every query and vertex\n"
               "(--json: vertex_values.BT_error, stats.certification per stage, stats.uncertified; on singular\n"
-              "curves stats.kinks, stats.merges, stats.quenches as {x,y,z,bt,error} and stats.unclassified_switches).\n"
+              "curves stats.kinks, stats.merges, stats.quenches, stats.tangents as {x,y,z,bt,error} and stats.unclassified_switches).\n"
               "Every output is written to a temporary file and renamed when complete.\n"
               "Example: grassfire burn3d board-fin --spacing 0.1 --vtk board_fin.vtk\n"
               "         grassfire burn3d data/meshes/cube.off --mesh-is-complex --sources s.csv --at q.csv --csv bt.csv\n"

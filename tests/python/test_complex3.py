@@ -15,11 +15,11 @@ TIMING_KEYS = ("seconds", "total_seconds")
 
 def without_timings(value):
     """The report without its wall-clock members (they differ between two runs), and
-    without the exact engine's kinks, merges and quenches (the module turns those lists of
+    without the exact engine's kinks, merges, quenches and tangents (the module turns those lists of
     records into columns; kink_times compares the kinks)."""
     if isinstance(value, dict):
         return {k: without_timings(v) for k, v in value.items()
-                if not any(t in k for t in TIMING_KEYS) and k not in ("kinks", "merges", "quenches")}
+                if not any(t in k for t in TIMING_KEYS) and k not in ("kinks", "merges", "quenches", "tangents")}
     return value
 
 

@@ -330,6 +330,7 @@ std::uint32_t WindowPropagation::break_point(std::uint32_t edge, const Break& b)
       ep.exact = static_cast<std::int32_t>(s_.exact_times.size() - 1);
     }
     if (!k.certified) ++stats_.uncertified_breaks;
+    else ep.equal_windows = {records_[ra].window, records_[rb].window};
   } else {  // a record's ray through its bound vertex meets the edge there
     const std::uint32_t r = static_cast<std::uint32_t>((b.id >> 1) & 0x7fffffff);
     const int j = static_cast<int>(b.id & 1);

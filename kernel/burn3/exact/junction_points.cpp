@@ -4,6 +4,7 @@
 
 #include <algorithm>
 
+#include "burn3/exact/junction_tangents.h"
 #include "burn3/exact/sources.h"
 #include "number/ball.h"
 
@@ -53,7 +54,15 @@ bool same_front(Certifier& cert, const MedialComplex& mc, const WindowPropagatio
   return true;
 }
 
-std::optional<JunctionPoint::Kind> classify(const Slopes& d, bool same) {
+// Undecided slopes of two fronts that are not one function: a tangent handover when b (or
+// a) is proved to start on the other's front; both slopes certified finite (p is not the
+// point window's source, where its time has no derivative).
+bool tangent(ExactBurning& eb, const Slopes& d, const WindowPropagation::JunctionSwitch& sw) {
+  if (d.corner != kUndecided || d.left == kUndecided || d.right == kUndecided) return false;
+  return starts_on_front(eb, sw.left, sw.right) || starts_on_front(eb, sw.right, sw.left);
+}
+
+std::optional<JunctionPoint::Kind> classify(const Slopes& d, bool same, bool tangent) {
   using K = JunctionPoint::Kind;
   if (d.corner == 1) return K::Kink;
   if (d.corner == -1) {
@@ -62,6 +71,7 @@ std::optional<JunctionPoint::Kind> classify(const Slopes& d, bool same) {
     return std::nullopt;
   }
   if (same) return K::Merge;
+  if (tangent) return K::Tangent;
   return std::nullopt;
 }
 
@@ -72,6 +82,7 @@ const char* to_string(JunctionPoint::Kind k) {
     case JunctionPoint::Kind::Kink: return "kink";
     case JunctionPoint::Kind::Merge: return "merge";
     case JunctionPoint::Kind::Quench: return "quench";
+    case JunctionPoint::Kind::Tangent: return "tangent";
   }
   return "?";
 }
@@ -89,7 +100,7 @@ JunctionPoints junction_points(ExactBurning& eb) {
     // One front through one sheet side, split between two windows by the mesh: BT runs on
     // smoothly and no front meets another there.
     if (same && s.windows[sw.left].triangle == s.windows[sw.right].triangle) continue;
-    const std::optional<JunctionPoint::Kind> kind = classify(d, same);
+    const std::optional<JunctionPoint::Kind> kind = classify(d, same, !same && tangent(eb, d, sw));
     if (!kind) {
       ++out.unclassified;
       continue;
@@ -123,8 +134,8 @@ JunctionPoints junction_points(ExactBurning& eb) {
     const Interval bt = p.exact_bt ? p.exact_bt->approx() : s.times[sw.time].value;
     p.bt = bt.mid();
     p.error = std::max(p.error, round_up(std::max(bt.hi - p.bt, p.bt - bt.lo)));
-    (p.kind == JunctionPoint::Kind::Kink ? out.kinks : p.kind == JunctionPoint::Kind::Merge ? out.merges : out.quenches)
-        .push_back(std::move(p));
+    std::vector<JunctionPoint>* lists[] = {&out.kinks, &out.merges, &out.quenches, &out.tangents};
+    lists[static_cast<int>(p.kind)]->push_back(std::move(p));
   }
   return out;
 }

@@ -20,6 +20,12 @@
 //    Certifier::compare_times: two functions of this form that agree at three points are
 //    equal, since their difference vanishes on the roots of a quadratic). The same function
 //    through the same side is one front split by the mesh: not a switch, not listed;
+//  - a tangent handover when a and b lie in one triangle and b is a point window proved to
+//    start on a's front (junction_tangents.h: b's offset is a's time at b's source, so b >= a
+//    with equality along a ray, and a' = b' at p: A is differentiable there). One fire front
+//    runs on smoothly (a Linear border edge's plane wave continued by the circle about its
+//    border vertex, or a circle by the circle of a vertex it ignited): no corner, so neither a
+//    kink nor a quench, and not a merge of two fronts either; listed as `tangents`;
 //  - unclassified otherwise (a sign no stage certified; counted, never guessed).
 // Each point is given exactly where the data is exact: lambda as a sum of square roots (the
 // edge point's closed form, junction_kinks.h) and BT as an ExactSum (Certifier::
@@ -29,7 +35,8 @@
 // those points (vertex_burning.cpp) and the event log lists them. Quench lines inside
 // sheets (where two windows meet) are curves, not points, and not listed.
 // Contract: eb has run. Complexity: O(switches) Arb evaluations of two windows' chains at
-// 128..max_bits bits, plus 2 staged comparisons per switch whose slopes Arb cannot separate.
+// 128..max_bits bits, plus 2 staged comparisons per switch whose slopes Arb cannot separate
+// and a structural proof (junction_tangents.h) for those that are not one function.
 #pragma once
 
 #include <array>
@@ -42,7 +49,7 @@
 namespace grassfire {
 
 struct JunctionPoint {
-  enum class Kind : std::uint8_t { Kink, Merge, Quench };
+  enum class Kind : std::uint8_t { Kink, Merge, Quench, Tangent };
   Kind kind = Kind::Kink;
   std::uint32_t edge = 0;
   std::uint32_t edge_point = 0;       // index into WindowStore::edge_points
@@ -55,7 +62,7 @@ struct JunctionPoint {
 };
 
 struct JunctionPoints {
-  std::vector<JunctionPoint> kinks, merges, quenches;
+  std::vector<JunctionPoint> kinks, merges, quenches, tangents;
   std::uint64_t unclassified = 0;  // switch points no certified sign classified
 };
 

@@ -52,6 +52,9 @@ struct EdgePoint {
   // (narrower than `lambda`, a double enclosure), for the Arb stage; none when !bracketed.
   bool bracketed = false;
   mpq_class lo, hi;
+  // A certified crossing (kink_parameter): the two windows whose times are equal here by the
+  // point's defining equation (the only root of their difference in the bracket); else none.
+  std::array<std::uint32_t, 2> equal_windows{kNoIndex, kNoIndex};
 };
 // A wedge bound or a TimeExpr::WindowAt target with this bit set names edge_points[id & ~bit]
 // instead of a vertex.
