@@ -199,7 +199,7 @@ void mutate(const CheckContext& ctx, std::vector<Probe>& ps) {
 }
 
 struct Tallies {
-  Tally usc, lsc, prop6, prop7, prop4_sheet, prop4_curve;
+  Tally usc, lsc, prop6, prop7, prop4_sheet, prop4_curve, def10;
 };
 
 // |a - b| <= slack on enclosures (both infinite: equal).
@@ -319,6 +319,43 @@ void check_prop4_curves(const CheckContext& ctx, Values& values, const MedialCom
   }
 }
 
+// Def. 10 on the exact BT against the definition, at every vertex and edge probe: BT(x) is
+// the infimum of the times at which burning paths of Definition 9 reach x, and the discrete
+// baseline's value at a vertex is the time of one such path along its Steiner graph, so
+// BT(v) <= BT_h(v) (the upper side, at vertices of every instance; BT infinite only where
+// BT_h is; an edge probe need not be a graph point of the baseline, so it is not judged
+// against the baseline); where the
+// corpus has an independent value (the closed forms of books, the Y, box axes, the cube and
+// the octahedron; corpora3d.h), BT(x) equals it to rounding (both sides), R interpolated
+// linearly along an edge as the references expect.
+void check_definition10(const Instance3& in, const std::vector<Probe>& ep, Values& baseline, Tally& t) {
+  ++t.instances;
+  const MedialComplex& mc = in.mc;
+  for (const Probe& p : ep) {
+    if (p.x.kind != ComplexPoint::Kind::Vertex && p.x.kind != ComplexPoint::Kind::Edge) continue;
+    ++t.points;
+    if (p.x.kind == ComplexPoint::Kind::Vertex) {
+      const Interval h = baseline.at(p.x);
+      if (p.bt.is_infinite() != h.is_infinite()) violation(t, DiscreteBurning::kInfinity);
+      if (p.bt.is_infinite() || h.is_infinite()) continue;
+      if (p.bt.lo > h.hi + 1e-9 * (1 + std::abs(h.hi))) violation(t, p.bt.lo - h.hi);
+    }
+    if (p.bt.is_infinite() && !in.reference) continue;
+    if (!in.reference || in.planar_convex_sheet) continue;
+    double radius = 0;
+    if (p.x.kind == ComplexPoint::Kind::Vertex) {
+      radius = mc.vertex(p.x.id).radius;
+    } else {
+      const double s = p.x.parameter.get_d();
+      radius = (1 - s) * mc.vertex(mc.edge(p.x.id).v[0]).radius + s * mc.vertex(mc.edge(p.x.id).v[1]).radius;
+    }
+    const double ref = in.reference(mc, {p.x.point.x.get_d(), p.x.point.y.get_d(), p.x.point.z.get_d()}, radius);
+    if (std::isnan(ref)) continue;  // outside the reference's domain
+    if (!meets(p.bt, std::isinf(ref) ? Interval::infinity() : Interval(ref), 1e-9 * (1 + std::abs(ref))))
+      violation(t, std::isinf(ref) ? DiscreteBurning::kInfinity : std::max(p.bt.lo - ref, ref - p.bt.hi));
+  }
+}
+
 struct CorpusRun {
   Tallies exact, discrete;
   std::size_t refused = 0;
@@ -367,6 +404,7 @@ void run_instance(const CheckContext& ctx, const Instance3& in, CorpusRun& c) {
   for (const Probe& p : ep) judge(p, 0.0, et);
   check_prop4_sheet(ctx, ep, et.prop4_sheet);
   check_prop4_curves(ctx, ev, in.mc, et.prop4_curve);
+  check_definition10(in, ep, dv, et.def10);
 }
 
 const char* kProp51 = "Prop 5.1 (BT upper semicontinuous; a sequence reaches BT)";
@@ -385,7 +423,14 @@ std::vector<CheckRow> exact_rows(const Corpus3& corpus, const CorpusRun& c) {
       tally_row(std::string(kProp52) + " on the exact BT", corpus.name, ref, tol, c.exact.lsc, "length", note),
       tally_row(std::string(kProp6) + " on the exact BT", corpus.name, ref, tol, c.exact.prop6, "count", note),
       tally_row(std::string(kProp7) + " on the exact BT", corpus.name, "maximal closed subcomplex peeled combinatorially",
-                "exact", c.exact.prop7, "points", note)};
+                "exact", c.exact.prop7, "points", note),
+      tally_row("Def. 10 on the exact BT (BT = inf over burning paths)", corpus.name,
+                corpus.references.empty() || corpus.references == "none"
+                    ? "the discrete baseline's value at every vertex (the time of one burning path): BT <= BT_h"
+                    : "BT <= BT_h (the discrete baseline: one burning path's time) at every vertex; BT = the "
+                      "independent value (" + corpus.references + ") where the instance has one",
+                "the engine's certified enclosures; 1e-9 relative rounding of the doubles", c.exact.def10, "length",
+                note)};
   CheckRow sheet = tally_row("Prop 4 in a sheet on the exact BT (|BT(x) - BT(y)| <= d, no allowance)", corpus.name,
                              "d: the straight length between two points of one sequence (a segment inside one triangle)",
                              "the engine's certified enclosures; rounding of d only", c.exact.prop4_sheet, "length", note);
