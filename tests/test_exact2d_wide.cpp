@@ -221,20 +221,23 @@ TEST_CASE("mp Boost = CGAL SDG on dense wavy curves about the origin (~107 bits)
 namespace {
 
 // A star polygon about the origin whose vertices are integer points of radius 3..14 (many
-// exactly cocircular and collinear quadruples: exact ties everywhere), in increasing angle,
-// scaled by 2^40; the vertex on the ray at angle 0 gets y = 1e-3 / 3 (~107-bit span).
+// cocircular and collinear quadruples), in increasing angle, each coordinate moved by
+// m 2^-48 (m seeded in -2..2: exact ties and near ties below the double intervals'
+// resolution); the vertex on the ray at angle 0 gets y = 1e-18 / 3 (~118-bit span).
 Shape2 grid_star(std::mt19937& rng) {
-  std::vector<std::pair<double, Point2>> by_angle;
+  std::vector<std::pair<double, std::pair<int, int>>> by_angle;
   for (int x = -14; x <= 14; ++x)
     for (int y = -14; y <= 14; ++y)
-      if (x * x + y * y >= 9 && x * x + y * y <= 196) by_angle.push_back({std::atan2(y, x), {double(x), double(y)}});
-  std::sort(by_angle.begin(), by_angle.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+      if (x * x + y * y >= 9 && x * x + y * y <= 196) by_angle.push_back({std::atan2(y, x), {x, y}});
+  std::sort(by_angle.begin(), by_angle.end());
   std::bernoulli_distribution keep(0.5);
+  std::uniform_int_distribution<int> move(-2, 2);
   std::vector<Point2> ring;
   double last = -10;
   for (const auto& [angle, p] : by_angle)
     if (angle != last && (keep(rng) || angle == 0)) {  // one vertex per ray: a star polygon
-      ring.push_back({std::ldexp(p.x, 40), angle == 0 ? 1e-3 / 3 : std::ldexp(p.y, 40)});
+      const double x = p.first + std::ldexp(move(rng), -48), y = p.second + std::ldexp(move(rng), -48);
+      ring.push_back({x, angle == 0 ? 1e-18 / 3 : y});
       last = angle;
     }
   return ring_shape(ring, "grid star");
