@@ -14,7 +14,8 @@
 //   Tier128: input __int128 (B <= 126), 256-bit checked integers for the products of two
 //            coordinates, dynamic cpp_int for the circle events, P = 201 bits (60 digits).
 //   Tier128Filter: Tier128's integers, double-interval enclosures (number/filter_float.h) of
-//            its floats; FilterPredicates hands every decision they leave open to Tier128's
+//            its floats (robust_fpt's error bookkeeping: boost_filter_robust_fpt.h);
+//            FilterPredicates hands every decision they leave open to Tier128's
 //            predicates on the same sites, so the run takes Tier128's branches.
 //   TierGmp<D>: every integer a GMP integer, P = the precision of D decimal digits
 //            (D = 200: 667 bits, B <= 600; D = 700: 2328 bits, B <= 2260, which holds every
@@ -36,6 +37,7 @@
 #include <cstring>
 #include <vector>
 
+#include "medial2/boost_filter_robust_fpt.h"
 #include "number/filter_float.h"
 #include "number/rounded_float.h"
 
