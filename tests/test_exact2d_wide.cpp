@@ -6,6 +6,7 @@
 // which input.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <random>
 #include <set>
@@ -210,7 +211,65 @@ TEST_CASE("mp Boost = CGAL SDG on dense wavy curves about the origin (~107 bits)
     CAPTURE(n, phase);
     const MpTier t = require_mp_topology(wavy(n, 0, 0, 1e6, phase));
     CHECK(t.input_bits > 100);
+    // The corner circles (a vertex and its two segments, radius 0) are formed without MPFR
+    // and cancellation in robust_fpt's error bookkeeping is decided in the filter
+    // (boost_filter_robust_fpt.h); before, fallbacks > n (one MPFR circle per vertex).
+    CHECK(t.filtered);
+    CHECK(t.fallbacks < static_cast<std::uint64_t>(n) / 15);
   }
+}
+
+namespace {
+
+// A star polygon about the origin whose vertices are integer points of radius 3..14 (many
+// cocircular and collinear quadruples), in increasing angle, each coordinate moved by
+// m 2^-48 (m seeded in -2..2: exact ties and near ties below the double intervals'
+// resolution); the vertex on the ray at angle 0 gets y = 1e-18 / 3 (~118-bit span).
+Shape2 grid_star(std::mt19937& rng) {
+  std::vector<std::pair<double, std::pair<int, int>>> by_angle;
+  for (int x = -14; x <= 14; ++x)
+    for (int y = -14; y <= 14; ++y)
+      if (x * x + y * y >= 9 && x * x + y * y <= 196) by_angle.push_back({std::atan2(y, x), {x, y}});
+  std::sort(by_angle.begin(), by_angle.end());
+  std::bernoulli_distribution keep(0.5);
+  std::uniform_int_distribution<int> move(-2, 2);
+  std::vector<Point2> ring;
+  double last = -10;
+  for (const auto& [angle, p] : by_angle)
+    if (angle != last && (keep(rng) || angle == 0)) {  // one vertex per ray: a star polygon
+      const double x = p.first + std::ldexp(move(rng), -48), y = p.second + std::ldexp(move(rng), -48);
+      ring.push_back({x, angle == 0 ? 1e-18 / 3 : y});
+      last = angle;
+    }
+  return ring_shape(ring, "grid star");
+}
+
+}  // namespace
+
+TEST_CASE("mp filter stage: every decision it takes is the MPFR predicates' (near-degenerate grid stars)",
+          "[exact2d]") {
+  // Verification mode: each node comparison, circle event (and its enclosures) and event
+  // comparison the double intervals decide is decided again by the MPFR predicates. A
+  // filter that guesses where its intervals overlap disagrees on these exact ties.
+  std::mt19937 rng(20261208);
+  std::uint64_t verified = 0;
+  for (int trial = 0; trial < 10; ++trial) {
+    CAPTURE(trial);
+    const Shape2 s = grid_star(rng);
+    const PolygonSites sites = make_sites(s, 1.0);
+    MpTier t, reference;
+    const Canonical f = canonical(boost_segment_voronoi_mp(sites, &t, true, true));
+    CHECK(t.input_bits > 100);
+    CHECK(t.filtered);
+    CHECK(t.verify_mismatches == 0);
+    verified += t.verified;
+    // Exact ties: Boost's and CGAL's diagrams split degenerate vertices differently, so the
+    // reference is the MPFR run alone, whose branches the filter stage must take.
+    const Canonical m = canonical(boost_segment_voronoi_mp(sites, &reference, false));
+    CHECK(f.vertices == m.vertices);
+    CHECK(f.edges == m.edges);
+  }
+  CHECK(verified > 10000);
 }
 
 TEST_CASE("mp Boost = CGAL SDG on 30 seeded stars spanning 300-500 bits", "[exact2d]") {

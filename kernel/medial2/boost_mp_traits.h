@@ -14,7 +14,8 @@
 //   Tier128: input __int128 (B <= 126), 256-bit checked integers for the products of two
 //            coordinates, dynamic cpp_int for the circle events, P = 201 bits (60 digits).
 //   Tier128Filter: Tier128's integers, double-interval enclosures (number/filter_float.h) of
-//            its floats; FilterPredicates hands every decision they leave open to Tier128's
+//            its floats (robust_fpt's error bookkeeping: boost_filter_robust_fpt.h);
+//            FilterPredicates hands every decision they leave open to Tier128's
 //            predicates on the same sites, so the run takes Tier128's branches.
 //   TierGmp<D>: every integer a GMP integer, P = the precision of D decimal digits
 //            (D = 200: 667 bits, B <= 600; D = 700: 2328 bits, B <= 2260, which holds every
@@ -36,6 +37,7 @@
 #include <cstring>
 #include <vector>
 
+#include "medial2/boost_filter_robust_fpt.h"
 #include "number/filter_float.h"
 #include "number/rounded_float.h"
 
@@ -167,6 +169,17 @@ struct TierGmp : Traits<Gmp, Gmp, Gmp, Gmp, Float<D>, Float<D>, UlpComparison<Fl
 // the construction with Tier128. `fallbacks` counts the decisions taken by Tier128.
 inline thread_local std::uint64_t fallbacks = 0;
 
+// Verification mode (tests): when `verify` is set, every decision the filter stage takes
+// itself is also taken by Tier128 (event comparisons on circles need circle_origins), and
+// every circle it forms must enclose Tier128's; `verified` counts the decisions checked,
+// `verify_mismatches` those where the filter's answer or enclosure is not Tier128's.
+inline thread_local bool verify = false;
+inline thread_local std::uint64_t verified = 0, verify_mismatches = 0;
+inline void check(bool agrees) {
+  ++verified;
+  verify_mismatches += !agrees;
+}
+
 using Site128 = boost::polygon::detail::site_event<__int128>;
 using FilterCircle = boost::polygon::detail::circle_event<FilterFloat>;
 using ExactCircle = boost::polygon::detail::circle_event<Tier128::fpt_type>;
@@ -195,12 +208,15 @@ struct FilterPredicates : boost::polygon::detail::voronoi_predicates<Tier128Filt
   class node_comparison_predicate {
    public:
     bool operator()(const Node& a, const Node& b) const {
+      bool r;
       try {
-        return filter_(a, b);
+        r = filter_(a, b);
       } catch (const FilterUndecided&) {
         ++fallbacks;
         return exact_(a, b);
       }
+      if (verify) check(r == exact_(a, b));
+      return r;
     }
 
    private:
@@ -213,7 +229,16 @@ struct FilterPredicates : boost::polygon::detail::voronoi_predicates<Tier128Filt
    public:
     bool operator()(const Site& s1, const Site& s2, const Site& s3, Circle& circle) {
       try {
-        if (!filter_(s1, s2, s3, circle)) return false;
+        const int corner = corner_index(s1, s2, s3);
+        bool formed;
+        if (corner != 0) {
+          formed = corner_exists(s1, s2, s3, corner);
+          if (formed) circle = corner_circle(corner == 1 ? s1 : corner == 2 ? s2 : s3);
+        } else {
+          formed = filter_(s1, s2, s3, circle);
+        }
+        if (verify) verify_formation(s1, s2, s3, formed, circle);
+        if (!formed) return false;
       } catch (const FilterUndecided&) {
         ++fallbacks;
         ExactCircle c;
@@ -225,10 +250,57 @@ struct FilterPredicates : boost::polygon::detail::voronoi_predicates<Tier128Filt
     }
 
    private:
+    // A corner triple: one point site P and two segment sites that both end at P, neither
+    // vertical nor the two parallel (1, 2, 3: which site is P; 0: not a corner triple).
+    // The circle tangent to both segments' lines through P is the point P itself (radius
+    // 0), which Boost's lazy pss evaluates as t = -b / a^2 with b an exact zero computed
+    // from rounded square roots: the filter cannot decide the sign of t (which Tier128's
+    // rounding noise decides), once per polygon vertex.
+    static int corner_index(const Site& s1, const Site& s2, const Site& s3) {
+      const int points = !s1.is_segment() + !s2.is_segment() + !s3.is_segment();
+      if (points != 1) return 0;
+      const int k = !s1.is_segment() ? 1 : !s2.is_segment() ? 2 : 3;
+      const Site& p = k == 1 ? s1 : k == 2 ? s2 : s3;
+      const Site& a = k == 1 ? s2 : s1;
+      const Site& b = k == 3 ? s2 : s3;
+      const auto ends_at = [&p](const Site& s) { return s.point0() == p.point0() || s.point1() == p.point0(); };
+      if (!ends_at(a) || !ends_at(b) || a.x0() == a.x1() || b.x0() == b.x1() || p.x0() == 0 || p.y0() == 0) return 0;
+      const Int256 cross = Int256(a.x1() - a.x0()) * Int256(b.y1() - b.y0()) - Int256(a.y1() - a.y0()) * Int256(b.x1() - b.x0());
+      return cross == 0 ? 0 : k;
+    }
+    // Boost's existence test for the corner triple, on the rotation its formation uses.
+    bool corner_exists(const Site& s1, const Site& s2, const Site& s3, int corner) {
+      if (corner == 1) return exists_.pss(s1, s2, s3, 1);
+      if (corner == 2) return exists_.pss(s2, s1, s3, 2);
+      return exists_.pss(s3, s1, s2, 3);
+    }
+    // Encloses Tier128's circle for a corner triple: Boost's error bookkeeping (assumption
+    // (c)) puts Tier128's lazy or exactly recomputed values within 64 ulps of 201 bits
+    // (relative 2^-194) of the exact circle (P.x, P.y, lower_x = P.x); two double ulps
+    // either side of P's non-zero integer coordinates are wider than that (a zero
+    // coordinate, whose relative bound says nothing, is left to the general path).
+    static Circle corner_circle(const Site& p) {
+      const auto widen = [](const FilterFloat& v) {
+        return FilterFloat::enclosing(filter_detail::next_down(filter_detail::next_down(v.lo())),
+                                      filter_detail::next_up(filter_detail::next_up(v.hi())));
+      };
+      const FilterFloat x = widen(FilterFloat(p.x0())), y = widen(FilterFloat(p.y0()));
+      return Circle(x, y, x);
+    }
+    // Verification mode: Tier128 forms the same circle, inside the filter's enclosures.
+    void verify_formation(const Site& s1, const Site& s2, const Site& s3, bool formed, const Circle& circle) {
+      ExactCircle c;
+      const bool exact = exact_(s1, s2, s3, c);
+      const auto in = [](const FilterFloat& e, const Tier128::fpt_type& v) {
+        return mpfr_cmp_d(v.data(), e.lo()) >= 0 && mpfr_cmp_d(v.data(), e.hi()) <= 0;
+      };
+      check(exact == formed && (!formed || (in(circle.x(), c.x()) && in(circle.y(), c.y()) && in(circle.lower_x(), c.lower_x()))));
+    }
     static FilterFloat enclose(const Tier128::fpt_type& v) {
       return FilterFloat::enclosing(mpfr_get_d(v.data(), MPFR_RNDD), mpfr_get_d(v.data(), MPFR_RNDU));
     }
     typename Filter::template circle_formation_predicate<Site, Circle> filter_;
+    typename Filter::template circle_existence_predicate<Site> exists_;
     typename Exact::template circle_formation_predicate<Site, ExactCircle> exact_;
   };
 
@@ -237,31 +309,40 @@ struct FilterPredicates : boost::polygon::detail::voronoi_predicates<Tier128Filt
    public:
     bool operator()(const Site& a, const Site& b) const { return filter_(a, b); }
     bool operator()(const Site& a, const Circle& c) const {
+      bool r;
       try {
-        return filter_(a, c);
+        r = filter_(a, c);
       } catch (const FilterUndecided&) {
         return exact_(a, exact(c));
       }
+      if (verify && circle_origins) check(r == exact_(a, exact(c, false)));
+      return r;
     }
     bool operator()(const Circle& c, const Site& a) const {
+      bool r;
       try {
-        return filter_(c, a);
+        r = filter_(c, a);
       } catch (const FilterUndecided&) {
         return exact_(exact(c), a);
       }
+      if (verify && circle_origins) check(r == exact_(exact(c, false), a));
+      return r;
     }
     bool operator()(const Circle& c, const Circle& d) const {
+      bool r;
       try {
-        return filter_(c, d);
+        r = filter_(c, d);
       } catch (const FilterUndecided&) {
         return exact_(exact(c), exact(d));
       }
+      if (verify && circle_origins) check(r == exact_(exact(c, false), exact(d, false)));
+      return r;
     }
 
    private:
-    static ExactCircle exact(const Circle& c) {
+    static ExactCircle exact(const Circle& c, bool count = true) {
       if (!circle_origins) throw FilterUndecided{};
-      ++fallbacks;
+      fallbacks += count;
       return circle_origins->exact(c);
     }
     typename Filter::template event_comparison_predicate<Site, Circle> filter_;

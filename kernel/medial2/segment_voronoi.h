@@ -86,9 +86,15 @@ struct MpTier {
   int float_bits = 0;
   bool filtered = false;
   std::uint64_t fallbacks = 0;
+  // Verification mode only: decisions of the filter stage checked against the MPFR
+  // predicates, and those that differ (or circles whose enclosures miss MPFR's values).
+  std::uint64_t verified = 0, verify_mismatches = 0;
 };
-// filter = false skips the filter stage (the MPFR run alone: the reference it must equal).
-VoronoiTopology boost_segment_voronoi_mp(const PolygonSites& sites, MpTier* tier = nullptr, bool filter = true);
+// filter = false skips the filter stage (the MPFR run alone: the reference it must equal);
+// verify = true (tests; several times slower) checks every decision the filter stage takes
+// itself against the MPFR predicates' (MpTier::verified, verify_mismatches).
+VoronoiTopology boost_segment_voronoi_mp(const PolygonSites& sites, MpTier* tier = nullptr, bool filter = true,
+                                         bool verify = false);
 // CGAL Segment_Delaunay_graph_2 (filtered exact traits, no intersecting segments).
 VoronoiTopology cgal_segment_voronoi(const PolygonSites& sites);
 

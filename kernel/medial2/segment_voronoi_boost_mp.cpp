@@ -106,7 +106,7 @@ VoronoiTopology construct(const PolygonSites& sites, const std::vector<mpz_class
 
 }  // namespace
 
-VoronoiTopology boost_segment_voronoi_mp(const PolygonSites& sites, MpTier* tier, bool filter) {
+VoronoiTopology boost_segment_voronoi_mp(const PolygonSites& sites, MpTier* tier, bool filter, bool verify) {
   const std::vector<mpz_class> v = exact_integers(sites);
   const int bits = bits_of(v);
   MpTier t;
@@ -117,16 +117,24 @@ VoronoiTopology boost_segment_voronoi_mp(const PolygonSites& sites, MpTier* tier
     out = construct<boost_mp::Tier128>(sites, v);
   } else if (bits <= boost_mp::Tier128::kInputBits) {
     t.float_bits = static_cast<int>(boost_mp::precision_bits<60>());
-    boost_mp::fallbacks = 0;
+    boost_mp::fallbacks = boost_mp::verified = boost_mp::verify_mismatches = 0;
     boost_mp::CircleOrigins origins;
     struct Scope {
-      explicit Scope(boost_mp::CircleOrigins* o) { boost_mp::circle_origins = o; }
-      ~Scope() { boost_mp::circle_origins = nullptr; }
-    } scope(&origins);
+      Scope(boost_mp::CircleOrigins* o, bool verify) {
+        boost_mp::circle_origins = o;
+        boost_mp::verify = verify;
+      }
+      ~Scope() {
+        boost_mp::circle_origins = nullptr;
+        boost_mp::verify = false;
+      }
+    } scope(&origins, verify);
     try {
       out = construct<boost_mp::Tier128Filter, boost_mp::FilterPredicates>(sites, v);
       t.filtered = true;
       t.fallbacks = boost_mp::fallbacks;
+      t.verified = boost_mp::verified;
+      t.verify_mismatches = boost_mp::verify_mismatches;
     } catch (const FilterUndecided&) {
       out = construct<boost_mp::Tier128>(sites, v);
     }
