@@ -125,18 +125,39 @@ class SampledAxisBuilder {
     do {
       infinite->info().id = kNone;
     } while (++infinite != done);
+    triangles_.reserve(dt_.number_of_faces());
+    circles_.reserve(dt_.number_of_faces());
+    adjacent_.reserve(dt_.number_of_faces());
     // The faces are visited in storage order; their vertices and neighbours are scattered
-    // in memory, so those of the face kAhead places further are prefetched.
-    constexpr int kAhead = 8;
-    auto ahead = dt_.all_faces_begin();
-    for (int k = 0; k < kAhead && ahead != dt_.all_faces_end(); ++k) ++ahead;
+    // in memory. So the vertices' data and the neighbours' infos of the face kAhead places
+    // further are prefetched (the addresses of the members themselves: a 56-byte face or a
+    // 32-byte vertex often straddles two cache lines), and the circles of the already
+    // numbered neighbours of the face kAhead / 2 places further (their infos are in cache
+    // by then).
+    constexpr int kAhead = 16;
+    auto ahead = dt_.all_faces_begin(), half = ahead;
+    for (int k = 0; k < kAhead && ahead != dt_.all_faces_end(); ++k) {
+      ++ahead;
+      if (k < kAhead / 2) ++half;
+    }
     for (auto f = dt_.all_faces_begin(); f != dt_.all_faces_end(); ++f) {
       if (ahead != dt_.all_faces_end()) {
         for (int i = 0; i < 3; ++i) {
-          __builtin_prefetch(&*ahead->vertex(i));
-          __builtin_prefetch(&*ahead->neighbor(i));
+          __builtin_prefetch(&ahead->vertex(i)->point());
+          __builtin_prefetch(&ahead->vertex(i)->info());
+          __builtin_prefetch(&ahead->neighbor(i)->info());
         }
         ++ahead;
+      }
+      if (half != dt_.all_faces_end()) {
+        for (int i = 0; i < 3; ++i) {
+          const std::uint32_t a = half->neighbor(i)->info().id;
+          if (a < circles_.size()) {
+            __builtin_prefetch(&circles_[a].center.x);
+            __builtin_prefetch(&circles_[a].center.y.hi);
+          }
+        }
+        ++half;
       }
       if (dt_.is_infinite(f)) continue;
       ++report.delaunay_triangles;
