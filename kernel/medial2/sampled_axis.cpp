@@ -212,7 +212,15 @@ class SampledAxisBuilder {
 
   // The Voronoi edges between candidates of different groups, by the rules of the header.
   void collect_edges(SampledAxisReport& report) {
-    for (const Adjacency& p : adjacent_) {
+    // The circles are read at random: those of the pair kAhead places further are
+    // prefetched (at the candidates themselves, which are almost always their groups').
+    constexpr std::size_t kAhead = 8;
+    for (std::size_t k = 0; k < adjacent_.size(); ++k) {
+      if (k + kAhead < adjacent_.size()) {
+        __builtin_prefetch(&circles_[adjacent_[k + kAhead].a]);
+        __builtin_prefetch(&circles_[adjacent_[k + kAhead].b]);
+      }
+      const Adjacency& p = adjacent_[k];
       const std::uint32_t ra = groups_.find(p.a), rb = groups_.find(p.b);
       if (ra == rb) continue;
       if (p.boundary_dual) {
@@ -246,7 +254,12 @@ class SampledAxisBuilder {
     }
     std::vector<MedialEdge> edges;
     edges.reserve(ends_.size());
-    for (auto& [a, b] : ends_) {
+    for (std::size_t k = 0; k < ends_.size(); ++k) {
+      if (k + 8 < ends_.size()) {  // random reads, as in collect_edges
+        __builtin_prefetch(&circles_[ends_[k + 8].first]);
+        __builtin_prefetch(&circles_[ends_[k + 8].second]);
+      }
+      auto& [a, b] = ends_[k];
       edges.push_back({node_of[a], node_of[b], EdgeKind::Segment, interval_distance(circles_[a].center, circles_[b].center)});
       a = node_of[a];
       b = node_of[b];
