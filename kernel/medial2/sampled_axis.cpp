@@ -9,6 +9,7 @@
 #include <CGAL/Triangulation_face_base_with_info_2.h>
 #include <CGAL/Triangulation_vertex_base_with_info_2.h>
 
+#include <algorithm>
 #include <memory>
 #include <numeric>
 #include <optional>
@@ -239,51 +240,72 @@ class SampledAxisBuilder {
     report.predicates = locator_->counters();
   }
 
-  // Nodes are the group representatives (the smallest candidate of each group), in
-  // candidate order; then the largest component (see keep_largest_component).
+  // Nodes are the group representatives (the smallest candidate of each group), ordered
+  // by the smallest sample id of their triangle, ties in candidate order; edges by their
+  // smaller end, ties in the order of collect_edges (two stable counting sorts). Samples
+  // are numbered along the boundary, so consecutive nodes of a chain of the axis mostly
+  // get consecutive numbers and the walks along the graph downstream (chains, fronts,
+  // components) read memory in order; in candidate order (the triangulation's storage
+  // order) they read it at random. Then the largest component (keep_largest_component).
   MedialGraph assemble(SampledAxisReport& report) {
+    auto key = [&](std::uint32_t a) { return std::min({triangles_[a][0], triangles_[a][1], triangles_[a][2]}); };
+    std::vector<std::uint32_t> start(points_.size() + 1, 0);
+    for (std::uint32_t a = 0; a < triangles_.size(); ++a)
+      if (groups_.find(a) == a) ++start[key(a) + 1];
+    std::partial_sum(start.begin(), start.end(), start.begin());
+    const std::size_t n = start.back();
     std::vector<std::uint32_t> node_of(triangles_.size(), kNone);
-    std::vector<MedialNode> nodes;
-    std::vector<std::array<std::uint32_t, 3>> node_triangle;
+    std::vector<std::uint32_t> candidate(n);
+    std::vector<MedialNode> nodes(n);
+    std::vector<std::array<std::uint32_t, 3>> node_triangle(n);
     for (std::uint32_t a = 0; a < triangles_.size(); ++a) {
       if (groups_.find(a) != a) continue;
-      node_of[a] = static_cast<std::uint32_t>(nodes.size());
+      const std::uint32_t v = start[key(a)]++;
+      node_of[a] = v;
+      candidate[v] = a;
       const IntervalPoint2& c = circles_[a].center;
-      nodes.push_back({Point2{c.x.mid(), c.y.mid()}, circles_[a].radius, std::max(c.x.radius(), c.y.radius())});
-      node_triangle.push_back(triangles_[a]);
+      nodes[v] = {Point2{c.x.mid(), c.y.mid()}, circles_[a].radius, std::max(c.x.radius(), c.y.radius())};
+      node_triangle[v] = triangles_[a];
     }
-    std::vector<MedialEdge> edges;
-    edges.reserve(ends_.size());
+    start.assign(n + 1, 0);
+    for (auto& [a, b] : ends_) ++start[std::min(node_of[a], node_of[b]) + 1];
+    std::partial_sum(start.begin(), start.end(), start.begin());
+    std::vector<MedialEdge> edges(ends_.size());
     for (std::size_t k = 0; k < ends_.size(); ++k) {
       if (k + 8 < ends_.size()) {  // random reads, as in collect_edges
         __builtin_prefetch(&circles_[ends_[k + 8].first]);
         __builtin_prefetch(&circles_[ends_[k + 8].second]);
       }
-      auto& [a, b] = ends_[k];
-      edges.push_back({node_of[a], node_of[b], EdgeKind::Segment, interval_distance(circles_[a].center, circles_[b].center)});
-      a = node_of[a];
-      b = node_of[b];
+      const auto [a, b] = ends_[k];
+      edges[start[std::min(node_of[a], node_of[b])]++] = {
+          node_of[a], node_of[b], EdgeKind::Segment, interval_distance(circles_[a].center, circles_[b].center)};
     }
+    for (std::size_t k = 0; k < edges.size(); ++k) ends_[k] = {edges[k].u, edges[k].v};
     report.inside_nodes = nodes.size();
-    keep_largest_component(nodes, node_triangle, edges, ends_, report);
+    keep_largest_component(nodes, node_triangle, candidate, edges, ends_, report);
     report.edges = edges.size();
     auto geometry = std::make_shared<SampledVoronoiGeometry>(std::move(points_), std::move(node_triangle), std::move(ends_));
     return MedialGraph(std::move(nodes), std::move(edges), std::move(geometry));
   }
 
   // The shape is connected, so its medial axis is; smaller components of the Voronoi
-  // graph are fragments left by undersampled sharp features. Keep the largest one.
+  // graph are fragments left by undersampled sharp features. Keep the largest one; of
+  // equally large ones, the one with the smallest candidate (`candidate`: per node).
   static void keep_largest_component(std::vector<MedialNode>& nodes, std::vector<std::array<std::uint32_t, 3>>& triangles,
-                                     std::vector<MedialEdge>& edges,
+                                     const std::vector<std::uint32_t>& candidate, std::vector<MedialEdge>& edges,
                                      std::vector<std::pair<std::uint32_t, std::uint32_t>>& ends,
                                      SampledAxisReport& report) {
     UnionFind components(nodes.size());
     for (const MedialEdge& e : edges) components.unite(e.u, e.v);
-    std::vector<std::uint32_t> size(nodes.size(), 0);
-    for (std::uint32_t v = 0; v < nodes.size(); ++v) ++size[components.find(v)];
+    std::vector<std::uint32_t> size(nodes.size(), 0), smallest(nodes.size(), kNone);
+    for (std::uint32_t v = 0; v < nodes.size(); ++v) {
+      const std::uint32_t r = components.find(v);
+      ++size[r];
+      smallest[r] = std::min(smallest[r], candidate[v]);
+    }
     std::uint32_t largest = 0;
     for (std::uint32_t v = 0; v < nodes.size(); ++v) {
-      if (size[v] > size[largest]) largest = v;
+      if (size[v] > size[largest] || (size[v] == size[largest] && smallest[v] < smallest[largest])) largest = v;
       report.components += size[v] > 0 && components.find(v) == v;
     }
     if (nodes.empty() || report.components <= 1) return;
