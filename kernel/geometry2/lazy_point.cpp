@@ -84,11 +84,11 @@ struct CircleOf {
 // is monotone, so the smallest rounded quotient is the rounded smallest one (signed zeros
 // aside, which the outward rounding maps alike).
 template <class I>
-I divide_by_signed(const I& a, const I& b) {
+inline __attribute__((always_inline)) I divide_by_signed(const I& a, const I& b) {
   if (!(b.lo > 0) && !(b.hi < 0)) return a / b;  // not of one sign after all: the general division
-  if (b.lo > 0)
-    return {round_down(a.lo >= 0 ? a.lo / b.hi : a.lo / b.lo), round_up(a.hi >= 0 ? a.hi / b.lo : a.hi / b.hi)};
-  return {round_down(a.hi >= 0 ? a.hi / b.hi : a.hi / b.lo), round_up(a.lo >= 0 ? a.lo / b.lo : a.lo / b.hi)};
+  // The divisors are selected without branches (the signs of a vary from call to call).
+  if (b.lo > 0) return {round_down(a.lo / (a.lo >= 0 ? b.hi : b.lo)), round_up(a.hi / (a.hi >= 0 ? b.lo : b.hi))};
+  return {round_down(a.hi / (a.hi >= 0 ? b.hi : b.lo)), round_up(a.lo / (a.lo >= 0 ? b.lo : b.hi))};
 }
 
 // The semi-static circumcircle of the header comment of interval_circle, in F.
