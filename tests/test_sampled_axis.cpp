@@ -7,6 +7,7 @@
 
 #include "burn2/edf_definition.h"
 #include "geometry2/predicates2.h"
+#include "medial2/sampled_geometry.h"
 #include "pipeline/edf2d.h"
 #include "shapes/builtin_shapes.h"
 #include "shapes/load_shape.h"
@@ -134,6 +135,70 @@ TEST_CASE("the engine equals the definition on every real shape of the test data
     ++shapes;
   }
   CHECK(shapes >= 100);
+}
+
+TEST_CASE("the insertion order does not change the axis: rings started elsewhere give the same nodes and edges",
+          "[sampled][metamorphic]") {
+  // Starting every ring at another sample renumbers the samples, which changes the rounds
+  // and the order of the triangulation's insertions (sampled_axis.cpp, triangulate) and the
+  // storage order of its triangles. The Delaunay triangulation, hence the axis, is the same:
+  // same counts, and every node and edge matches one of the other axis within the bounds.
+  for (const char* name : {"rectangle", "hole", "noisy", "branches"}) {
+    INFO(name);
+    const Shape2 s = builtin_shape(name);
+    const BoundarySamples samples = resample_by_count(s, 3000);
+    BoundarySamples rotated = samples;
+    for (auto& ring : rotated) std::rotate(ring.begin(), ring.begin() + static_cast<std::ptrdiff_t>(ring.size() / 3), ring.end());
+    const MedialGraph a = sampled_medial_axis(s, samples), b = sampled_medial_axis(s, rotated);
+    REQUIRE(a.node_count() == b.node_count());
+    REQUIRE(a.edge_count() == b.edge_count());
+    REQUIRE(a.node_count() > 1000);
+    // Node positions of merged cocircular triangles may come from different triangles, so
+    // they are matched within their error bounds, after sorting.
+    auto sorted_nodes = [](const MedialGraph& g) {
+      std::vector<MedialNode> n;
+      for (std::uint32_t v = 0; v < g.node_count(); ++v) n.push_back(g.node(v));
+      std::sort(n.begin(), n.end(), [](const MedialNode& p, const MedialNode& q) {
+        return std::tie(p.position.x, p.position.y) < std::tie(q.position.x, q.position.y);
+      });
+      return n;
+    };
+    const std::vector<MedialNode> na = sorted_nodes(a), nb = sorted_nodes(b);
+    std::size_t matched = 0;
+    for (std::size_t k = 0; k < na.size(); ++k) {
+      const double tolerance = na[k].position_error + nb[k].position_error;
+      matched += std::fabs(na[k].position.x - nb[k].position.x) <= tolerance &&
+                 std::fabs(na[k].position.y - nb[k].position.y) <= tolerance &&
+                 na[k].radius.lo <= nb[k].radius.hi && nb[k].radius.lo <= na[k].radius.hi;
+    }
+    CHECK(matched == na.size());
+    const GrassfireResult ba = extended_grassfire(a), bb = extended_grassfire(b);
+    REQUIRE(ba.ema.size() == bb.ema.size());
+    CHECK(ba.ema[0].kind == bb.ema[0].kind);
+    if (ba.ema[0].kind == ExtendedMedialAxis::Kind::Point) {
+      CHECK(ba.ema[0].edf.lo <= bb.ema[0].edf.hi);
+      CHECK(bb.ema[0].edf.lo <= ba.ema[0].edf.hi);
+    }
+  }
+}
+
+TEST_CASE("sampled axis nodes are numbered by the smallest sample of their triangle, edges by their smaller end",
+          "[sampled]") {
+  const Shape2 s = builtin_shape("branches");
+  const MedialGraph g = sampled_medial_axis(s, resample_by_count(s, 4000));
+  const auto* geometry = dynamic_cast<const SampledVoronoiGeometry*>(&g.geometry());
+  REQUIRE(geometry != nullptr);
+  REQUIRE(g.node_count() > 1000);
+  auto key = [&](std::uint32_t v) {
+    const auto& t = geometry->node_triangle(v);
+    return std::min({t[0], t[1], t[2]});
+  };
+  std::size_t ordered_nodes = 0, ordered_edges = 0;
+  for (std::uint32_t v = 1; v < g.node_count(); ++v) ordered_nodes += key(v - 1) <= key(v);
+  for (std::uint32_t e = 1; e < g.edge_count(); ++e)
+    ordered_edges += std::min(g.edge(e - 1).u, g.edge(e - 1).v) <= std::min(g.edge(e).u, g.edge(e).v);
+  CHECK(ordered_nodes == g.node_count() - 1);
+  CHECK(ordered_edges == g.edge_count() - 1);
 }
 
 TEST_CASE("coincident samples are rejected with a clear message", "[sampled]") {

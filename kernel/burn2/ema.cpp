@@ -16,16 +16,21 @@ void assign_extended_medial_axis(const MedialGraph& g, GrassfireResult& result,
   std::vector<std::uint32_t> quench_count(components, 0);
   for (std::uint32_t c = 0; c < components; ++c) result.ema[c].component = c;
 
-  const TwoCore core = two_core(g);
-  for (std::uint32_t v = 0; v < g.node_count(); ++v) {
-    if (!core.node_in_core[v]) continue;
-    ExtendedMedialAxis& ema = result.ema[component[v]];
-    ema.kind = ExtendedMedialAxis::Kind::Cycles;
-    ema.nodes.push_back(v);
-    ema.edf = Interval::infinity();
+  // A graph with C components has at least V - C edges, exactly V - C when it is a
+  // forest, and a forest's 2-core is empty: the peeling is skipped (sampled axes are trees).
+  const bool forest = std::uint64_t{g.edge_count()} + components == g.node_count();
+  if (!forest) {
+    const TwoCore core = two_core(g);
+    for (std::uint32_t v = 0; v < g.node_count(); ++v) {
+      if (!core.node_in_core[v]) continue;
+      ExtendedMedialAxis& ema = result.ema[component[v]];
+      ema.kind = ExtendedMedialAxis::Kind::Cycles;
+      ema.nodes.push_back(v);
+      ema.edf = Interval::infinity();
+    }
+    for (std::uint32_t e = 0; e < g.edge_count(); ++e)
+      if (core.edge_in_core[e]) result.ema[component[g.edge(e).u]].edges.push_back(e);
   }
-  for (std::uint32_t e = 0; e < g.edge_count(); ++e)
-    if (core.edge_in_core[e]) result.ema[component[g.edge(e).u]].edges.push_back(e);
 
   for (const QuenchRecord& q : quenches) {
     const std::uint32_t node = q.place.at_node ? q.place.node : g.edge(q.place.edge).u;

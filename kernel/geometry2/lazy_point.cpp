@@ -79,6 +79,18 @@ struct CircleOf {
   bool ok;
 };
 
+// a / b for b of one sign: the two quotients that bound the result, by the
+// signs, instead of the min and max of all four. The same endpoints: rounding to nearest
+// is monotone, so the smallest rounded quotient is the rounded smallest one (signed zeros
+// aside, which the outward rounding maps alike).
+template <class I>
+inline __attribute__((always_inline)) I divide_by_signed(const I& a, const I& b) {
+  if (!(b.lo > 0) && !(b.hi < 0)) return a / b;  // not of one sign after all: the general division
+  // The divisors are selected without branches (the signs of a vary from call to call).
+  if (b.lo > 0) return {round_down(a.lo / (a.lo >= 0 ? b.hi : b.lo)), round_up(a.hi / (a.hi >= 0 ? b.lo : b.hi))};
+  return {round_down(a.hi / (a.hi >= 0 ? b.hi : b.lo)), round_up(a.lo / (a.lo >= 0 ? b.lo : b.hi))};
+}
+
 // The semi-static circumcircle of the header comment of interval_circle, in F.
 template <class F>
 CircleOf<F> circle_in(const Point2& a, const Point2& b, const Point2& c) {
@@ -115,8 +127,8 @@ CircleOf<F> circle_in(const Point2& a, const Point2& b, const Point2& c) {
   if (!in_range || !(std::fabs(d) > bd)) return {{}, {}, {}, false};
   const I di{round_down(d - bd), round_up(d + bd)};
   const F bx = mx * (32 * u), by = my * (32 * u);
-  const I ox = I{round_down(nx - bx), round_up(nx + bx)} / di;
-  const I oy = I{round_down(ny - by), round_up(ny + by)} / di;
+  const I ox = divide_by_signed(I{round_down(nx - bx), round_up(nx + bx)}, di);
+  const I oy = divide_by_signed(I{round_down(ny - by), round_up(ny + by)}, di);
   const I oxx{F(o->x), F(o->x)}, oyy{F(o->y), F(o->y)};
   return {oxx + ox, oyy + oy, sqrt(square(ox) + square(oy)), true};
 }

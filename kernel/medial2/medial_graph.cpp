@@ -87,9 +87,32 @@ MedialGraph MedialGraph::from_exact(std::vector<Point2> positions, std::vector<E
   return MedialGraph(std::move(nodes), std::move(edges), std::move(geometry));
 }
 
+// Breadth-first search from each node not yet reached, in node order: the numbering of
+// boost::connected_components (a component is numbered when its smallest node is met),
+// without the depth-first search's stack of iterator tuples and colour map.
 std::vector<std::uint32_t> MedialGraph::component_of_nodes() const {
-  std::vector<std::uint32_t> component(nodes_.size(), 0);
-  if (!nodes_.empty()) boost::connected_components(adjacency_, component.data());
+  constexpr std::uint32_t kUnreached = 0xffffffffu;
+  std::vector<std::uint32_t> component(nodes_.size(), kUnreached);
+  std::vector<std::uint32_t> queue;
+  queue.reserve(nodes_.size());
+  std::uint32_t count = 0;
+  for (std::uint32_t s = 0; s < nodes_.size(); ++s) {
+    if (component[s] != kUnreached) continue;
+    component[s] = count;
+    queue.clear();
+    queue.push_back(s);
+    // Every node enters the queue once: the loop is bounded by the node count.
+    for (std::size_t head = 0; head < queue.size(); ++head) {
+      const auto range = boost::out_edges(queue[head], adjacency_);
+      for (auto it = range.first; it != range.second; ++it) {
+        const std::uint32_t w = static_cast<std::uint32_t>(boost::target(*it, adjacency_));
+        if (component[w] != kUnreached) continue;
+        component[w] = count;
+        queue.push_back(w);
+      }
+    }
+    ++count;
+  }
   return component;
 }
 

@@ -3,9 +3,13 @@
 
 #include <CGAL/Delaunay_triangulation_2.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Spatial_sort_traits_adapter_2.h>
+#include <CGAL/property_map.h>
+#include <CGAL/spatial_sort.h>
 #include <CGAL/Triangulation_face_base_with_info_2.h>
 #include <CGAL/Triangulation_vertex_base_with_info_2.h>
 
+#include <algorithm>
 #include <memory>
 #include <numeric>
 #include <optional>
@@ -84,11 +88,37 @@ class SampledAxisBuilder {
   }
 
  private:
+  // Insertion order: a biased randomised insertion order (BRIO, Amenta, Choi and Rote
+  // 2003) with the rounds in boundary order. Each sample draws a round from a fixed hash
+  // of its id (round k >= 1 with probability 3 / 4^(k+1), as in CGAL's multiscale spatial
+  // sort; the round-0 samples, about 3/4, go last); the rounds are inserted from the
+  // smallest, each in the samples' order along their rings, each insertion hinted by the
+  // previous vertex. The randomness of the rounds is what bounds the expected work; inside
+  // a round, the boundary order already keeps consecutive insertions close, which is what
+  // CGAL's spatial sort (a Hilbert sort of every round) buys at the cost of sorting.
   void triangulate() {
-    std::vector<std::pair<K::Point_2, std::uint32_t>> input;
-    input.reserve(points_.size());
-    for (std::uint32_t i = 0; i < points_.size(); ++i) input.emplace_back(K::Point_2(points_[i].x, points_[i].y), i);
-    dt_.insert(input.begin(), input.end());
+    const std::uint32_t n = static_cast<std::uint32_t>(points_.size());
+    constexpr int kRounds = 24;
+    std::vector<std::uint8_t> round(n);
+    std::array<std::uint32_t, kRounds + 1> start{};
+    for (std::uint32_t i = 0; i < n; ++i) {
+      std::uint64_t h = (i + 1) * 0x9e3779b97f4a7c15ull;  // splitmix64 finaliser
+      h = (h ^ (h >> 30)) * 0xbf58476d1ce4e5b9ull;
+      h = (h ^ (h >> 27)) * 0x94d049bb133111ebull;
+      h ^= h >> 31;
+      const int r = std::min(kRounds - 1, h == 0 ? kRounds : __builtin_ctzll(h) / 2);
+      round[i] = static_cast<std::uint8_t>(r);
+      ++start[kRounds - 1 - r + 1];
+    }
+    std::partial_sum(start.begin(), start.end(), start.begin());
+    std::vector<std::uint32_t> order(n);
+    for (std::uint32_t i = 0; i < n; ++i) order[start[kRounds - 1 - round[i]]++] = i;
+    Delaunay::Face_handle hint;
+    for (const std::uint32_t i : order) {
+      const Delaunay::Vertex_handle v = dt_.insert(K::Point_2(points_[i].x, points_[i].y), hint);
+      v->info() = i;
+      hint = v->face();
+    }
     if (dt_.number_of_vertices() != points_.size())
       throw std::invalid_argument(shape_.name + ": boundary samples are not pairwise distinct (" +
                                   std::to_string(points_.size() - dt_.number_of_vertices()) + " duplicates)");
@@ -111,18 +141,39 @@ class SampledAxisBuilder {
     do {
       infinite->info().id = kNone;
     } while (++infinite != done);
+    triangles_.reserve(dt_.number_of_faces());
+    circles_.reserve(dt_.number_of_faces());
+    adjacent_.reserve(dt_.number_of_faces());
     // The faces are visited in storage order; their vertices and neighbours are scattered
-    // in memory, so those of the face kAhead places further are prefetched.
-    constexpr int kAhead = 8;
-    auto ahead = dt_.all_faces_begin();
-    for (int k = 0; k < kAhead && ahead != dt_.all_faces_end(); ++k) ++ahead;
+    // in memory. So the vertices' data and the neighbours' infos of the face kAhead places
+    // further are prefetched (the addresses of the members themselves: a 56-byte face or a
+    // 32-byte vertex often straddles two cache lines), and the circles of the already
+    // numbered neighbours of the face kAhead / 2 places further (their infos are in cache
+    // by then).
+    constexpr int kAhead = 16;
+    auto ahead = dt_.all_faces_begin(), half = ahead;
+    for (int k = 0; k < kAhead && ahead != dt_.all_faces_end(); ++k) {
+      ++ahead;
+      if (k < kAhead / 2) ++half;
+    }
     for (auto f = dt_.all_faces_begin(); f != dt_.all_faces_end(); ++f) {
       if (ahead != dt_.all_faces_end()) {
         for (int i = 0; i < 3; ++i) {
-          __builtin_prefetch(&*ahead->vertex(i));
-          __builtin_prefetch(&*ahead->neighbor(i));
+          __builtin_prefetch(&ahead->vertex(i)->point());
+          __builtin_prefetch(&ahead->vertex(i)->info());
+          __builtin_prefetch(&ahead->neighbor(i)->info());
         }
         ++ahead;
+      }
+      if (half != dt_.all_faces_end()) {
+        for (int i = 0; i < 3; ++i) {
+          const std::uint32_t a = half->neighbor(i)->info().id;
+          if (a < circles_.size()) {
+            __builtin_prefetch(&circles_[a].center.x);
+            __builtin_prefetch(&circles_[a].center.y.hi);
+          }
+        }
+        ++half;
       }
       if (dt_.is_infinite(f)) continue;
       ++report.delaunay_triangles;
@@ -177,7 +228,15 @@ class SampledAxisBuilder {
 
   // The Voronoi edges between candidates of different groups, by the rules of the header.
   void collect_edges(SampledAxisReport& report) {
-    for (const Adjacency& p : adjacent_) {
+    // The circles are read at random: those of the pair kAhead places further are
+    // prefetched (at the candidates themselves, which are almost always their groups').
+    constexpr std::size_t kAhead = 8;
+    for (std::size_t k = 0; k < adjacent_.size(); ++k) {
+      if (k + kAhead < adjacent_.size()) {
+        __builtin_prefetch(&circles_[adjacent_[k + kAhead].a]);
+        __builtin_prefetch(&circles_[adjacent_[k + kAhead].b]);
+      }
+      const Adjacency& p = adjacent_[k];
       const std::uint32_t ra = groups_.find(p.a), rb = groups_.find(p.b);
       if (ra == rb) continue;
       if (p.boundary_dual) {
@@ -196,46 +255,72 @@ class SampledAxisBuilder {
     report.predicates = locator_->counters();
   }
 
-  // Nodes are the group representatives (the smallest candidate of each group), in
-  // candidate order; then the largest component (see keep_largest_component).
+  // Nodes are the group representatives (the smallest candidate of each group), ordered
+  // by the smallest sample id of their triangle, ties in candidate order; edges by their
+  // smaller end, ties in the order of collect_edges (two stable counting sorts). Samples
+  // are numbered along the boundary, so consecutive nodes of a chain of the axis mostly
+  // get consecutive numbers and the walks along the graph downstream (chains, fronts,
+  // components) read memory in order; in candidate order (the triangulation's storage
+  // order) they read it at random. Then the largest component (keep_largest_component).
   MedialGraph assemble(SampledAxisReport& report) {
+    auto key = [&](std::uint32_t a) { return std::min({triangles_[a][0], triangles_[a][1], triangles_[a][2]}); };
+    std::vector<std::uint32_t> start(points_.size() + 1, 0);
+    for (std::uint32_t a = 0; a < triangles_.size(); ++a)
+      if (groups_.find(a) == a) ++start[key(a) + 1];
+    std::partial_sum(start.begin(), start.end(), start.begin());
+    const std::size_t n = start.back();
     std::vector<std::uint32_t> node_of(triangles_.size(), kNone);
-    std::vector<MedialNode> nodes;
-    std::vector<std::array<std::uint32_t, 3>> node_triangle;
+    std::vector<std::uint32_t> candidate(n);
+    std::vector<MedialNode> nodes(n);
+    std::vector<std::array<std::uint32_t, 3>> node_triangle(n);
     for (std::uint32_t a = 0; a < triangles_.size(); ++a) {
       if (groups_.find(a) != a) continue;
-      node_of[a] = static_cast<std::uint32_t>(nodes.size());
+      const std::uint32_t v = start[key(a)]++;
+      node_of[a] = v;
+      candidate[v] = a;
       const IntervalPoint2& c = circles_[a].center;
-      nodes.push_back({Point2{c.x.mid(), c.y.mid()}, circles_[a].radius, std::max(c.x.radius(), c.y.radius())});
-      node_triangle.push_back(triangles_[a]);
+      nodes[v] = {Point2{c.x.mid(), c.y.mid()}, circles_[a].radius, std::max(c.x.radius(), c.y.radius())};
+      node_triangle[v] = triangles_[a];
     }
-    std::vector<MedialEdge> edges;
-    edges.reserve(ends_.size());
-    for (auto& [a, b] : ends_) {
-      edges.push_back({node_of[a], node_of[b], EdgeKind::Segment, interval_distance(circles_[a].center, circles_[b].center)});
-      a = node_of[a];
-      b = node_of[b];
+    start.assign(n + 1, 0);
+    for (auto& [a, b] : ends_) ++start[std::min(node_of[a], node_of[b]) + 1];
+    std::partial_sum(start.begin(), start.end(), start.begin());
+    std::vector<MedialEdge> edges(ends_.size());
+    for (std::size_t k = 0; k < ends_.size(); ++k) {
+      if (k + 8 < ends_.size()) {  // random reads, as in collect_edges
+        __builtin_prefetch(&circles_[ends_[k + 8].first]);
+        __builtin_prefetch(&circles_[ends_[k + 8].second]);
+      }
+      const auto [a, b] = ends_[k];
+      edges[start[std::min(node_of[a], node_of[b])]++] = {
+          node_of[a], node_of[b], EdgeKind::Segment, interval_distance(circles_[a].center, circles_[b].center)};
     }
+    for (std::size_t k = 0; k < edges.size(); ++k) ends_[k] = {edges[k].u, edges[k].v};
     report.inside_nodes = nodes.size();
-    keep_largest_component(nodes, node_triangle, edges, ends_, report);
+    keep_largest_component(nodes, node_triangle, candidate, edges, ends_, report);
     report.edges = edges.size();
     auto geometry = std::make_shared<SampledVoronoiGeometry>(std::move(points_), std::move(node_triangle), std::move(ends_));
     return MedialGraph(std::move(nodes), std::move(edges), std::move(geometry));
   }
 
   // The shape is connected, so its medial axis is; smaller components of the Voronoi
-  // graph are fragments left by undersampled sharp features. Keep the largest one.
+  // graph are fragments left by undersampled sharp features. Keep the largest one; of
+  // equally large ones, the one with the smallest candidate (`candidate`: per node).
   static void keep_largest_component(std::vector<MedialNode>& nodes, std::vector<std::array<std::uint32_t, 3>>& triangles,
-                                     std::vector<MedialEdge>& edges,
+                                     const std::vector<std::uint32_t>& candidate, std::vector<MedialEdge>& edges,
                                      std::vector<std::pair<std::uint32_t, std::uint32_t>>& ends,
                                      SampledAxisReport& report) {
     UnionFind components(nodes.size());
     for (const MedialEdge& e : edges) components.unite(e.u, e.v);
-    std::vector<std::uint32_t> size(nodes.size(), 0);
-    for (std::uint32_t v = 0; v < nodes.size(); ++v) ++size[components.find(v)];
+    std::vector<std::uint32_t> size(nodes.size(), 0), smallest(nodes.size(), kNone);
+    for (std::uint32_t v = 0; v < nodes.size(); ++v) {
+      const std::uint32_t r = components.find(v);
+      ++size[r];
+      smallest[r] = std::min(smallest[r], candidate[v]);
+    }
     std::uint32_t largest = 0;
     for (std::uint32_t v = 0; v < nodes.size(); ++v) {
-      if (size[v] > size[largest]) largest = v;
+      if (size[v] > size[largest] || (size[v] == size[largest] && smallest[v] < smallest[largest])) largest = v;
       report.components += size[v] > 0 && components.find(v) == v;
     }
     if (nodes.empty() || report.components <= 1) return;

@@ -18,7 +18,10 @@
 // Contract: `shape` is validated (shapes/shape2.h); `samples[r]` are points on ring r in
 // ring order, pairwise distinct over all rings. The result approximates the medial axis
 // and converges to it as the sampling densifies (Brandt and Algazi 1992; dissertation [17]).
-// Complexity: O(n log n) expected for n samples (the Delaunay triangulation dominates).
+// Complexity: O(n log n) expected for n samples (the Delaunay triangulation dominates; it
+// inserts the samples in random rounds, each in ring order, which the contract provides).
+// Nodes are numbered by the smallest sample id of their Delaunay triangle, edges by their
+// smaller end, so the nodes of a chain of the axis are mostly consecutive.
 #pragma once
 
 #include <cstdint>
