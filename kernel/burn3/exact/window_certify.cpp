@@ -136,7 +136,18 @@ mpq_class Certifier::edge_length2(std::uint32_t e) const {
   return squared_distance(u_.complex().vertex(ev[0]).exact, u_.complex().vertex(ev[1]).exact);
 }
 
+// Memoised per (window, offset wanted, source vertex, precision): a window's chain never
+// changes once made, and the bisections (junction_kinks.cpp) evaluate the same two chains
+// at a hundred points.
 WindowBall Certifier::evaluate(std::uint32_t w, bool with_offset, std::uint32_t source_vertex) {
+  const MemoKey key{w, source_vertex, static_cast<std::uint64_t>(BallPrecision::bits()) * 2 + with_offset};
+  if (const auto it = chain_memo_.find(key); it != chain_memo_.end()) return it->second;
+  if (chain_memo_.size() > 200000) chain_memo_.clear();
+  WindowBall b = evaluate_chain(w, with_offset, source_vertex);
+  return chain_memo_.emplace(key, std::move(b)).first->second;
+}
+
+WindowBall Certifier::evaluate_chain(std::uint32_t w, bool with_offset, std::uint32_t source_vertex) {
   std::vector<std::uint32_t> chain;
   for (std::uint32_t x = w; x != kNoIndex; x = s_.windows[x].parent) chain.push_back(x);
   std::reverse(chain.begin(), chain.end());

@@ -117,6 +117,7 @@ class Certifier {
 
  private:
   Ball sigma_ball(std::uint32_t pseudo);
+  WindowBall evaluate_chain(std::uint32_t w, bool with_offset, std::uint32_t source_vertex);
   void trim_memos();  // only between decisions: pointers into the memo stay valid within one
   bool same_expression(std::uint32_t w1, std::uint32_t w2, const Target& x) const;
   bool same_point_source(std::uint32_t pa, std::uint32_t pb) const;
@@ -151,6 +152,7 @@ class Certifier {
   mutable std::unordered_map<MemoKey, DiscPoint, MemoHash> disc_cache_;  // (frame, point key)
   mutable std::unordered_map<MemoKey, BallVec2, MemoHash> ball_cache_;   // (frame, point key, bits)
   std::unordered_map<long, std::unordered_map<std::uint32_t, Ball>> time_memo_;  // bits -> TimeExpr -> ball
+  std::unordered_map<MemoKey, WindowBall, MemoHash> chain_memo_;  // (window, source vertex, bits and offset)
   std::unordered_map<std::uint32_t, std::unique_ptr<ExactWindow>> exact_memo_;
   std::unordered_map<std::uint32_t, std::unique_ptr<ExactSum>> exact_time_memo_;
 };
