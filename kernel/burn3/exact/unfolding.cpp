@@ -242,8 +242,11 @@ const RigidMotion2& Unfolding::crossing(std::uint32_t e, std::uint32_t t, std::u
 }
 
 std::array<Ball, 2> Unfolding::frame_scale_ball(std::uint32_t t) const {
-  const PlanarFrame& f = planar_frame(triangle_frame_[t]);
-  return {sqrt(ball_of(f.e1_norm2)), sqrt(ball_of(f.e2_norm2))};
+  auto& cache = ball_scales_[BallPrecision::bits()];
+  const std::uint32_t frame = triangle_frame_[t];
+  if (auto it = cache.find(frame); it != cache.end()) return it->second;
+  const PlanarFrame& f = planar_frame(frame);
+  return cache.emplace(frame, std::array<Ball, 2>{sqrt(ball_of(f.e1_norm2)), sqrt(ball_of(f.e2_norm2))}).first->second;
 }
 
 BallVec2 Unfolding::point_ball(std::uint32_t t, const ExactPoint3& p) const {

@@ -136,6 +136,7 @@ class Unfolding {
   // (frame, vertex).
   mutable std::unordered_map<long, std::unordered_map<std::uint64_t, BallMotion>> ball_crossings_;
   mutable std::unordered_map<long, std::unordered_map<std::uint64_t, BallVec2>> ball_vertices_;
+  mutable std::unordered_map<long, std::unordered_map<std::uint32_t, std::array<Ball, 2>>> ball_scales_;  // bits -> frame
 };
 
 }  // namespace grassfire

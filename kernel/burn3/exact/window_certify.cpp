@@ -595,17 +595,17 @@ int Certifier::side_if_certified(std::uint32_t w, int j, const Target& x, bool a
     return 0;
   }
   const std::uint32_t along = edge_ray_origin(w, j);
-  auto arb = [&] {
-    return escalate(max_bits_, [&] {
-      const WindowBall b = evaluate(w, false, along);
-      const std::uint32_t t = win.triangle;
-      const BallVec2 p = target_ball(t, x);
-      if (b.plane) return ball_sign(ball_cross(b.source, ball_sub(p, b.image[j])));
-      return ball_sign(ball_cross(ball_sub(b.image[j], b.source), ball_sub(p, b.source)));
-    });
+  auto arb_level = [&] {
+    const WindowBall b = evaluate(w, false, along);
+    const std::uint32_t t = win.triangle;
+    const BallVec2 p = target_ball(t, x);
+    if (b.plane) return ball_sign(ball_cross(b.source, ball_sub(p, b.image[j])));
+    return ball_sign(ball_cross(ball_sub(b.image[j], b.source), ball_sub(p, b.source)));
   };
-  if (arb_first)
-    if (const int a = arb(); a != kUndecided) return a;
+  auto arb = [&] { return escalate(max_bits_, arb_level); };
+  // Arb at its first level before the exact stage (thousands of rays against long rationals
+  // that 128 bits separate at once); the exact stage then settles the ties Arb cannot.
+  if (const int a = arb_first ? arb() : escalate(128, arb_level); a != kUndecided) return a;
   std::unique_ptr<ExactWindow> substitute = along == kNoIndex ? nullptr : build_exact_window(w, along);
   if (const ExactWindow* ew = substitute ? substitute.get() : exact_window(w)) {
     const int e = exact_side(*ew, j, x);
@@ -648,9 +648,10 @@ int Certifier::compare_times(std::uint32_t w1, const Target& x1, std::uint32_t w
     if (!keyed) return r;
     return r == kUndecided ? remember(key, r) : remember(key, flip * r) * flip;
   };
-  auto arb = [&] { return escalate(prune_bits_, [&] { return ball_sign(time_ball(w1, x1) - time_ball(w2, x2)); }); };
-  if (arb_first)
-    if (const int a = arb(); a != kUndecided) return done(a);
+  auto arb_level = [&] { return ball_sign(time_ball(w1, x1) - time_ball(w2, x2)); };
+  auto arb = [&] { return escalate(prune_bits_, arb_level); };
+  // Arb's first level before the exact stage (as in side_if_certified).
+  if (const int a = arb_first ? arb() : escalate(128, arb_level); a != kUndecided) return done(a);
   if (exact_window(w1) && exact_window(w2)) {
     const auto t1 = exact_time(w1, x1), t2 = exact_time(w2, x2);
     if (t1 && t2) {
