@@ -252,7 +252,7 @@ KinkParameter kink_parameter(const Unfolding& u, const WindowStore& s, Certifier
   const Bracket br = bracket(
       [&](const mpq_class& l) {
         const ExactPoint3 p = point_on(mc, edge, l);
-        const Target x{kNoIndex, &p};
+        const Target x{kNoIndex, &p, 0, edge, &l};
         return cert.compare_times(wa, x, wb, x, true);
       },
       at);
@@ -325,7 +325,7 @@ KinkParameter ray_parameter(const Unfolding& u, const WindowStore& s, Certifier&
   const Bracket br = bracket(
       [&](const mpq_class& l) {
         const ExactPoint3 p = point_on(mc, edge, l);
-        return cert.side_if_certified(w, j, Target{kNoIndex, &p}, true);  // undecided: the bisection stops
+        return cert.side_if_certified(w, j, Target{kNoIndex, &p, 0, edge, &l}, true);  // undecided: the bisection stops
       },
       at);
   k.certified = br.ok;

@@ -256,6 +256,21 @@ BallVec2 Unfolding::point_ball(std::uint32_t t, const ExactPoint3& p) const {
   return {ball_of(dot(d, f.e1)) / s[0], ball_of(dot(d, f.e2)) / s[1]};
 }
 
+BallVec2 Unfolding::edge_param_ball(std::uint32_t t, std::uint32_t edge, const mpq_class& l) const {
+  const std::uint32_t frame = triangle_frame_[t];
+  const std::uint64_t key = (static_cast<std::uint64_t>(frame) << 32) | edge;
+  auto it = edge_dots_.find(key);
+  if (it == edge_dots_.end()) {
+    const PlanarFrame& f = planar_frame(frame);
+    const ExactPoint3& a = mc_.vertex(mc_.edge(edge).v[0]).exact;
+    const ExactPoint3 d = a - f.origin, ab = mc_.vertex(mc_.edge(edge).v[1]).exact - a;
+    it = edge_dots_.emplace(key, std::array<mpq_class, 4>{dot(d, f.e1), dot(ab, f.e1), dot(d, f.e2), dot(ab, f.e2)}).first;
+  }
+  const auto& c = it->second;
+  const auto s = frame_scale_ball(t);
+  return {ball_of(mpq_class(c[0] + l * c[1])) / s[0], ball_of(mpq_class(c[2] + l * c[3])) / s[1]};
+}
+
 BallVec2 Unfolding::vertex_ball(std::uint32_t t, std::uint32_t v) const {
   const std::uint32_t f = triangle_frame_[t];
   auto& cache = ball_vertices_[BallPrecision::bits()];

@@ -77,8 +77,10 @@ BallVec2 Certifier::target_ball(std::uint32_t t, const Target& x) const {
     const MemoKey k{u_.frame(t), x.key, static_cast<std::uint64_t>(BallPrecision::bits())};
     if (const auto it = ball_cache_.find(k); it != ball_cache_.end()) return it->second;
     if (ball_cache_.size() > 1'000'000) ball_cache_.clear();
-    return ball_cache_.emplace(k, u_.point_ball(t, *x.point)).first->second;
+    return ball_cache_.emplace(k, x.lambda ? u_.edge_param_ball(t, x.edge, *x.lambda) : u_.point_ball(t, *x.point))
+        .first->second;
   }
+  if (x.lambda) return u_.edge_param_ball(t, x.edge, *x.lambda);
   if (x.point) return u_.point_ball(t, *x.point);
   if (is_edge_point(x.vertex)) return edge_point_ball(u_, s_, t, x.vertex & ~kEdgePointBound);
   return u_.vertex_ball(t, x.vertex);

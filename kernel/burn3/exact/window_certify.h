@@ -48,6 +48,9 @@ struct Target {
   std::uint32_t vertex = kNoIndex;
   const ExactPoint3* point = nullptr;
   std::uint64_t key = 0;  // nonzero: names `point` for the memo (Certifier::point_key)
+  // Set: `point` is a + *lambda (b - a) on this edge (a, b) (Arb images without the 3D point).
+  std::uint32_t edge = kNoIndex;
+  const mpq_class* lambda = nullptr;
 };
 
 struct WindowBall {
