@@ -400,6 +400,9 @@ int Certifier::compare_time_exprs(std::uint32_t a, std::uint32_t b, bool prune_o
   const int flip = ia < ib ? 1 : -1;  // the key names the pair in one order
   const MemoKey key{tag(kExprs, std::min(ia, ib)) | cap_code(cap), std::max(ia, ib), 0};
   if (const std::optional<int> m = recall(key)) return *m == kUndecided ? *m : flip * *m;
+  auto arb_level = [&] { return ball_sign(expr_ball(a) - expr_ball(b)); };
+  // Arb's first level before the exact stage (as in side_if_certified).
+  if (const int r = escalate(128, arb_level); r != kUndecided) return remember(key, flip * r) * flip;
   const ExactSum* x = exact_expr(a);
   const ExactSum* y = x ? exact_expr(b) : nullptr;
   if (x && y) {
@@ -407,7 +410,7 @@ int Certifier::compare_time_exprs(std::uint32_t a, std::uint32_t b, bool prune_o
     ++(e == 0 ? counts.exact_equal : counts.exact);
     return remember(key, flip * e) * flip;
   }
-  const int r = escalate(cap, [&] { return ball_sign(expr_ball(a) - expr_ball(b)); });
+  const int r = escalate(cap, arb_level);
   if (r == kUndecided) ++counts.kept_undecided;
   return r == kUndecided ? remember(key, r) : remember(key, flip * r) * flip;
 }
