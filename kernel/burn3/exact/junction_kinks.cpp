@@ -20,15 +20,6 @@ ExactPoint3 point_on(const MedialComplex& mc, std::uint32_t edge, const mpq_clas
   return a + l * (mc.vertex(mc.edge(edge).v[1]).exact - a);
 }
 
-// A window's time at the point with parameter l of the edge, as an enclosure.
-Interval time_on(const Unfolding& u, const WindowStore& s, std::uint32_t edge, std::uint32_t w, double l) {
-  const Window& W = s.windows[w];
-  const auto& ev = u.complex().edge(edge).v;
-  const DiscPoint A = u.vertex_image(W.triangle, ev[0]), B = u.vertex_image(W.triangle, ev[1]);
-  const Interval L(l);
-  const Approx t = approx_time(W, DiscPoint::from_intervals(A.ix() + L * (B.ix() - A.ix()), A.iy() + L * (B.iy() - A.iy())));
-  return {round_down(t.v - t.e), round_up(t.v + t.e)};
-}
 
 // A certified bracket [l1, l2] around `at` where sign_at changes sign (each sign certified,
 // or 0 for a proved zero at that end), narrowed by bisection to about 2^-100 of its width
@@ -222,7 +213,8 @@ std::vector<double> approx_crossings(const Unfolding& u, const WindowStore& s, s
   // Only certified sign changes count: two windows equal along a stretch (ties, e.g. a
   // kink's own source beyond the kink) have no crossing there, whatever the rounding says.
   constexpr int kSamples = 32;
-  auto g = [&](double l) { return certified_sign(time_on(u, s, edge, wa, l) - time_on(u, s, edge, wb, l)); };
+  const EdgeImage ea(u, s.windows[wa], edge), eb(u, s.windows[wb], edge);
+  auto g = [&](double l) { return certified_sign(ea.time(s.windows[wa], l) - eb.time(s.windows[wb], l)); };
   std::vector<double> roots;
   double x0 = lo;
   int g0 = g(lo);
