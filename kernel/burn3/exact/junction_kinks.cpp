@@ -314,8 +314,14 @@ KinkParameter ray_parameter(const Unfolding& u, const WindowStore& s, Certifier&
       }
     }
   }
+  // The side function is affine along the edge: one Arb evaluation encloses its root, and
+  // gives the certified sign at every point outside that enclosure (what side_if_certified
+  // would certify there); points inside it are decided as before.
+  const std::optional<Certifier::EdgeRoot> root = cert.ray_root_on_edge(w, j, edge, 256);
   const Bracket br = bracket(
       [&](const mpq_class& l) {
+        if (root && l < root->lo) return -root->slope;
+        if (root && l > root->hi) return root->slope;
         const ExactPoint3 p = point_on(mc, edge, l);
         return cert.side_if_certified(w, j, Target{kNoIndex, &p, 0, edge, &l}, true);  // undecided: the bisection stops
       },

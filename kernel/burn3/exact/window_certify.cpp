@@ -587,6 +587,39 @@ std::uint32_t Certifier::edge_ray_origin(std::uint32_t w, int j) const {
   return kNoIndex;
 }
 
+std::optional<Certifier::EdgeRoot> Certifier::ray_root_on_edge(std::uint32_t w, int j, std::uint32_t edge, long bits) {
+  BallPrecision guard(bits);
+  const Window& win = s_.windows[w];
+  const WindowBall b = evaluate(w, false, edge_ray_origin(w, j));
+  const BallVec2 A = u_.edge_param_ball(win.triangle, edge, mpq_class(0));
+  const BallVec2 D = ball_sub(u_.edge_param_ball(win.triangle, edge, mpq_class(1)), A);
+  // The same cross products as side_if_certified's Arb stage, at A + l D.
+  Ball g0, g1;
+  if (b.plane) {
+    g0 = ball_cross(b.source, ball_sub(A, b.image[j]));
+    g1 = ball_cross(b.source, D);
+  } else {
+    const BallVec2 r = ball_sub(b.image[j], b.source);
+    g0 = ball_cross(r, ball_sub(A, b.source));
+    g1 = ball_cross(r, D);
+  }
+  const int slope = g1.sign();
+  if (slope != 1 && slope != -1) return std::nullopt;
+  const Ball root = -g0 / g1;
+  mpfr_t lo, hi;
+  mpfr_init2(lo, bits);
+  mpfr_init2(hi, bits);
+  root.to_mpfr(lo, hi);
+  EdgeRoot e;
+  const bool finite = mpfr_number_p(lo) && mpfr_number_p(hi);
+  if (finite) mpfr_get_q(e.lo.get_mpq_t(), lo), mpfr_get_q(e.hi.get_mpq_t(), hi);
+  mpfr_clear(lo);
+  mpfr_clear(hi);
+  if (!finite) return std::nullopt;
+  e.slope = slope;
+  return e;
+}
+
 int Certifier::side_if_certified(std::uint32_t w, int j, const Target& x, bool arb_first) {
   trim_memos();
   const Window& win = s_.windows[w];

@@ -73,6 +73,16 @@ class Certifier {
   // point that Arb settles at once, where the exact sums of long rationals cost far more).
   int side_if_certified(std::uint32_t w, int j, const Target& x, bool arb_first = false);
   int compare_times(std::uint32_t w1, const Target& x1, std::uint32_t w2, const Target& x2, bool arb_first = false);
+  // Where w's ray j meets `edge` (an edge of w's triangle), from the Arb stage of
+  // side_if_certified: its side function at the edge point a + l (b - a) is affine in l,
+  // g0 + l g1, so one evaluation (at `bits`) gives a rational interval [lo, hi] holding the
+  // root and the sign of the slope g1 (side = slope there for l > hi, -slope for l < lo);
+  // nullopt where g1's sign is not certified.
+  struct EdgeRoot {
+    mpq_class lo, hi;
+    int slope = 0;
+  };
+  std::optional<EdgeRoot> ray_root_on_edge(std::uint32_t w, int j, std::uint32_t edge, long bits);
   int compare_directions(std::uint32_t w1, std::uint32_t w2, std::uint32_t v);
   // The identity of w's front (equal ids: the same source image and offset in the same
   // frame, as same_expression decides), and of a time expression (equal ids: one value).
