@@ -241,8 +241,19 @@ std::vector<double> approx_crossings(const Unfolding& u, const WindowStore& s, s
 KinkParameter kink_parameter(const Unfolding& u, const WindowStore& s, Certifier& cert, std::uint32_t edge,
                              std::uint32_t wa, std::uint32_t wb, double at) {
   const MedialComplex& mc = u.complex();
+  // Where the difference of the two times is proved monotone with one root in [lo0, hi0]
+  // (Certifier::crossing_root_on_edge), its sign at the bisection points there outside the
+  // root's enclosure is that root's side (what compare_times would certify there); points
+  // inside the enclosure, or outside [lo0, hi0], are compared as before.
+  const double lo0 = std::max(0.0, at - 1e-6), hi0 = std::min(1.0, at + 1e-6);
+  const std::optional<Certifier::EdgeRoot> root = cert.crossing_root_on_edge(wa, wb, edge, lo0, hi0, 256);
+  const mpq_class qlo(lo0), qhi(hi0);
   const Bracket br = bracket(
       [&](const mpq_class& l) {
+        if (root && qlo <= l && l <= qhi) {
+          if (l < root->lo) return -root->slope;
+          if (l > root->hi) return root->slope;
+        }
         const ExactPoint3 p = point_on(mc, edge, l);
         const Target x{kNoIndex, &p, 0, edge, &l};
         return cert.compare_times(wa, x, wb, x, true);

@@ -587,6 +587,23 @@ std::uint32_t Certifier::edge_ray_origin(std::uint32_t w, int j) const {
   return kNoIndex;
 }
 
+namespace {
+std::optional<Certifier::EdgeRoot> rational_root(const Ball& root, int slope, long bits) {
+  mpfr_t lo, hi;
+  mpfr_init2(lo, bits);
+  mpfr_init2(hi, bits);
+  root.to_mpfr(lo, hi);
+  Certifier::EdgeRoot e;
+  const bool finite = mpfr_number_p(lo) && mpfr_number_p(hi);
+  if (finite) mpfr_get_q(e.lo.get_mpq_t(), lo), mpfr_get_q(e.hi.get_mpq_t(), hi);
+  mpfr_clear(lo);
+  mpfr_clear(hi);
+  if (!finite) return std::nullopt;
+  e.slope = slope;
+  return e;
+}
+}  // namespace
+
 std::optional<Certifier::EdgeRoot> Certifier::ray_root_on_edge(std::uint32_t w, int j, std::uint32_t edge, long bits) {
   BallPrecision guard(bits);
   const Window& win = s_.windows[w];
@@ -605,19 +622,52 @@ std::optional<Certifier::EdgeRoot> Certifier::ray_root_on_edge(std::uint32_t w, 
   }
   const int slope = g1.sign();
   if (slope != 1 && slope != -1) return std::nullopt;
-  const Ball root = -g0 / g1;
-  mpfr_t lo, hi;
-  mpfr_init2(lo, bits);
-  mpfr_init2(hi, bits);
-  root.to_mpfr(lo, hi);
-  EdgeRoot e;
-  const bool finite = mpfr_number_p(lo) && mpfr_number_p(hi);
-  if (finite) mpfr_get_q(e.lo.get_mpq_t(), lo), mpfr_get_q(e.hi.get_mpq_t(), hi);
-  mpfr_clear(lo);
-  mpfr_clear(hi);
-  if (!finite) return std::nullopt;
-  e.slope = slope;
-  return e;
+  return rational_root(-g0 / g1, slope, bits);
+}
+
+
+std::optional<Certifier::EdgeRoot> Certifier::crossing_root_on_edge(std::uint32_t w1, std::uint32_t w2,
+                                                                    std::uint32_t edge, double lo, double hi,
+                                                                    long bits) {
+  BallPrecision guard(bits);
+  struct Along {
+    WindowBall b;
+    BallVec2 A, D;  // the edge a + l (b - a) in the window's frame: A + l D
+  };
+  auto along = [&](std::uint32_t w) {
+    const std::uint32_t t = s_.windows[w].triangle;
+    Along a{evaluate(w, true), u_.edge_param_ball(t, edge, mpq_class(0)), {}};
+    a.D = ball_sub(u_.edge_param_ball(t, edge, mpq_class(1)), a.A);
+    return a;
+  };
+  const Along a = along(w1), b = along(w2);
+  auto time = [](const Along& a, const Ball& l) {  // time_ball at the edge point l
+    const BallVec2 p{a.A.x + l * a.D.x, a.A.y + l * a.D.y};
+    if (a.b.plane) return a.b.offset + a.b.source.x * p.x + a.b.source.y * p.y;
+    const BallVec2 d = ball_sub(p, a.b.source);
+    return a.b.offset + sqrt(d.x * d.x + d.y * d.y);
+  };
+  auto rate = [](const Along& a, const Ball& l) {  // its derivative in l
+    if (a.b.plane) return a.b.source.x * a.D.x + a.b.source.y * a.D.y;
+    const BallVec2 d{a.A.x + l * a.D.x - a.b.source.x, a.A.y + l * a.D.y - a.b.source.y};
+    return (d.x * a.D.x + d.y * a.D.y) / sqrt(d.x * d.x + d.y * d.y);
+  };
+  Ball X = Ball::from_interval(Interval{lo, hi});
+  const Ball dX = rate(a, X) - rate(b, X);
+  const int slope = dX.sign();
+  if (slope != 1 && slope != -1) return std::nullopt;
+  if ((time(a, Ball(lo)) - time(b, Ball(lo))).sign() != -slope || (time(a, Ball(hi)) - time(b, Ball(hi))).sign() != slope)
+    return std::nullopt;
+  // f is monotone on X with a sign change: one root, which every Newton image contains.
+  for (int i = 0; i < 8; ++i) {
+    Ball m;
+    arb_get_mid_arb(m.get(), X.get());
+    const Ball n = m - (time(a, m) - time(b, m)) / (rate(a, X) - rate(b, X));
+    Ball y;
+    if (!arb_intersection(y.get(), X.get(), n.get(), bits)) return std::nullopt;
+    X = y;
+  }
+  return rational_root(X, slope, bits);
 }
 
 int Certifier::side_if_certified(std::uint32_t w, int j, const Target& x, bool arb_first) {

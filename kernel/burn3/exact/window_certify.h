@@ -83,6 +83,14 @@ class Certifier {
     int slope = 0;
   };
   std::optional<EdgeRoot> ray_root_on_edge(std::uint32_t w, int j, std::uint32_t edge, long bits);
+  // Where w1's and w2's times cross along `edge` (an edge of both triangles) inside the
+  // parameter interval [lo, hi]: the same Arb values as compare_times at a + l (b - a),
+  // their difference f(l) proved monotone on [lo, hi] (the sign of f' over it) with
+  // certified opposite signs at lo and hi, and its one root enclosed by interval Newton
+  // steps (slope: the sign of f'; f = slope there for l > hi of the result, -slope for l <
+  // its lo, both within [lo, hi]); nullopt where any of this is not certified.
+  std::optional<EdgeRoot> crossing_root_on_edge(std::uint32_t w1, std::uint32_t w2, std::uint32_t edge, double lo,
+                                                double hi, long bits);
   int compare_directions(std::uint32_t w1, std::uint32_t w2, std::uint32_t v);
   // The identity of w's front (equal ids: the same source image and offset in the same
   // frame, as same_expression decides), and of a time expression (equal ids: one value).
