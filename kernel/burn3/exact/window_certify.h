@@ -17,6 +17,8 @@
 //     rational local coordinates, times as ExactSum (exact sign, ties included);
 //  4. Arb: the chain is re-evaluated from the exact data (vertex coordinates, frames, the
 //     root) at 128, 256, ... bits up to max_bits; each level is a rigorous enclosure;
+//     Order: 1, 2, then Arb's first level (128 bits), then 3, then the rest of 4 (exact
+//     sums of long rationals cost far more than one Arb evaluation; 3 settles the ties).
 //  5. undecided: side decisions return 0 and count `uncertified` (the point is taken to lie
 //     on the ray; right when the configuration is exactly collinear, the usual cause);
 //     comparisons return kUndecided and the caller keeps every window (`kept_undecided`).
