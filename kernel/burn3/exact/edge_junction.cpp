@@ -154,6 +154,7 @@ std::uint32_t WindowPropagation::realising_record(std::uint32_t edge, const std:
   // The double filter first (enclosures of each record's time there); the staged
   // comparison at the exact rational point only where those overlap.
   std::optional<ExactPoint3> p;
+  mpq_class lambda;  // p's parameter (its Arb images: Unfolding::edge_param_ball)
   std::vector<Interval> value(recs.size());
   for (std::size_t i = 0; i < recs.size(); ++i) value[i] = record_time(edge, recs[i], at);
   std::vector<std::array<std::size_t, 3>> staged;  // (ri, qi, outcome): each pair decided once
@@ -165,8 +166,8 @@ std::uint32_t WindowPropagation::realising_record(std::uint32_t edge, const std:
       if (it != staged.end()) {
         c = static_cast<int>((*it)[2]) - 2;
       } else {
-        if (!p) p = edge_point3(edge, at);
-        const Target x{kNoIndex, &*p, cert_.point_key(edge, at)};
+        if (!p) p = edge_point3(edge, at), lambda = mpq_class(at);
+        const Target x{kNoIndex, &*p, cert_.point_key(edge, at), edge, &lambda};
         c = cert_.compare_times(records_[recs[a]].window, x, records_[recs[b]].window, x);
         staged.push_back({a, b, static_cast<std::size_t>(c + 2)});
       }
