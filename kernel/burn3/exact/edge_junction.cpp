@@ -94,6 +94,7 @@ void WindowPropagation::junction_arrival(std::uint32_t w, std::uint32_t edge, co
     return std::clamp(((x.x - A.x) * dx + (x.y - A.y) * dy) / (dx * dx + dy * dy), 0.0, 1.0);
   };
   JunctionRecord r{w, W.triangle, {b0, b1}, {param(x0, b0), param(x1, b1)}, source_on_edge(w, edge), grazing};
+  r.line = {A.ix(), A.iy(), B.ix() - A.ix(), B.iy() - A.iy()};
   JunctionState& st = junctions_[junction_of_[edge]];
   st.records.push_back(static_cast<std::uint32_t>(records_.size()));
   records_.push_back(r);
@@ -153,6 +154,7 @@ std::uint32_t WindowPropagation::realising_record(std::uint32_t edge, const std:
   // The double filter first (enclosures of each record's time there); the staged
   // comparison at the exact rational point only where those overlap.
   std::optional<ExactPoint3> p;
+  mpq_class lambda;  // p's parameter (its Arb images: Unfolding::edge_param_ball)
   std::vector<Interval> value(recs.size());
   for (std::size_t i = 0; i < recs.size(); ++i) value[i] = record_time(edge, recs[i], at);
   std::vector<std::array<std::size_t, 3>> staged;  // (ri, qi, outcome): each pair decided once
@@ -164,8 +166,8 @@ std::uint32_t WindowPropagation::realising_record(std::uint32_t edge, const std:
       if (it != staged.end()) {
         c = static_cast<int>((*it)[2]) - 2;
       } else {
-        if (!p) p = edge_point3(edge, at);
-        const Target x{kNoIndex, &*p, cert_.point_key(edge, at)};
+        if (!p) p = edge_point3(edge, at), lambda = mpq_class(at);
+        const Target x{kNoIndex, &*p, cert_.point_key(edge, at), edge, &lambda};
         c = cert_.compare_times(records_[recs[a]].window, x, records_[recs[b]].window, x);
         staged.push_back({a, b, static_cast<std::size_t>(c + 2)});
       }
@@ -193,12 +195,11 @@ std::uint32_t WindowPropagation::realising_record(std::uint32_t edge, const std:
 }
 
 // A record's time at the point of parameter `at` of the edge, as a double enclosure.
-Interval WindowPropagation::record_time(std::uint32_t edge, std::uint32_t r, double at) const {
-  const Window& W = s_.windows[records_[r].window];
-  const auto& ev = mc_.edge(edge).v;
-  const DiscPoint A = u_.vertex_image(W.triangle, ev[0]), B = u_.vertex_image(W.triangle, ev[1]);
+Interval WindowPropagation::record_time(std::uint32_t, std::uint32_t r, double at) const {
+  const JunctionRecord& rec = records_[r];
   const Interval l(at);
-  const Approx t = approx_time(W, DiscPoint::from_intervals(A.ix() + l * (B.ix() - A.ix()), A.iy() + l * (B.iy() - A.iy())));
+  const Approx t = approx_time(s_.windows[rec.window],
+                               DiscPoint::from_intervals(rec.line[0] + l * rec.line[2], rec.line[1] + l * rec.line[3]));
   return {round_down(t.v - t.e), round_up(t.v + t.e)};
 }
 

@@ -20,15 +20,6 @@ ExactPoint3 point_on(const MedialComplex& mc, std::uint32_t edge, const mpq_clas
   return a + l * (mc.vertex(mc.edge(edge).v[1]).exact - a);
 }
 
-// A window's time at the point with parameter l of the edge, as an enclosure.
-Interval time_on(const Unfolding& u, const WindowStore& s, std::uint32_t edge, std::uint32_t w, double l) {
-  const Window& W = s.windows[w];
-  const auto& ev = u.complex().edge(edge).v;
-  const DiscPoint A = u.vertex_image(W.triangle, ev[0]), B = u.vertex_image(W.triangle, ev[1]);
-  const Interval L(l);
-  const Approx t = approx_time(W, DiscPoint::from_intervals(A.ix() + L * (B.ix() - A.ix()), A.iy() + L * (B.iy() - A.iy())));
-  return {round_down(t.v - t.e), round_up(t.v + t.e)};
-}
 
 // A certified bracket [l1, l2] around `at` where sign_at changes sign (each sign certified,
 // or 0 for a proved zero at that end), narrowed by bisection to about 2^-100 of its width
@@ -222,7 +213,8 @@ std::vector<double> approx_crossings(const Unfolding& u, const WindowStore& s, s
   // Only certified sign changes count: two windows equal along a stretch (ties, e.g. a
   // kink's own source beyond the kink) have no crossing there, whatever the rounding says.
   constexpr int kSamples = 32;
-  auto g = [&](double l) { return certified_sign(time_on(u, s, edge, wa, l) - time_on(u, s, edge, wb, l)); };
+  const EdgeImage ea(u, s.windows[wa], edge), eb(u, s.windows[wb], edge);
+  auto g = [&](double l) { return certified_sign(ea.time(s.windows[wa], l) - eb.time(s.windows[wb], l)); };
   std::vector<double> roots;
   double x0 = lo;
   int g0 = g(lo);
@@ -249,10 +241,21 @@ std::vector<double> approx_crossings(const Unfolding& u, const WindowStore& s, s
 KinkParameter kink_parameter(const Unfolding& u, const WindowStore& s, Certifier& cert, std::uint32_t edge,
                              std::uint32_t wa, std::uint32_t wb, double at) {
   const MedialComplex& mc = u.complex();
+  // Where the difference of the two times is proved monotone with one root in [lo0, hi0]
+  // (Certifier::crossing_root_on_edge), its sign at the bisection points there outside the
+  // root's enclosure is that root's side (what compare_times would certify there); points
+  // inside the enclosure, or outside [lo0, hi0], are compared as before.
+  const double lo0 = std::max(0.0, at - 1e-6), hi0 = std::min(1.0, at + 1e-6);
+  const std::optional<Certifier::EdgeRoot> root = cert.crossing_root_on_edge(wa, wb, edge, lo0, hi0, 256);
+  const mpq_class qlo(lo0), qhi(hi0);
   const Bracket br = bracket(
       [&](const mpq_class& l) {
+        if (root && qlo <= l && l <= qhi) {
+          if (l < root->lo) return -root->slope;
+          if (l > root->hi) return root->slope;
+        }
         const ExactPoint3 p = point_on(mc, edge, l);
-        const Target x{kNoIndex, &p};
+        const Target x{kNoIndex, &p, 0, edge, &l};
         return cert.compare_times(wa, x, wb, x, true);
       },
       at);
@@ -322,10 +325,16 @@ KinkParameter ray_parameter(const Unfolding& u, const WindowStore& s, Certifier&
       }
     }
   }
+  // The side function is affine along the edge: one Arb evaluation encloses its root, and
+  // gives the certified sign at every point outside that enclosure (what side_if_certified
+  // would certify there); points inside it are decided as before.
+  const std::optional<Certifier::EdgeRoot> root = cert.ray_root_on_edge(w, j, edge, 256);
   const Bracket br = bracket(
       [&](const mpq_class& l) {
+        if (root && l < root->lo) return -root->slope;
+        if (root && l > root->hi) return root->slope;
         const ExactPoint3 p = point_on(mc, edge, l);
-        return cert.side_if_certified(w, j, Target{kNoIndex, &p}, true);  // undecided: the bisection stops
+        return cert.side_if_certified(w, j, Target{kNoIndex, &p, 0, edge, &l}, true);  // undecided: the bisection stops
       },
       at);
   k.certified = br.ok;

@@ -31,8 +31,26 @@
 #include <vector>
 
 #include "burn3/exact/window_certify.h"
+#include "burn3/exact/window_values.h"
 
 namespace grassfire {
+
+// A window's time along the edge at parameter l, as an enclosure: the images A, B of the
+// edge's ends in its frame taken once (A + l (B - A), the same operations per point).
+struct EdgeImage {
+  Interval ax, ay, dx, dy;
+  EdgeImage() = default;
+  EdgeImage(const Unfolding& u, const Window& W, std::uint32_t edge) {
+    const auto& ev = u.complex().edge(edge).v;
+    const DiscPoint A = u.vertex_image(W.triangle, ev[0]), B = u.vertex_image(W.triangle, ev[1]);
+    ax = A.ix(), ay = A.iy(), dx = B.ix() - ax, dy = B.iy() - ay;
+  }
+  Interval time(const Window& W, double l) const {
+    const Interval L(l);
+    const Approx t = approx_time(W, DiscPoint::from_intervals(ax + L * dx, ay + L * dy));
+    return {round_down(t.v - t.e), round_up(t.v + t.e)};
+  }
+};
 
 struct KinkParameter {
   Interval lambda;

@@ -242,8 +242,11 @@ const RigidMotion2& Unfolding::crossing(std::uint32_t e, std::uint32_t t, std::u
 }
 
 std::array<Ball, 2> Unfolding::frame_scale_ball(std::uint32_t t) const {
-  const PlanarFrame& f = planar_frame(triangle_frame_[t]);
-  return {sqrt(ball_of(f.e1_norm2)), sqrt(ball_of(f.e2_norm2))};
+  auto& cache = ball_scales_[BallPrecision::bits()];
+  const std::uint32_t frame = triangle_frame_[t];
+  if (auto it = cache.find(frame); it != cache.end()) return it->second;
+  const PlanarFrame& f = planar_frame(frame);
+  return cache.emplace(frame, std::array<Ball, 2>{sqrt(ball_of(f.e1_norm2)), sqrt(ball_of(f.e2_norm2))}).first->second;
 }
 
 BallVec2 Unfolding::point_ball(std::uint32_t t, const ExactPoint3& p) const {
@@ -251,6 +254,21 @@ BallVec2 Unfolding::point_ball(std::uint32_t t, const ExactPoint3& p) const {
   const ExactPoint3 d = p - f.origin;
   const auto s = frame_scale_ball(t);
   return {ball_of(dot(d, f.e1)) / s[0], ball_of(dot(d, f.e2)) / s[1]};
+}
+
+BallVec2 Unfolding::edge_param_ball(std::uint32_t t, std::uint32_t edge, const mpq_class& l) const {
+  const std::uint32_t frame = triangle_frame_[t];
+  const std::uint64_t key = (static_cast<std::uint64_t>(frame) << 32) | edge;
+  auto it = edge_dots_.find(key);
+  if (it == edge_dots_.end()) {
+    const PlanarFrame& f = planar_frame(frame);
+    const ExactPoint3& a = mc_.vertex(mc_.edge(edge).v[0]).exact;
+    const ExactPoint3 d = a - f.origin, ab = mc_.vertex(mc_.edge(edge).v[1]).exact - a;
+    it = edge_dots_.emplace(key, std::array<mpq_class, 4>{dot(d, f.e1), dot(ab, f.e1), dot(d, f.e2), dot(ab, f.e2)}).first;
+  }
+  const auto& c = it->second;
+  const auto s = frame_scale_ball(t);
+  return {ball_of(mpq_class(c[0] + l * c[1])) / s[0], ball_of(mpq_class(c[2] + l * c[3])) / s[1]};
 }
 
 BallVec2 Unfolding::vertex_ball(std::uint32_t t, std::uint32_t v) const {

@@ -75,6 +75,9 @@ class Unfolding {
   // Arb versions at the current BallPrecision, from the exact data.
   BallVec2 vertex_ball(std::uint32_t t, std::uint32_t v) const;
   BallVec2 point_ball(std::uint32_t t, const ExactPoint3& p) const;  // p in t's plane
+  // point_ball of the point a + l (b - a) of edge (a, b) of t (the same ball: the frame's
+  // dot products are affine in l, their two rational coefficients cached per frame and edge).
+  BallVec2 edge_param_ball(std::uint32_t t, std::uint32_t edge, const mpq_class& l) const;
   BallMotion crossing_ball(std::uint32_t e, std::uint32_t t, std::uint32_t t2) const;
   // 1 / sqrt(g1), 1 / sqrt(g2) of t's frame as balls: frame coordinates = local * sqrt(g).
   std::array<Ball, 2> frame_scale_ball(std::uint32_t t) const;
@@ -131,11 +134,13 @@ class Unfolding {
   std::vector<bool> has_crossing_;
   mutable std::unordered_map<std::uint64_t, RigidMotion2> other_crossings_;
   mutable std::unordered_map<std::uint64_t, std::array<mpq_class, 2>> uv_cache_;
+  mutable std::unordered_map<std::uint64_t, std::array<mpq_class, 4>> edge_dots_;  // (frame, edge)
   mutable std::unordered_map<std::uint64_t, std::unique_ptr<ExactCrossing>> exact_crossings_;
   // Arb data per precision (bits -> key -> value): crossings by (t, t2), vertex images by
   // (frame, vertex).
   mutable std::unordered_map<long, std::unordered_map<std::uint64_t, BallMotion>> ball_crossings_;
   mutable std::unordered_map<long, std::unordered_map<std::uint64_t, BallVec2>> ball_vertices_;
+  mutable std::unordered_map<long, std::unordered_map<std::uint32_t, std::array<Ball, 2>>> ball_scales_;  // bits -> frame
 };
 
 }  // namespace grassfire

@@ -77,8 +77,10 @@ BallVec2 Certifier::target_ball(std::uint32_t t, const Target& x) const {
     const MemoKey k{u_.frame(t), x.key, static_cast<std::uint64_t>(BallPrecision::bits())};
     if (const auto it = ball_cache_.find(k); it != ball_cache_.end()) return it->second;
     if (ball_cache_.size() > 1'000'000) ball_cache_.clear();
-    return ball_cache_.emplace(k, u_.point_ball(t, *x.point)).first->second;
+    return ball_cache_.emplace(k, x.lambda ? u_.edge_param_ball(t, x.edge, *x.lambda) : u_.point_ball(t, *x.point))
+        .first->second;
   }
+  if (x.lambda) return u_.edge_param_ball(t, x.edge, *x.lambda);
   if (x.point) return u_.point_ball(t, *x.point);
   if (is_edge_point(x.vertex)) return edge_point_ball(u_, s_, t, x.vertex & ~kEdgePointBound);
   return u_.vertex_ball(t, x.vertex);
@@ -136,7 +138,18 @@ mpq_class Certifier::edge_length2(std::uint32_t e) const {
   return squared_distance(u_.complex().vertex(ev[0]).exact, u_.complex().vertex(ev[1]).exact);
 }
 
+// Memoised per (window, offset wanted, source vertex, precision): a window's chain never
+// changes once made, and the bisections (junction_kinks.cpp) evaluate the same two chains
+// at a hundred points.
 WindowBall Certifier::evaluate(std::uint32_t w, bool with_offset, std::uint32_t source_vertex) {
+  const MemoKey key{w, source_vertex, static_cast<std::uint64_t>(BallPrecision::bits()) * 2 + with_offset};
+  if (const auto it = chain_memo_.find(key); it != chain_memo_.end()) return it->second;
+  if (chain_memo_.size() > 200000) chain_memo_.clear();
+  WindowBall b = evaluate_chain(w, with_offset, source_vertex);
+  return chain_memo_.emplace(key, std::move(b)).first->second;
+}
+
+WindowBall Certifier::evaluate_chain(std::uint32_t w, bool with_offset, std::uint32_t source_vertex) {
   std::vector<std::uint32_t> chain;
   for (std::uint32_t x = w; x != kNoIndex; x = s_.windows[x].parent) chain.push_back(x);
   std::reverse(chain.begin(), chain.end());
@@ -387,6 +400,9 @@ int Certifier::compare_time_exprs(std::uint32_t a, std::uint32_t b, bool prune_o
   const int flip = ia < ib ? 1 : -1;  // the key names the pair in one order
   const MemoKey key{tag(kExprs, std::min(ia, ib)) | cap_code(cap), std::max(ia, ib), 0};
   if (const std::optional<int> m = recall(key)) return *m == kUndecided ? *m : flip * *m;
+  auto arb_level = [&] { return ball_sign(expr_ball(a) - expr_ball(b)); };
+  // Arb's first level before the exact stage (as in side_if_certified).
+  if (const int r = escalate(128, arb_level); r != kUndecided) return remember(key, flip * r) * flip;
   const ExactSum* x = exact_expr(a);
   const ExactSum* y = x ? exact_expr(b) : nullptr;
   if (x && y) {
@@ -394,7 +410,7 @@ int Certifier::compare_time_exprs(std::uint32_t a, std::uint32_t b, bool prune_o
     ++(e == 0 ? counts.exact_equal : counts.exact);
     return remember(key, flip * e) * flip;
   }
-  const int r = escalate(cap, [&] { return ball_sign(expr_ball(a) - expr_ball(b)); });
+  const int r = escalate(cap, arb_level);
   if (r == kUndecided) ++counts.kept_undecided;
   return r == kUndecided ? remember(key, r) : remember(key, flip * r) * flip;
 }
@@ -571,6 +587,89 @@ std::uint32_t Certifier::edge_ray_origin(std::uint32_t w, int j) const {
   return kNoIndex;
 }
 
+namespace {
+std::optional<Certifier::EdgeRoot> rational_root(const Ball& root, int slope, long bits) {
+  mpfr_t lo, hi;
+  mpfr_init2(lo, bits);
+  mpfr_init2(hi, bits);
+  root.to_mpfr(lo, hi);
+  Certifier::EdgeRoot e;
+  const bool finite = mpfr_number_p(lo) && mpfr_number_p(hi);
+  if (finite) mpfr_get_q(e.lo.get_mpq_t(), lo), mpfr_get_q(e.hi.get_mpq_t(), hi);
+  mpfr_clear(lo);
+  mpfr_clear(hi);
+  if (!finite) return std::nullopt;
+  e.slope = slope;
+  return e;
+}
+}  // namespace
+
+std::optional<Certifier::EdgeRoot> Certifier::ray_root_on_edge(std::uint32_t w, int j, std::uint32_t edge, long bits) {
+  BallPrecision guard(bits);
+  const Window& win = s_.windows[w];
+  const WindowBall b = evaluate(w, false, edge_ray_origin(w, j));
+  const BallVec2 A = u_.edge_param_ball(win.triangle, edge, mpq_class(0));
+  const BallVec2 D = ball_sub(u_.edge_param_ball(win.triangle, edge, mpq_class(1)), A);
+  // The same cross products as side_if_certified's Arb stage, at A + l D.
+  Ball g0, g1;
+  if (b.plane) {
+    g0 = ball_cross(b.source, ball_sub(A, b.image[j]));
+    g1 = ball_cross(b.source, D);
+  } else {
+    const BallVec2 r = ball_sub(b.image[j], b.source);
+    g0 = ball_cross(r, ball_sub(A, b.source));
+    g1 = ball_cross(r, D);
+  }
+  const int slope = g1.sign();
+  if (slope != 1 && slope != -1) return std::nullopt;
+  return rational_root(-g0 / g1, slope, bits);
+}
+
+
+std::optional<Certifier::EdgeRoot> Certifier::crossing_root_on_edge(std::uint32_t w1, std::uint32_t w2,
+                                                                    std::uint32_t edge, double lo, double hi,
+                                                                    long bits) {
+  BallPrecision guard(bits);
+  struct Along {
+    WindowBall b;
+    BallVec2 A, D;  // the edge a + l (b - a) in the window's frame: A + l D
+  };
+  auto along = [&](std::uint32_t w) {
+    const std::uint32_t t = s_.windows[w].triangle;
+    Along a{evaluate(w, true), u_.edge_param_ball(t, edge, mpq_class(0)), {}};
+    a.D = ball_sub(u_.edge_param_ball(t, edge, mpq_class(1)), a.A);
+    return a;
+  };
+  const Along a = along(w1), b = along(w2);
+  auto time = [](const Along& a, const Ball& l) {  // time_ball at the edge point l
+    const BallVec2 p{a.A.x + l * a.D.x, a.A.y + l * a.D.y};
+    if (a.b.plane) return a.b.offset + a.b.source.x * p.x + a.b.source.y * p.y;
+    const BallVec2 d = ball_sub(p, a.b.source);
+    return a.b.offset + sqrt(d.x * d.x + d.y * d.y);
+  };
+  auto rate = [](const Along& a, const Ball& l) {  // its derivative in l
+    if (a.b.plane) return a.b.source.x * a.D.x + a.b.source.y * a.D.y;
+    const BallVec2 d{a.A.x + l * a.D.x - a.b.source.x, a.A.y + l * a.D.y - a.b.source.y};
+    return (d.x * a.D.x + d.y * a.D.y) / sqrt(d.x * d.x + d.y * d.y);
+  };
+  Ball X = Ball::from_interval(Interval{lo, hi});
+  const Ball dX = rate(a, X) - rate(b, X);
+  const int slope = dX.sign();
+  if (slope != 1 && slope != -1) return std::nullopt;
+  if ((time(a, Ball(lo)) - time(b, Ball(lo))).sign() != -slope || (time(a, Ball(hi)) - time(b, Ball(hi))).sign() != slope)
+    return std::nullopt;
+  // f is monotone on X with a sign change: one root, which every Newton image contains.
+  for (int i = 0; i < 8; ++i) {
+    Ball m;
+    arb_get_mid_arb(m.get(), X.get());
+    const Ball n = m - (time(a, m) - time(b, m)) / (rate(a, X) - rate(b, X));
+    Ball y;
+    if (!arb_intersection(y.get(), X.get(), n.get(), bits)) return std::nullopt;
+    X = y;
+  }
+  return rational_root(X, slope, bits);
+}
+
 int Certifier::side_if_certified(std::uint32_t w, int j, const Target& x, bool arb_first) {
   trim_memos();
   const Window& win = s_.windows[w];
@@ -584,17 +683,17 @@ int Certifier::side_if_certified(std::uint32_t w, int j, const Target& x, bool a
     return 0;
   }
   const std::uint32_t along = edge_ray_origin(w, j);
-  auto arb = [&] {
-    return escalate(max_bits_, [&] {
-      const WindowBall b = evaluate(w, false, along);
-      const std::uint32_t t = win.triangle;
-      const BallVec2 p = target_ball(t, x);
-      if (b.plane) return ball_sign(ball_cross(b.source, ball_sub(p, b.image[j])));
-      return ball_sign(ball_cross(ball_sub(b.image[j], b.source), ball_sub(p, b.source)));
-    });
+  auto arb_level = [&] {
+    const WindowBall b = evaluate(w, false, along);
+    const std::uint32_t t = win.triangle;
+    const BallVec2 p = target_ball(t, x);
+    if (b.plane) return ball_sign(ball_cross(b.source, ball_sub(p, b.image[j])));
+    return ball_sign(ball_cross(ball_sub(b.image[j], b.source), ball_sub(p, b.source)));
   };
-  if (arb_first)
-    if (const int a = arb(); a != kUndecided) return a;
+  auto arb = [&] { return escalate(max_bits_, arb_level); };
+  // Arb at its first level before the exact stage (thousands of rays against long rationals
+  // that 128 bits separate at once); the exact stage then settles the ties Arb cannot.
+  if (const int a = arb_first ? arb() : escalate(128, arb_level); a != kUndecided) return a;
   std::unique_ptr<ExactWindow> substitute = along == kNoIndex ? nullptr : build_exact_window(w, along);
   if (const ExactWindow* ew = substitute ? substitute.get() : exact_window(w)) {
     const int e = exact_side(*ew, j, x);
@@ -637,9 +736,10 @@ int Certifier::compare_times(std::uint32_t w1, const Target& x1, std::uint32_t w
     if (!keyed) return r;
     return r == kUndecided ? remember(key, r) : remember(key, flip * r) * flip;
   };
-  auto arb = [&] { return escalate(prune_bits_, [&] { return ball_sign(time_ball(w1, x1) - time_ball(w2, x2)); }); };
-  if (arb_first)
-    if (const int a = arb(); a != kUndecided) return done(a);
+  auto arb_level = [&] { return ball_sign(time_ball(w1, x1) - time_ball(w2, x2)); };
+  auto arb = [&] { return escalate(prune_bits_, arb_level); };
+  // Arb's first level before the exact stage (as in side_if_certified).
+  if (const int a = arb_first ? arb() : escalate(128, arb_level); a != kUndecided) return done(a);
   if (exact_window(w1) && exact_window(w2)) {
     const auto t1 = exact_time(w1, x1), t2 = exact_time(w2, x2);
     if (t1 && t2) {

@@ -17,6 +17,8 @@
 //     rational local coordinates, times as ExactSum (exact sign, ties included);
 //  4. Arb: the chain is re-evaluated from the exact data (vertex coordinates, frames, the
 //     root) at 128, 256, ... bits up to max_bits; each level is a rigorous enclosure;
+//     Order: 1, 2, then Arb's first level (128 bits), then 3, then the rest of 4 (exact
+//     sums of long rationals cost far more than one Arb evaluation; 3 settles the ties).
 //  5. undecided: side decisions return 0 and count `uncertified` (the point is taken to lie
 //     on the ray; right when the configuration is exactly collinear, the usual cause);
 //     comparisons return kUndecided and the caller keeps every window (`kept_undecided`).
@@ -48,6 +50,9 @@ struct Target {
   std::uint32_t vertex = kNoIndex;
   const ExactPoint3* point = nullptr;
   std::uint64_t key = 0;  // nonzero: names `point` for the memo (Certifier::point_key)
+  // Set: `point` is a + *lambda (b - a) on this edge (a, b) (Arb images without the 3D point).
+  std::uint32_t edge = kNoIndex;
+  const mpq_class* lambda = nullptr;
 };
 
 struct WindowBall {
@@ -70,6 +75,24 @@ class Certifier {
   // point that Arb settles at once, where the exact sums of long rationals cost far more).
   int side_if_certified(std::uint32_t w, int j, const Target& x, bool arb_first = false);
   int compare_times(std::uint32_t w1, const Target& x1, std::uint32_t w2, const Target& x2, bool arb_first = false);
+  // Where w's ray j meets `edge` (an edge of w's triangle), from the Arb stage of
+  // side_if_certified: its side function at the edge point a + l (b - a) is affine in l,
+  // g0 + l g1, so one evaluation (at `bits`) gives a rational interval [lo, hi] holding the
+  // root and the sign of the slope g1 (side = slope there for l > hi, -slope for l < lo);
+  // nullopt where g1's sign is not certified.
+  struct EdgeRoot {
+    mpq_class lo, hi;
+    int slope = 0;
+  };
+  std::optional<EdgeRoot> ray_root_on_edge(std::uint32_t w, int j, std::uint32_t edge, long bits);
+  // Where w1's and w2's times cross along `edge` (an edge of both triangles) inside the
+  // parameter interval [lo, hi]: the same Arb values as compare_times at a + l (b - a),
+  // their difference f(l) proved monotone on [lo, hi] (the sign of f' over it) with
+  // certified opposite signs at lo and hi, and its one root enclosed by interval Newton
+  // steps (slope: the sign of f'; f = slope there for l > hi of the result, -slope for l <
+  // its lo, both within [lo, hi]); nullopt where any of this is not certified.
+  std::optional<EdgeRoot> crossing_root_on_edge(std::uint32_t w1, std::uint32_t w2, std::uint32_t edge, double lo,
+                                                double hi, long bits);
   int compare_directions(std::uint32_t w1, std::uint32_t w2, std::uint32_t v);
   // The identity of w's front (equal ids: the same source image and offset in the same
   // frame, as same_expression decides), and of a time expression (equal ids: one value).
@@ -117,6 +140,7 @@ class Certifier {
 
  private:
   Ball sigma_ball(std::uint32_t pseudo);
+  WindowBall evaluate_chain(std::uint32_t w, bool with_offset, std::uint32_t source_vertex);
   void trim_memos();  // only between decisions: pointers into the memo stay valid within one
   bool same_expression(std::uint32_t w1, std::uint32_t w2, const Target& x) const;
   bool same_point_source(std::uint32_t pa, std::uint32_t pb) const;
@@ -151,6 +175,7 @@ class Certifier {
   mutable std::unordered_map<MemoKey, DiscPoint, MemoHash> disc_cache_;  // (frame, point key)
   mutable std::unordered_map<MemoKey, BallVec2, MemoHash> ball_cache_;   // (frame, point key, bits)
   std::unordered_map<long, std::unordered_map<std::uint32_t, Ball>> time_memo_;  // bits -> TimeExpr -> ball
+  std::unordered_map<MemoKey, WindowBall, MemoHash> chain_memo_;  // (window, source vertex, bits and offset)
   std::unordered_map<std::uint32_t, std::unique_ptr<ExactWindow>> exact_memo_;
   std::unordered_map<std::uint32_t, std::unique_ptr<ExactSum>> exact_time_memo_;
 };

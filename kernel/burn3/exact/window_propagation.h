@@ -160,6 +160,7 @@ class WindowPropagation {
     std::array<double, 2> at;
     bool on_edge = false;   // its source lies on the edge (emits into every side already)
     bool grazing = false;   // a wedge ray runs along the edge: nothing to emit beyond the edge
+    std::array<Interval, 4> line{};  // A.x, A.y, B.x - A.x, B.y - A.y: the edge in the window's frame
   };
   // A breakpoint of an edge's (k-1)-th arrival: an end of the edge, a record's end, or a
   // crossing of two records' times; `id` names it (edge-point sources and emitted pieces
