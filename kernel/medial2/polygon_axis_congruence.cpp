@@ -109,18 +109,20 @@ Image transform_circle(const PolygonSites& s, const std::vector<std::int64_t>& g
   return im;
 }
 
-// A flat key: objects translated so that the lexicographically smallest point is 0.
+// A flat key: objects translated so that the lexicographically smallest point is 0. The
+// builder points at the images' objects (no copies: it runs 16 times per edge).
 struct KeyBuilder {
-  std::array<Obj, 8> obj;
-  std::array<std::int64_t, 4> codes{};
+  std::array<const Obj*, 8> obj;
+  std::array<std::int64_t, 4> codes;
   int objects = 0, ncodes = 0;
   void add(const Image& im) {
     codes[ncodes++] = im.code * 4 + im.count;
-    for (int i = 0; i < im.count; ++i) obj[objects++] = im.obj[i];
+    for (int i = 0; i < im.count; ++i) obj[objects++] = &im.obj[i];
   }
-  // The key: codes, then every object's kind and coordinates (at most 4 + 8 * 5 values).
+  // The key: codes, then every object's kind and coordinates (at most 4 + 8 * 5 values;
+  // the entries past `size` are never read, so they are left uninitialised).
   struct Key {
-    std::array<std::int64_t, 48> v{};
+    std::array<std::int64_t, 48> v;
     int size = 0;
     bool operator<(const Key& o) const {
       return std::lexicographical_compare(v.begin(), v.begin() + size, o.v.begin(), o.v.begin() + o.size);
@@ -131,7 +133,7 @@ struct KeyBuilder {
   };
   // Translated so that the least point site is the origin (the least segment end when
   // there is no point site).
-  Key build() const {
+  void build(Key& k) const {
     std::int64_t mx = 0, my = 0;
     bool found = false;
     auto consider = [&](std::int64_t x, std::int64_t y) {
@@ -139,19 +141,19 @@ struct KeyBuilder {
       found = true;
     };
     bool has_point = false;
-    for (int i = 0; i < objects; ++i) has_point = has_point || obj[i].kind == 0;
+    for (int i = 0; i < objects; ++i) has_point = has_point || obj[i]->kind == 0;
     for (int i = 0; i < objects; ++i) {
-      if (obj[i].kind == 0) {
-        consider(obj[i].px, obj[i].py);
+      if (obj[i]->kind == 0) {
+        consider(obj[i]->px, obj[i]->py);
       } else if (!has_point) {
-        consider(obj[i].px, obj[i].py);
-        consider(obj[i].qx, obj[i].qy);
+        consider(obj[i]->px, obj[i]->py);
+        consider(obj[i]->qx, obj[i]->qy);
       }
     }
-    Key k;
+    k.size = 0;
     for (int i = 0; i < ncodes; ++i) k.v[k.size++] = codes[i];
     for (int i = 0; i < objects; ++i) {
-      const Obj& o = obj[i];
+      const Obj& o = *obj[i];
       k.v[k.size++] = o.kind;
       if (o.kind == 0) {
         k.v[k.size++] = o.a[0] - mx;
@@ -165,8 +167,25 @@ struct KeyBuilder {
         k.v[k.size++] = static_cast<std::int64_t>(static_cast<std::uint64_t>(c));
       }
     }
-    return k;
   }
+};
+
+// The least of several keys, each built in place into next() (no copies).
+class LeastKey {
+ public:
+  KeyBuilder::Key& next() { return keys_[spare_]; }
+  // Offers the key just built into next().
+  void offer() {
+    if (best_ < 0 || keys_[spare_] < keys_[best_]) {
+      best_ = spare_;
+      spare_ ^= 1;
+    }
+  }
+  const KeyBuilder::Key& best() const { return keys_[best_]; }
+
+ private:
+  KeyBuilder::Key keys_[2];
+  int best_ = -1, spare_ = 0;
 };
 
 struct KeyHash {
@@ -306,14 +325,14 @@ void unite_congruent_atoms(const PolygonSites& s, const std::vector<AxisNodeData
   const std::vector<bool> node_candidates = candidates(n, [&](std::uint32_t i) -> const Interval& { return nodes[i].radius; }, node_uf);
   for (std::uint32_t i = 0; i < n; ++i) {
     if (!node_candidates[i] || nodes[i].circle.kind == CircleKind::Apex) continue;
-    KeyBuilder::Key best;
+    LeastKey best;
     for (const Image& im : images_of(i)) {
       KeyBuilder k;
       k.add(im);
-      const KeyBuilder::Key key = k.build();
-      if (best.size == 0 || key < best) best = key;
+      k.build(best.next());
+      best.offer();
     }
-    const auto [it, fresh] = seen.emplace(best, i);
+    const auto [it, fresh] = seen.emplace(best.best(), i);
     if (!fresh) node_uf.unite(i, it->second);
   }
   seen.clear();
@@ -332,7 +351,7 @@ void unite_congruent_atoms(const PolygonSites& s, const std::vector<AxisNodeData
   for (std::uint32_t e = 0; e < total; ++e) {
     if (!edge_candidates[e]) continue;
     const AxisEdgeData& d = items[e];
-    KeyBuilder::Key best;
+    LeastKey best;
     // images_of(i) holds, for each of the eight maps in turn, one image per circle; u's
     // are copied when v's would evict them from the shared slot.
     std::vector<Image> u_copy;
@@ -358,14 +377,14 @@ void unite_congruent_atoms(const PolygonSites& s, const std::vector<AxisNodeData
             k.add(order ? iv[a * cv + y] : iu[a * cu + x]);
             k.add(order ? iu[a * cu + x] : iv[a * cv + y]);
             if (d.parabolic) {
-              k.obj[k.objects++] = focus;
-              k.obj[k.objects++] = line;
+              k.obj[k.objects++] = &focus;
+              k.obj[k.objects++] = &line;
             }
-            const KeyBuilder::Key key = k.build();
-            if (best.size == 0 || key < best) best = key;
+            k.build(best.next());
+            best.offer();
           }
     }
-    const auto [it, fresh] = seen.emplace(best, e);
+    const auto [it, fresh] = seen.emplace(best.best(), e);
     if (!fresh) edge_uf.unite(e, it->second);
   }
 }

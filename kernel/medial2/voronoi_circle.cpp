@@ -5,6 +5,7 @@
 #include <cmath>
 #include <limits>
 #include <stdexcept>
+#include <type_traits>
 
 #include "geometry2/predicates2.h"
 #include "number/sqrt_field.h"
@@ -92,7 +93,7 @@ CircleValue<T> solve_ppp(const Pt<T>& p1, const Pt<T>& p2, const Pt<T>& p3) {
 // Circle through P and Q tangent to L: centre M + t d on the bisector of P and Q, with
 // a t^2 + 2 g0 g1 t + (g0^2 - N h0) = 0 (see voronoi_circle.h).
 template <class T>
-CircleValue<T> solve_pps(const Pt<T>& p, const Pt<T>& q, const Line<T>& l, bool linear, int root) {
+CircleValue<T> solve_pps(const Pt<T>& p, const Pt<T>& q, const Line<T>& l, bool linear, int root, bool tangent) {
   const T mx = T(0.5) * (p.x + q.x), my = T(0.5) * (p.y + q.y);
   const T dx = p.y - q.y, dy = q.x - p.x;
   const T g0 = l.nx * mx + l.ny * my + l.c, g1 = l.nx * dx + l.ny * dy;
@@ -103,7 +104,11 @@ CircleValue<T> solve_pps(const Pt<T>& p, const Pt<T>& q, const Line<T>& l, bool 
     t = -c0 / (T(2.0) * g0 * g1);
   } else {
     const T a = g1 * g1 - l.N * h2;
-    const T beta = sqrt(l.N * (g0 * g0 * h2 + a * h0));
+    // tangent: P or Q on L's line, delta = 0 exactly (pps_root), so beta = 0: an exact zero
+    // keeps the enclosures tight where sqrt of an enclosure of 0 would lose half the bits
+    // (the exact forms keep computing it: the same sums as before).
+    const bool zero = tangent && !std::is_same_v<T, Exact>;
+    const T beta = zero ? T(0.0) : sqrt(l.N * (g0 * g0 * h2 + a * h0));
     const T sb = root > 0 ? beta : -beta;
     t = two_forms(sb - g0 * g1, a, c0, -(g0 * g1) - sb);
   }
@@ -191,7 +196,7 @@ CircleValue<T> solve(const PolygonSites& s, const VoronoiCircle& c) {
     case CircleKind::PPS:
     case CircleKind::PPSLinear:
       return solve_pps(point_of<T>(s, id[0]), point_of<T>(s, id[1]), line_of<T>(s, id[2]),
-                       c.kind == CircleKind::PPSLinear, c.root);
+                       c.kind == CircleKind::PPSLinear, c.root, c.tangent != 0);
     case CircleKind::PSS:
       if (c.tangent)
         return solve_pss_tangent(point_of<T>(s, id[0]), line_of<T>(s, id[c.tangent]), line_of<T>(s, id[3 - c.tangent]));
@@ -230,9 +235,23 @@ PpsTest<T> pps_test(const Point2& p, const Point2& qq, const Point2& a, const Po
   return {aa, delta, rhs - sqrt(N * delta) * w};
 }
 
-int pps_root(const PolygonSites& s, std::uint32_t ps, std::uint32_t qs, std::uint32_t ls, bool* linear) {
+// `on_line`: 1 when P lies on L's line, 2 when Q does (and P does not), else 0.
+int pps_root(const PolygonSites& s, std::uint32_t ps, std::uint32_t qs, std::uint32_t ls, bool* linear,
+             std::uint8_t* on_line) {
   const Point2 p = s.vertex[ps], qq = s.vertex[qs];
   const Point2 a = s.vertex[s.seg_start(ls)], b = s.vertex[s.seg_end(ls)];
+  // A point on L's line (typically a segment's own endpoint): with u = (P - Q) / 2,
+  // a = -4 (n.u)^2 and, when g(P) = 0 or g(Q) = 0, delta = 4 |u|^2 ((n.u)^2 + (n x u)^2 -
+  // N |u|^2) = 0 (Lagrange's identity): one circle, touching L at that point. a = 0 (the
+  // linear case) exactly when PQ is parallel to L, i.e. when both points lie on its line.
+  // These are the exact path's answers below (linear, else root 1 for delta = 0), from
+  // exact orientations instead of rationals.
+  const int op = orientation(a, b, p), oq = orientation(a, b, qq);
+  *on_line = op == 0 ? 1 : oq == 0 ? 2 : 0;
+  if (*on_line) {
+    *linear = op == 0 && oq == 0;
+    return 1;
+  }
   const PpsTest<DDBall> f = pps_test<DDBall>(p, qq, a, b);
   const int fa = f.aa.sign(), fd = f.delta.sign(), ft = f.test.sign();
   if ((fa == 1 || fa == -1) && fd == 1 && (ft == 1 || ft == -1)) {
@@ -308,8 +327,10 @@ VoronoiCircle classify_circle(const PolygonSites& s, const VoronoiTopology::Vert
     case 2: {
       rotate_until([&] { return !s.is_point(c.sites[2]); });
       bool linear = false;
-      c.root = static_cast<std::int8_t>(pps_root(s, c.sites[0], c.sites[1], c.sites[2], &linear));
+      std::uint8_t on_line = 0;
+      c.root = static_cast<std::int8_t>(pps_root(s, c.sites[0], c.sites[1], c.sites[2], &linear, &on_line));
       c.kind = linear ? CircleKind::PPSLinear : CircleKind::PPS;
+      if (c.kind == CircleKind::PPS) c.tangent = on_line;
       break;
     }
     case 1: {
