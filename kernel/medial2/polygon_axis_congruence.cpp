@@ -56,19 +56,23 @@ std::int64_t gcd64(std::int64_t a, std::int64_t b) {
   return a;
 }
 
-// The gcd of every segment site's direction (invariant under the signed permutations),
-// computed once: transform_site runs 8 times per site and circle.
-std::vector<std::int64_t> direction_gcds(const PolygonSites& s) {
-  std::vector<std::int64_t> g(s.vertex_count());
+// Every segment's primitive direction (its direction divided by the gcd of its
+// components), computed once: transform_site runs 8 times per site and circle, and a
+// signed permutation A maps the primitive direction of d to that of A d (no divisions).
+using Directions = std::vector<std::array<std::int64_t, 2>>;
+Directions primitive_directions(const PolygonSites& s) {
+  Directions out(s.vertex_count());
   for (std::uint32_t i = 0; i < s.vertex_count(); ++i) {
     const Point2 p = s.vertex[i], q = s.vertex[s.next[i]];
-    g[i] = gcd64(static_cast<std::int64_t>(q.x) - static_cast<std::int64_t>(p.x),
-                 static_cast<std::int64_t>(q.y) - static_cast<std::int64_t>(p.y));
+    const std::int64_t dx = static_cast<std::int64_t>(q.x) - static_cast<std::int64_t>(p.x);
+    const std::int64_t dy = static_cast<std::int64_t>(q.y) - static_cast<std::int64_t>(p.y);
+    const std::int64_t g = gcd64(dx, dy);
+    out[i] = {dx / g, dy / g};
   }
-  return g;
+  return out;
 }
 
-Obj transform_site(const PolygonSites& s, const std::vector<std::int64_t>& gcds, std::uint32_t site, const int* a) {
+Obj transform_site(const PolygonSites& s, const Directions& dirs, std::uint32_t site, const int* a) {
   Obj o;
   auto at = [&](std::uint32_t v, std::int64_t* out) {
     apply(a, static_cast<std::int64_t>(s.vertex[v].x), static_cast<std::int64_t>(s.vertex[v].y), out);
@@ -82,12 +86,14 @@ Obj transform_site(const PolygonSites& s, const std::vector<std::int64_t>& gcds,
   }
   o.kind = 1;
   // A reflection maps the segment start -> end to one with the interior on its right:
-  // the mapped polygon edge runs end -> start.
+  // the mapped polygon edge runs end -> start (direction -A d).
   const bool reverses = a[0] * a[3] - a[1] * a[2] < 0;
   at(reverses ? s.seg_end(site) : s.seg_start(site), p);
   at(reverses ? s.seg_start(site) : s.seg_end(site), q);
-  const std::int64_t dx = q[0] - p[0], dy = q[1] - p[1], g = gcds[s.seg_start(site)];
-  o.a = {dx / g, dy / g};
+  const std::array<std::int64_t, 2>& d = dirs[s.seg_start(site)];
+  std::int64_t m[2];
+  apply(a, d[0], d[1], m);
+  o.a = reverses ? std::array<std::int64_t, 2>{-m[0], -m[1]} : std::array<std::int64_t, 2>{m[0], m[1]};
   o.k = static_cast<__int128>(o.a[0]) * p[1] - static_cast<__int128>(o.a[1]) * p[0];
   o.px = p[0], o.py = p[1], o.qx = q[0], o.qy = q[1];
   return o;
@@ -98,11 +104,11 @@ Obj transform_site(const PolygonSites& s, const std::vector<std::int64_t>& gcds,
 // When at most one circle satisfies c's conditions (voronoi_circle.h), the root is no
 // part of its value (the two roots coincide), so it is dropped and the symmetric roles
 // are sorted.
-Image transform_circle(const PolygonSites& s, const std::vector<std::int64_t>& gcds, const VoronoiCircle& c,
+Image transform_circle(const PolygonSites& s, const Directions& dirs, const VoronoiCircle& c,
                        const int* a, bool unique) {
   Image im;
   im.count = c.kind == CircleKind::Apex ? 1 : 3;
-  for (int i = 0; i < im.count; ++i) im.obj[i] = transform_site(s, gcds, c.sites[i], a);
+  for (int i = 0; i < im.count; ++i) im.obj[i] = transform_site(s, dirs, c.sites[i], a);
   if (a[0] * a[3] - a[1] * a[2] < 0) reflect_roles(c.kind, im.obj);
   const int root = canonical_roles(c.kind, c.root, im.obj, unique);
   im.code = static_cast<std::int64_t>(c.kind) * 4 + root + 1;
@@ -283,7 +289,7 @@ void unite_congruent_atoms(const PolygonSites& s, const std::vector<AxisNodeData
                            const std::vector<AxisEdgeData>& edges, const std::vector<JoinedEdges>& joined,
                            UnionFind& node_uf, UnionFind& edge_uf) {
   if (!is_integer_frame(s)) return;
-  const std::vector<std::int64_t> gcds = direction_gcds(s);
+  const Directions dirs = primitive_directions(s);
   const auto n = static_cast<std::uint32_t>(nodes.size());
   const auto m = static_cast<std::uint32_t>(edges.size());
   // Every apex has R = 0.
@@ -315,7 +321,7 @@ void unite_congruent_atoms(const PolygonSites& s, const std::vector<AxisNodeData
     for (const auto& a : kLinear) {
       std::size_t j = 0;
       for_each_circle(nodes[i], [&](const VoronoiCircle& c) {
-        out.push_back(transform_circle(s, gcds, c, a, j < unique.size() && unique[j]));
+        out.push_back(transform_circle(s, dirs, c, a, j < unique.size() && unique[j]));
         ++j;
       });
     }
@@ -366,8 +372,8 @@ void unite_congruent_atoms(const PolygonSites& s, const std::vector<AxisNodeData
     for (int a = 0; a < 8; ++a) {
       Obj focus, line;
       if (d.parabolic) {
-        focus = transform_site(s, gcds, s.is_point(d.site_a) ? d.site_a : d.site_b, kLinear[a]);
-        line = transform_site(s, gcds, s.is_point(d.site_a) ? d.site_b : d.site_a, kLinear[a]);
+        focus = transform_site(s, dirs, s.is_point(d.site_a) ? d.site_a : d.site_b, kLinear[a]);
+        line = transform_site(s, dirs, s.is_point(d.site_a) ? d.site_b : d.site_a, kLinear[a]);
       }
       for (int order = 0; order < 2; ++order)
         for (std::size_t x = 0; x < cu; ++x)
