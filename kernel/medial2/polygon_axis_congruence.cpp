@@ -327,21 +327,7 @@ void unite_congruent_atoms(const PolygonSites& s, const std::vector<AxisNodeData
     }
     return out;
   };
-  std::unordered_map<KeyBuilder::Key, std::uint32_t, KeyHash> seen;
   const std::vector<bool> node_candidates = candidates(n, [&](std::uint32_t i) -> const Interval& { return nodes[i].radius; }, node_uf);
-  for (std::uint32_t i = 0; i < n; ++i) {
-    if (!node_candidates[i] || nodes[i].circle.kind == CircleKind::Apex) continue;
-    LeastKey best;
-    for (const Image& im : images_of(i)) {
-      KeyBuilder k;
-      k.add(im);
-      k.build(best.next());
-      best.offer();
-    }
-    const auto [it, fresh] = seen.emplace(best.best(), i);
-    if (!fresh) node_uf.unite(i, it->second);
-  }
-  seen.clear();
   // Edges, then the joined pairs as edges from the first's far end to the second's.
   const auto total = static_cast<std::uint32_t>(m + joined.size());
   std::vector<AxisEdgeData> items(edges);
@@ -354,9 +340,30 @@ void unite_congruent_atoms(const PolygonSites& s, const std::vector<AxisNodeData
   }
   const std::vector<bool> edge_candidates =
       candidates(total, [&](std::uint32_t e) -> const Interval& { return items[e].length; }, edge_uf);
+  // Nodes in increasing order, interleaved with the edges: before an edge, every node up to
+  // its larger end, so that both ends' images are still cached for the edge (the node and
+  // the edge passes, each in its own order, unite exactly as one after the other would).
+  std::unordered_map<KeyBuilder::Key, std::uint32_t, KeyHash> seen, seen_edges;
+  std::uint32_t next_node = 0;
+  auto nodes_until = [&](std::uint32_t end) {
+    for (; next_node < end; ++next_node) {
+      const std::uint32_t i = next_node;
+      if (!node_candidates[i] || nodes[i].circle.kind == CircleKind::Apex) continue;
+      LeastKey best;
+      for (const Image& im : images_of(i)) {
+        KeyBuilder k;
+        k.add(im);
+        k.build(best.next());
+        best.offer();
+      }
+      const auto [it, fresh] = seen.emplace(best.best(), i);
+      if (!fresh) node_uf.unite(i, it->second);
+    }
+  };
   for (std::uint32_t e = 0; e < total; ++e) {
     if (!edge_candidates[e]) continue;
     const AxisEdgeData& d = items[e];
+    nodes_until(std::max(d.u, d.v) + 1);
     LeastKey best;
     // images_of(i) holds, for each of the eight maps in turn, one image per circle; u's
     // are copied when v's would evict them from the shared slot.
@@ -390,9 +397,10 @@ void unite_congruent_atoms(const PolygonSites& s, const std::vector<AxisNodeData
             best.offer();
           }
     }
-    const auto [it, fresh] = seen.emplace(best.best(), e);
+    const auto [it, fresh] = seen_edges.emplace(best.best(), e);
     if (!fresh) edge_uf.unite(e, it->second);
   }
+  nodes_until(n);
 }
 
 }  // namespace grassfire
