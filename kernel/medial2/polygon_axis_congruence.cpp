@@ -137,42 +137,49 @@ struct KeyBuilder {
       return size == o.size && std::equal(v.begin(), v.begin() + size, o.v.begin());
     }
   };
-  // Translated so that the least point site is the origin (the least segment end when
-  // there is no point site).
-  void build(Key& k) const {
-    std::int64_t mx = 0, my = 0;
+  // The origin of the key: the least point site (the least segment end when there is no
+  // point site) of the objects.
+  static void origin(const Obj* const* objs, int count, std::int64_t& mx, std::int64_t& my) {
+    mx = 0, my = 0;
     bool found = false;
     auto consider = [&](std::int64_t x, std::int64_t y) {
       if (!found || x < mx || (x == mx && y < my)) mx = x, my = y;
       found = true;
     };
     bool has_point = false;
-    for (int i = 0; i < objects; ++i) has_point = has_point || obj[i]->kind == 0;
-    for (int i = 0; i < objects; ++i) {
-      if (obj[i]->kind == 0) {
-        consider(obj[i]->px, obj[i]->py);
+    for (int i = 0; i < count; ++i) has_point = has_point || objs[i]->kind == 0;
+    for (int i = 0; i < count; ++i) {
+      if (objs[i]->kind == 0) {
+        consider(objs[i]->px, objs[i]->py);
       } else if (!has_point) {
-        consider(obj[i]->px, obj[i]->py);
-        consider(obj[i]->qx, obj[i]->qy);
+        consider(objs[i]->px, objs[i]->py);
+        consider(objs[i]->qx, objs[i]->qy);
       }
     }
+  }
+  // One object's kind and coordinates about the origin m; returns the values written.
+  static int encode(const Obj& o, std::int64_t mx, std::int64_t my, std::int64_t* out) {
+    out[0] = o.kind;
+    if (o.kind == 0) {
+      out[1] = o.a[0] - mx;
+      out[2] = o.a[1] - my;
+      return 3;
+    }
+    // cross(d, p - m) = k - cross(d, m)
+    const __int128 c = o.k - (static_cast<__int128>(o.a[0]) * my - static_cast<__int128>(o.a[1]) * mx);
+    out[1] = o.a[0];
+    out[2] = o.a[1];
+    out[3] = static_cast<std::int64_t>(c >> 64);
+    out[4] = static_cast<std::int64_t>(static_cast<std::uint64_t>(c));
+    return 5;
+  }
+  // Translated so that origin() is the origin.
+  void build(Key& k) const {
+    std::int64_t mx = 0, my = 0;
+    origin(obj.data(), objects, mx, my);
     k.size = 0;
     for (int i = 0; i < ncodes; ++i) k.v[k.size++] = codes[i];
-    for (int i = 0; i < objects; ++i) {
-      const Obj& o = *obj[i];
-      k.v[k.size++] = o.kind;
-      if (o.kind == 0) {
-        k.v[k.size++] = o.a[0] - mx;
-        k.v[k.size++] = o.a[1] - my;
-      } else {
-        // cross(d, p - m) = k - cross(d, m)
-        const __int128 c = o.k - (static_cast<__int128>(o.a[0]) * my - static_cast<__int128>(o.a[1]) * mx);
-        k.v[k.size++] = o.a[0];
-        k.v[k.size++] = o.a[1];
-        k.v[k.size++] = static_cast<std::int64_t>(c >> 64);
-        k.v[k.size++] = static_cast<std::int64_t>(static_cast<std::uint64_t>(c));
-      }
-    }
+    for (int i = 0; i < objects; ++i) k.size += encode(*obj[i], mx, my, &k.v[k.size]);
   }
 };
 
@@ -381,6 +388,47 @@ void unite_congruent_atoms(const PolygonSites& s, const std::vector<AxisNodeData
       if (d.parabolic) {
         focus = transform_site(s, dirs, s.is_point(d.site_a) ? d.site_a : d.site_b, kLinear[a]);
         line = transform_site(s, dirs, s.is_point(d.site_a) ? d.site_b : d.site_a, kLinear[a]);
+      }
+      if (cu == 1 && cv == 1) {
+        // One circle at each end: both orders have the same objects, so one origin and one
+        // encoding of each object serve the two keys (the values build() would write).
+        const Image &A = iu[a], &B = iv[a];
+        std::array<const Obj*, 8> all;
+        int count = 0;
+        for (int i = 0; i < A.count; ++i) all[count++] = &A.obj[i];
+        for (int i = 0; i < B.count; ++i) all[count++] = &B.obj[i];
+        if (d.parabolic) {
+          all[count++] = &focus;
+          all[count++] = &line;
+        }
+        std::int64_t mx = 0, my = 0;
+        KeyBuilder::origin(all.data(), count, mx, my);
+        std::array<std::int64_t, 40> ea, eb, ef;
+        int la = 0, lb = 0, lf = 0;
+        for (int i = 0; i < A.count; ++i) la += KeyBuilder::encode(A.obj[i], mx, my, &ea[la]);
+        for (int i = 0; i < B.count; ++i) lb += KeyBuilder::encode(B.obj[i], mx, my, &eb[lb]);
+        if (d.parabolic) {
+          lf += KeyBuilder::encode(focus, mx, my, &ef[lf]);
+          lf += KeyBuilder::encode(line, mx, my, &ef[lf]);
+        }
+        const std::int64_t ca = A.code * 4 + A.count, cb = B.code * 4 + B.count;
+        for (int order = 0; order < 2; ++order) {
+          KeyBuilder::Key& key = best.next();
+          std::int64_t* v = key.v.data();
+          int n = 0;
+          v[n++] = d.parabolic;
+          v[n++] = order ? cb : ca;
+          v[n++] = order ? ca : cb;
+          const std::int64_t* first = order ? eb.data() : ea.data();
+          const std::int64_t* second = order ? ea.data() : eb.data();
+          const int lfirst = order ? lb : la, lsecond = order ? la : lb;
+          for (int i = 0; i < lfirst; ++i) v[n++] = first[i];
+          for (int i = 0; i < lsecond; ++i) v[n++] = second[i];
+          for (int i = 0; i < lf; ++i) v[n++] = ef[i];
+          key.size = n;
+          best.offer();
+        }
+        continue;
       }
       for (int order = 0; order < 2; ++order)
         for (std::size_t x = 0; x < cu; ++x)
