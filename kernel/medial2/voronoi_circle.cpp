@@ -20,6 +20,13 @@ bool surely_nonzero(const Interval& a) { return a.lo > 0 || a.hi < 0; }
 bool surely_nonzero(const Ball& a) { return a.sign() == 1 || a.sign() == -1; }
 bool surely_nonzero(const Exact& a) { return exact_sign(a.v) != 0; }
 bool surely_nonzero(const DDBall& a) { return a.sign() == 1 || a.sign() == -1; }
+// m > 0 certainly, in the enclosure types (never for the exact forms, which keep their
+// formulas): where sqrt(N1 N2) - m cancels (nearly parallel lines), the enclosures use
+// sqrt(N1 N2) - m = det^2 / (sqrt(N1 N2) + m) (Lagrange: N1 N2 - m^2 = det^2).
+bool surely_positive(const Interval& a) { return a.lo > 0; }
+bool surely_positive(const Ball& a) { return a.sign() == 1; }
+bool surely_positive(const DDBall& a) { return a.sign() == 1; }
+bool surely_positive(const Exact&) { return false; }
 DDBall combine(const DDBall& a, const DDBall& b) { return intersect(a, b); }
 Interval combine(const Interval& a, const Interval& b) { return intersect(a, b); }
 Ball combine(const Ball& a, const Ball& b) { return intersect(a, b); }
@@ -93,7 +100,18 @@ CircleValue<T> solve_ppp(const Pt<T>& p1, const Pt<T>& p2, const Pt<T>& p3) {
 // Circle through P and Q tangent to L: centre M + t d on the bisector of P and Q, with
 // a t^2 + 2 g0 g1 t + (g0^2 - N h0) = 0 (see voronoi_circle.h).
 template <class T>
-CircleValue<T> solve_pps(const Pt<T>& p, const Pt<T>& q, const Line<T>& l, bool linear, int root, bool tangent) {
+CircleValue<T> solve_pps(const Pt<T>& p, const Pt<T>& q, const Line<T>& l, bool linear, int root, int tangent) {
+  if (tangent && !std::is_same_v<T, Exact>) {
+    // A (P when tangent = 1, else Q) on L's line: the circle touches L at A, its centre is
+    // A + R n / sqrt(N), and |X - B| = R gives R = -|A - B|^2 sqrt(N) / (2 n.(A - B))
+    // (n.(A - B) != 0: not the linear case). The same circle as the quadratic's double
+    // root below, without its cancellations.
+    const Pt<T>& a = tangent == 1 ? p : q;
+    const Pt<T>& b = tangent == 1 ? q : p;
+    const T dx = a.x - b.x, dy = a.y - b.y;
+    const T f = (dx * dx + dy * dy) / (T(2.0) * (l.nx * dx + l.ny * dy));
+    return {a.x - f * l.nx, a.y - f * l.ny, -(f * sqrt(l.N))};
+  }
   const T mx = T(0.5) * (p.x + q.x), my = T(0.5) * (p.y + q.y);
   const T dx = p.y - q.y, dy = q.x - p.x;
   const T g0 = l.nx * mx + l.ny * my + l.c, g1 = l.nx * dx + l.ny * dy;
@@ -104,11 +122,7 @@ CircleValue<T> solve_pps(const Pt<T>& p, const Pt<T>& q, const Line<T>& l, bool 
     t = -c0 / (T(2.0) * g0 * g1);
   } else {
     const T a = g1 * g1 - l.N * h2;
-    // tangent: P or Q on L's line, delta = 0 exactly (pps_root), so beta = 0: an exact zero
-    // keeps the enclosures tight where sqrt of an enclosure of 0 would lose half the bits
-    // (the exact forms keep computing it: the same sums as before).
-    const bool zero = tangent && !std::is_same_v<T, Exact>;
-    const T beta = zero ? T(0.0) : sqrt(l.N * (g0 * g0 * h2 + a * h0));
+    const T beta = sqrt(l.N * (g0 * g0 * h2 + a * h0));
     const T sb = root > 0 ? beta : -beta;
     t = two_forms(sb - g0 * g1, a, c0, -(g0 * g1) - sb);
   }
@@ -129,7 +143,7 @@ PssQuadratic<T> pss_quadratic(const Pt<T>& p, const Line<T>& l1, const Line<T>& 
   const T x0 = (l2.c * l1.ny - l1.c * l2.ny) / det, y0 = (l1.c * l2.nx - l2.c * l1.nx) / det;
   const T wx = (s1 * l2.ny - s2 * l1.ny) / det, wy = (l1.nx * s2 - l2.nx * s1) / det;
   const T ex = x0 - p.x, ey = y0 - p.y;
-  const T k = (sm - m) / det;
+  const T k = surely_positive(m) ? det / (sm + m) : (sm - m) / det;
   return {x0, y0, wx, wy, k * k, ex * wx + ey * wy, ex * ex + ey * ey};
 }
 
@@ -150,7 +164,13 @@ CircleValue<T> solve_pss_tangent(const Pt<T>& p, const Line<T>& li, const Line<T
   const T si = sqrt(li.N), sij = sqrt(li.N * lj.N);
   const T m = li.nx * lj.nx + li.ny * lj.ny;
   const T g = lj.nx * p.x + lj.ny * p.y + lj.c;
-  const T r = g * si / (sij - m);
+  T r;
+  if (surely_positive(m)) {
+    const T det = li.nx * lj.ny - li.ny * lj.nx;
+    r = g * si * (sij + m) / (det * det);
+  } else {
+    r = g * si / (sij - m);
+  }
   const T k = r / si;
   return {p.x + k * li.nx, p.y + k * li.ny, r};
 }
@@ -196,7 +216,7 @@ CircleValue<T> solve(const PolygonSites& s, const VoronoiCircle& c) {
     case CircleKind::PPS:
     case CircleKind::PPSLinear:
       return solve_pps(point_of<T>(s, id[0]), point_of<T>(s, id[1]), line_of<T>(s, id[2]),
-                       c.kind == CircleKind::PPSLinear, c.root, c.tangent != 0);
+                       c.kind == CircleKind::PPSLinear, c.root, c.tangent);
     case CircleKind::PSS:
       if (c.tangent)
         return solve_pss_tangent(point_of<T>(s, id[0]), line_of<T>(s, id[c.tangent]), line_of<T>(s, id[3 - c.tangent]));
