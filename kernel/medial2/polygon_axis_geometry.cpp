@@ -222,7 +222,8 @@ void PolygonAxisGeometry::enclose_length(std::uint32_t edge, mpfr_ptr lo, mpfr_p
 }
 
 const CircleValue<DDBall>& PolygonAxisGeometry::dd_circle(std::uint32_t i) const {
-  if (!dd_circles_[i]) dd_circles_[i] = std::make_unique<const CircleValue<DDBall>>(solve_dd(*sites_, nodes_[i].circle));
+  if (!dd_circles_[i])
+    dd_circles_[i] = std::make_unique<const CircleValue<DDBall>>(solve_dd(*sites_, nodes_[i].circle));
   return *dd_circles_[i];
 }
 
