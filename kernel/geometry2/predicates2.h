@@ -30,7 +30,7 @@ namespace grassfire {
 // How often each stage of the orientation predicate decided.
 struct OrientationStats {
   std::uint64_t filtered = 0;  // decided by the double filter (or the exact-zero shortcut)
-  std::uint64_t exact = 0;     // decided by the GMP fallback
+  std::uint64_t exact = 0;     // decided exactly (GMP, or doubles on small integers)
   void merge(const OrientationStats& o) {
     filtered += o.filtered;
     exact += o.exact;

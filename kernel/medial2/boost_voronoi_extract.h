@@ -54,6 +54,8 @@ class BoostExtractor {
 
   VoronoiTopology run() {
     id_.assign(vd_.num_vertices(), kNone);
+    out_.vertices.reserve(vd_.num_vertices());
+    out_.edges.reserve(vd_.num_edges() / 2);
     std::vector<const BoostEdge*> stack;
     for (const BoostCell& cell : vd_.cells()) {
       const std::uint32_t p = site_of(cell, sites_);
@@ -127,17 +129,20 @@ class BoostExtractor {
 
   // Sites around v in counter-clockwise order (rot_next turns counter-clockwise and the
   // cell of an outgoing edge lies on its left).
+  // Only the first three distinct sites are kept (no allocation: this runs once per vertex).
   std::array<std::uint32_t, 3> ccw_sites(const BoostVertex* v) const {
-    std::vector<std::uint32_t> around;
+    std::array<std::uint32_t, 3> around{};
+    std::size_t count = 0;
     for_each_out_edge(v, [&](const BoostEdge* e) {
+      if (count == 3) return;
       const std::uint32_t s = site_of(*e->cell(), sites_);
       bool seen = false;
-      for (std::uint32_t t : around) seen = seen || t == s;
-      if (!seen) around.push_back(s);
+      for (std::size_t i = 0; i < count; ++i) seen = seen || around[i] == s;
+      if (!seen) around[count++] = s;
     });
-    if (around.size() < 3)
+    if (count < 3)
       throw std::logic_error("boost_segment_voronoi: a Voronoi vertex with fewer than three sites");
-    return {around[0], around[1], around[2]};
+    return around;
   }
 
   const Diagram& vd_;

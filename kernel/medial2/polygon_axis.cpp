@@ -172,7 +172,16 @@ class Builder {
     }
   }
 
-  static bool tight(const CircleValue<Interval>& v) { return is_tight(v.x) && is_tight(v.y) && is_tight(v.r); }
+  // R to kTightBits relative bits; the centre's coordinates to kTightBits bits of the
+  // circle's scale (the largest of |x|, |y| and R): a coordinate that is 0 (a centre on a
+  // symmetry axis through the origin) is never relatively tight, and refining it in
+  // double-double and Arb only narrowed an enclosure of 0.
+  static bool tight(const CircleValue<Interval>& v) {
+    const double scale = std::fmax(magnitude(v.r), std::fmax(magnitude(v.x), magnitude(v.y)));
+    return is_tight(v.r) && within(v.x, scale) && within(v.y, scale);
+  }
+  static double magnitude(const Interval& a) { return std::fmax(std::fabs(a.lo), std::fabs(a.hi)); }
+  static bool within(const Interval& a, double scale) { return a.hi - a.lo <= std::ldexp(scale, -kTightBits); }
 
   // The circle of vertex i in double-double, computed once.
   const CircleValue<DDBall>& dd(std::uint32_t i) {

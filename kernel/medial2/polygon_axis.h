@@ -22,7 +22,9 @@
 // parameters and abscissas (polygon_axis_geometry.h). The graph's double enclosures
 // of R and lengths are rigorous and tight: double interval formulas, re-evaluated in
 // double-double (number/dd_ball.h) and then in Arb when wider than kTightBits relative
-// bits; exact values are built lazily,
+// bits (a node's centre coordinates: kTightBits bits of its circle's scale, the largest of
+// |x|, |y| and R, since a coordinate that is 0 has no relative accuracy); exact values are
+// built lazily,
 // only when the burning engine's filter cannot decide.
 // Input policy (which construction runs): a coordinate that is the double nearest to a
 // decimal with at most 9 fractional digits is taken as that decimal (the smallest such

@@ -56,19 +56,23 @@ std::int64_t gcd64(std::int64_t a, std::int64_t b) {
   return a;
 }
 
-// The gcd of every segment site's direction (invariant under the signed permutations),
-// computed once: transform_site runs 8 times per site and circle.
-std::vector<std::int64_t> direction_gcds(const PolygonSites& s) {
-  std::vector<std::int64_t> g(s.vertex_count());
+// Every segment's primitive direction (its direction divided by the gcd of its
+// components), computed once: transform_site runs 8 times per site and circle, and a
+// signed permutation A maps the primitive direction of d to that of A d (no divisions).
+using Directions = std::vector<std::array<std::int64_t, 2>>;
+Directions primitive_directions(const PolygonSites& s) {
+  Directions out(s.vertex_count());
   for (std::uint32_t i = 0; i < s.vertex_count(); ++i) {
     const Point2 p = s.vertex[i], q = s.vertex[s.next[i]];
-    g[i] = gcd64(static_cast<std::int64_t>(q.x) - static_cast<std::int64_t>(p.x),
-                 static_cast<std::int64_t>(q.y) - static_cast<std::int64_t>(p.y));
+    const std::int64_t dx = static_cast<std::int64_t>(q.x) - static_cast<std::int64_t>(p.x);
+    const std::int64_t dy = static_cast<std::int64_t>(q.y) - static_cast<std::int64_t>(p.y);
+    const std::int64_t g = gcd64(dx, dy);
+    out[i] = {dx / g, dy / g};
   }
-  return g;
+  return out;
 }
 
-Obj transform_site(const PolygonSites& s, const std::vector<std::int64_t>& gcds, std::uint32_t site, const int* a) {
+Obj transform_site(const PolygonSites& s, const Directions& dirs, std::uint32_t site, const int* a) {
   Obj o;
   auto at = [&](std::uint32_t v, std::int64_t* out) {
     apply(a, static_cast<std::int64_t>(s.vertex[v].x), static_cast<std::int64_t>(s.vertex[v].y), out);
@@ -82,12 +86,14 @@ Obj transform_site(const PolygonSites& s, const std::vector<std::int64_t>& gcds,
   }
   o.kind = 1;
   // A reflection maps the segment start -> end to one with the interior on its right:
-  // the mapped polygon edge runs end -> start.
+  // the mapped polygon edge runs end -> start (direction -A d).
   const bool reverses = a[0] * a[3] - a[1] * a[2] < 0;
   at(reverses ? s.seg_end(site) : s.seg_start(site), p);
   at(reverses ? s.seg_start(site) : s.seg_end(site), q);
-  const std::int64_t dx = q[0] - p[0], dy = q[1] - p[1], g = gcds[s.seg_start(site)];
-  o.a = {dx / g, dy / g};
+  const std::array<std::int64_t, 2>& d = dirs[s.seg_start(site)];
+  std::int64_t m[2];
+  apply(a, d[0], d[1], m);
+  o.a = reverses ? std::array<std::int64_t, 2>{-m[0], -m[1]} : std::array<std::int64_t, 2>{m[0], m[1]};
   o.k = static_cast<__int128>(o.a[0]) * p[1] - static_cast<__int128>(o.a[1]) * p[0];
   o.px = p[0], o.py = p[1], o.qx = q[0], o.qy = q[1];
   return o;
@@ -98,29 +104,31 @@ Obj transform_site(const PolygonSites& s, const std::vector<std::int64_t>& gcds,
 // When at most one circle satisfies c's conditions (voronoi_circle.h), the root is no
 // part of its value (the two roots coincide), so it is dropped and the symmetric roles
 // are sorted.
-Image transform_circle(const PolygonSites& s, const std::vector<std::int64_t>& gcds, const VoronoiCircle& c,
+Image transform_circle(const PolygonSites& s, const Directions& dirs, const VoronoiCircle& c,
                        const int* a, bool unique) {
   Image im;
   im.count = c.kind == CircleKind::Apex ? 1 : 3;
-  for (int i = 0; i < im.count; ++i) im.obj[i] = transform_site(s, gcds, c.sites[i], a);
+  for (int i = 0; i < im.count; ++i) im.obj[i] = transform_site(s, dirs, c.sites[i], a);
   if (a[0] * a[3] - a[1] * a[2] < 0) reflect_roles(c.kind, im.obj);
   const int root = canonical_roles(c.kind, c.root, im.obj, unique);
   im.code = static_cast<std::int64_t>(c.kind) * 4 + root + 1;
   return im;
 }
 
-// A flat key: objects translated so that the lexicographically smallest point is 0.
+// A flat key: objects translated so that the lexicographically smallest point is 0. The
+// builder points at the images' objects (no copies: it runs 16 times per edge).
 struct KeyBuilder {
-  std::array<Obj, 8> obj;
-  std::array<std::int64_t, 4> codes{};
+  std::array<const Obj*, 8> obj;
+  std::array<std::int64_t, 4> codes;
   int objects = 0, ncodes = 0;
   void add(const Image& im) {
     codes[ncodes++] = im.code * 4 + im.count;
-    for (int i = 0; i < im.count; ++i) obj[objects++] = im.obj[i];
+    for (int i = 0; i < im.count; ++i) obj[objects++] = &im.obj[i];
   }
-  // The key: codes, then every object's kind and coordinates (at most 4 + 8 * 5 values).
+  // The key: codes, then every object's kind and coordinates (at most 4 + 8 * 5 values;
+  // the entries past `size` are never read, so they are left uninitialised).
   struct Key {
-    std::array<std::int64_t, 48> v{};
+    std::array<std::int64_t, 48> v;
     int size = 0;
     bool operator<(const Key& o) const {
       return std::lexicographical_compare(v.begin(), v.begin() + size, o.v.begin(), o.v.begin() + o.size);
@@ -129,44 +137,68 @@ struct KeyBuilder {
       return size == o.size && std::equal(v.begin(), v.begin() + size, o.v.begin());
     }
   };
-  // Translated so that the least point site is the origin (the least segment end when
-  // there is no point site).
-  Key build() const {
-    std::int64_t mx = 0, my = 0;
+  // The origin of the key: the least point site (the least segment end when there is no
+  // point site) of the objects.
+  static void origin(const Obj* const* objs, int count, std::int64_t& mx, std::int64_t& my) {
+    mx = 0, my = 0;
     bool found = false;
     auto consider = [&](std::int64_t x, std::int64_t y) {
       if (!found || x < mx || (x == mx && y < my)) mx = x, my = y;
       found = true;
     };
     bool has_point = false;
-    for (int i = 0; i < objects; ++i) has_point = has_point || obj[i].kind == 0;
-    for (int i = 0; i < objects; ++i) {
-      if (obj[i].kind == 0) {
-        consider(obj[i].px, obj[i].py);
+    for (int i = 0; i < count; ++i) has_point = has_point || objs[i]->kind == 0;
+    for (int i = 0; i < count; ++i) {
+      if (objs[i]->kind == 0) {
+        consider(objs[i]->px, objs[i]->py);
       } else if (!has_point) {
-        consider(obj[i].px, obj[i].py);
-        consider(obj[i].qx, obj[i].qy);
+        consider(objs[i]->px, objs[i]->py);
+        consider(objs[i]->qx, objs[i]->qy);
       }
     }
-    Key k;
-    for (int i = 0; i < ncodes; ++i) k.v[k.size++] = codes[i];
-    for (int i = 0; i < objects; ++i) {
-      const Obj& o = obj[i];
-      k.v[k.size++] = o.kind;
-      if (o.kind == 0) {
-        k.v[k.size++] = o.a[0] - mx;
-        k.v[k.size++] = o.a[1] - my;
-      } else {
-        // cross(d, p - m) = k - cross(d, m)
-        const __int128 c = o.k - (static_cast<__int128>(o.a[0]) * my - static_cast<__int128>(o.a[1]) * mx);
-        k.v[k.size++] = o.a[0];
-        k.v[k.size++] = o.a[1];
-        k.v[k.size++] = static_cast<std::int64_t>(c >> 64);
-        k.v[k.size++] = static_cast<std::int64_t>(static_cast<std::uint64_t>(c));
-      }
-    }
-    return k;
   }
+  // One object's kind and coordinates about the origin m; returns the values written.
+  static int encode(const Obj& o, std::int64_t mx, std::int64_t my, std::int64_t* out) {
+    out[0] = o.kind;
+    if (o.kind == 0) {
+      out[1] = o.a[0] - mx;
+      out[2] = o.a[1] - my;
+      return 3;
+    }
+    // cross(d, p - m) = k - cross(d, m)
+    const __int128 c = o.k - (static_cast<__int128>(o.a[0]) * my - static_cast<__int128>(o.a[1]) * mx);
+    out[1] = o.a[0];
+    out[2] = o.a[1];
+    out[3] = static_cast<std::int64_t>(c >> 64);
+    out[4] = static_cast<std::int64_t>(static_cast<std::uint64_t>(c));
+    return 5;
+  }
+  // Translated so that origin() is the origin.
+  void build(Key& k) const {
+    std::int64_t mx = 0, my = 0;
+    origin(obj.data(), objects, mx, my);
+    k.size = 0;
+    for (int i = 0; i < ncodes; ++i) k.v[k.size++] = codes[i];
+    for (int i = 0; i < objects; ++i) k.size += encode(*obj[i], mx, my, &k.v[k.size]);
+  }
+};
+
+// The least of several keys, each built in place into next() (no copies).
+class LeastKey {
+ public:
+  KeyBuilder::Key& next() { return keys_[spare_]; }
+  // Offers the key just built into next().
+  void offer() {
+    if (best_ < 0 || keys_[spare_] < keys_[best_]) {
+      best_ = spare_;
+      spare_ ^= 1;
+    }
+  }
+  const KeyBuilder::Key& best() const { return keys_[best_]; }
+
+ private:
+  KeyBuilder::Key keys_[2];
+  int best_ = -1, spare_ = 0;
 };
 
 struct KeyHash {
@@ -264,7 +296,7 @@ void unite_congruent_atoms(const PolygonSites& s, const std::vector<AxisNodeData
                            const std::vector<AxisEdgeData>& edges, const std::vector<JoinedEdges>& joined,
                            UnionFind& node_uf, UnionFind& edge_uf) {
   if (!is_integer_frame(s)) return;
-  const std::vector<std::int64_t> gcds = direction_gcds(s);
+  const Directions dirs = primitive_directions(s);
   const auto n = static_cast<std::uint32_t>(nodes.size());
   const auto m = static_cast<std::uint32_t>(edges.size());
   // Every apex has R = 0.
@@ -296,27 +328,13 @@ void unite_congruent_atoms(const PolygonSites& s, const std::vector<AxisNodeData
     for (const auto& a : kLinear) {
       std::size_t j = 0;
       for_each_circle(nodes[i], [&](const VoronoiCircle& c) {
-        out.push_back(transform_circle(s, gcds, c, a, j < unique.size() && unique[j]));
+        out.push_back(transform_circle(s, dirs, c, a, j < unique.size() && unique[j]));
         ++j;
       });
     }
     return out;
   };
-  std::unordered_map<KeyBuilder::Key, std::uint32_t, KeyHash> seen;
   const std::vector<bool> node_candidates = candidates(n, [&](std::uint32_t i) -> const Interval& { return nodes[i].radius; }, node_uf);
-  for (std::uint32_t i = 0; i < n; ++i) {
-    if (!node_candidates[i] || nodes[i].circle.kind == CircleKind::Apex) continue;
-    KeyBuilder::Key best;
-    for (const Image& im : images_of(i)) {
-      KeyBuilder k;
-      k.add(im);
-      const KeyBuilder::Key key = k.build();
-      if (best.size == 0 || key < best) best = key;
-    }
-    const auto [it, fresh] = seen.emplace(best, i);
-    if (!fresh) node_uf.unite(i, it->second);
-  }
-  seen.clear();
   // Edges, then the joined pairs as edges from the first's far end to the second's.
   const auto total = static_cast<std::uint32_t>(m + joined.size());
   std::vector<AxisEdgeData> items(edges);
@@ -329,10 +347,31 @@ void unite_congruent_atoms(const PolygonSites& s, const std::vector<AxisNodeData
   }
   const std::vector<bool> edge_candidates =
       candidates(total, [&](std::uint32_t e) -> const Interval& { return items[e].length; }, edge_uf);
+  // Nodes in increasing order, interleaved with the edges: before an edge, every node up to
+  // its larger end, so that both ends' images are still cached for the edge (the node and
+  // the edge passes, each in its own order, unite exactly as one after the other would).
+  std::unordered_map<KeyBuilder::Key, std::uint32_t, KeyHash> seen, seen_edges;
+  std::uint32_t next_node = 0;
+  auto nodes_until = [&](std::uint32_t end) {
+    for (; next_node < end; ++next_node) {
+      const std::uint32_t i = next_node;
+      if (!node_candidates[i] || nodes[i].circle.kind == CircleKind::Apex) continue;
+      LeastKey best;
+      for (const Image& im : images_of(i)) {
+        KeyBuilder k;
+        k.add(im);
+        k.build(best.next());
+        best.offer();
+      }
+      const auto [it, fresh] = seen.emplace(best.best(), i);
+      if (!fresh) node_uf.unite(i, it->second);
+    }
+  };
   for (std::uint32_t e = 0; e < total; ++e) {
     if (!edge_candidates[e]) continue;
     const AxisEdgeData& d = items[e];
-    KeyBuilder::Key best;
+    nodes_until(std::max(d.u, d.v) + 1);
+    LeastKey best;
     // images_of(i) holds, for each of the eight maps in turn, one image per circle; u's
     // are copied when v's would evict them from the shared slot.
     std::vector<Image> u_copy;
@@ -347,8 +386,49 @@ void unite_congruent_atoms(const PolygonSites& s, const std::vector<AxisNodeData
     for (int a = 0; a < 8; ++a) {
       Obj focus, line;
       if (d.parabolic) {
-        focus = transform_site(s, gcds, s.is_point(d.site_a) ? d.site_a : d.site_b, kLinear[a]);
-        line = transform_site(s, gcds, s.is_point(d.site_a) ? d.site_b : d.site_a, kLinear[a]);
+        focus = transform_site(s, dirs, s.is_point(d.site_a) ? d.site_a : d.site_b, kLinear[a]);
+        line = transform_site(s, dirs, s.is_point(d.site_a) ? d.site_b : d.site_a, kLinear[a]);
+      }
+      if (cu == 1 && cv == 1) {
+        // One circle at each end: both orders have the same objects, so one origin and one
+        // encoding of each object serve the two keys (the values build() would write).
+        const Image &A = iu[a], &B = iv[a];
+        std::array<const Obj*, 8> all;
+        int count = 0;
+        for (int i = 0; i < A.count; ++i) all[count++] = &A.obj[i];
+        for (int i = 0; i < B.count; ++i) all[count++] = &B.obj[i];
+        if (d.parabolic) {
+          all[count++] = &focus;
+          all[count++] = &line;
+        }
+        std::int64_t mx = 0, my = 0;
+        KeyBuilder::origin(all.data(), count, mx, my);
+        std::array<std::int64_t, 40> ea, eb, ef;
+        int la = 0, lb = 0, lf = 0;
+        for (int i = 0; i < A.count; ++i) la += KeyBuilder::encode(A.obj[i], mx, my, &ea[la]);
+        for (int i = 0; i < B.count; ++i) lb += KeyBuilder::encode(B.obj[i], mx, my, &eb[lb]);
+        if (d.parabolic) {
+          lf += KeyBuilder::encode(focus, mx, my, &ef[lf]);
+          lf += KeyBuilder::encode(line, mx, my, &ef[lf]);
+        }
+        const std::int64_t ca = A.code * 4 + A.count, cb = B.code * 4 + B.count;
+        for (int order = 0; order < 2; ++order) {
+          KeyBuilder::Key& key = best.next();
+          std::int64_t* v = key.v.data();
+          int n = 0;
+          v[n++] = d.parabolic;
+          v[n++] = order ? cb : ca;
+          v[n++] = order ? ca : cb;
+          const std::int64_t* first = order ? eb.data() : ea.data();
+          const std::int64_t* second = order ? ea.data() : eb.data();
+          const int lfirst = order ? lb : la, lsecond = order ? la : lb;
+          for (int i = 0; i < lfirst; ++i) v[n++] = first[i];
+          for (int i = 0; i < lsecond; ++i) v[n++] = second[i];
+          for (int i = 0; i < lf; ++i) v[n++] = ef[i];
+          key.size = n;
+          best.offer();
+        }
+        continue;
       }
       for (int order = 0; order < 2; ++order)
         for (std::size_t x = 0; x < cu; ++x)
@@ -358,16 +438,17 @@ void unite_congruent_atoms(const PolygonSites& s, const std::vector<AxisNodeData
             k.add(order ? iv[a * cv + y] : iu[a * cu + x]);
             k.add(order ? iu[a * cu + x] : iv[a * cv + y]);
             if (d.parabolic) {
-              k.obj[k.objects++] = focus;
-              k.obj[k.objects++] = line;
+              k.obj[k.objects++] = &focus;
+              k.obj[k.objects++] = &line;
             }
-            const KeyBuilder::Key key = k.build();
-            if (best.size == 0 || key < best) best = key;
+            k.build(best.next());
+            best.offer();
           }
     }
-    const auto [it, fresh] = seen.emplace(best, e);
+    const auto [it, fresh] = seen_edges.emplace(best.best(), e);
     if (!fresh) edge_uf.unite(e, it->second);
   }
+  nodes_until(n);
 }
 
 }  // namespace grassfire

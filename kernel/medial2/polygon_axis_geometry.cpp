@@ -172,9 +172,7 @@ PolygonAxisGeometry::PolygonAxisGeometry(std::shared_ptr<const PolygonSites> sit
       to_input_(std::move(to_input)),
       nodes_(std::move(nodes)),
       edges_(std::move(edges)),
-      circle_done_(nodes_.size(), 0),
       circles_(nodes_.size()),
-      radical_done_(nodes_.size(), 0),
       radicals_(nodes_.size()),
       lengths_(edges_.size()),
       ball_circles_(nodes_.size()),
@@ -196,7 +194,7 @@ std::uint32_t PolygonAxisGeometry::joined_length_class(std::uint32_t first, std:
 const CircleValue<Ball>& PolygonAxisGeometry::ball_circle(std::uint32_t i) const {
   if (!ball_circles_[i]) {
     BallPrecision guard(kBallBits);
-    ball_circles_[i] = solve_ball(*sites_, nodes_[i].circle);
+    ball_circles_[i] = std::make_unique<const CircleValue<Ball>>(solve_ball(*sites_, nodes_[i].circle));
   }
   return *ball_circles_[i];
 }
@@ -224,7 +222,8 @@ void PolygonAxisGeometry::enclose_length(std::uint32_t edge, mpfr_ptr lo, mpfr_p
 }
 
 const CircleValue<DDBall>& PolygonAxisGeometry::dd_circle(std::uint32_t i) const {
-  if (!dd_circles_[i]) dd_circles_[i] = solve_dd(*sites_, nodes_[i].circle);
+  if (!dd_circles_[i])
+    dd_circles_[i] = std::make_unique<const CircleValue<DDBall>>(solve_dd(*sites_, nodes_[i].circle));
   return *dd_circles_[i];
 }
 
@@ -263,19 +262,16 @@ std::string PolygonAxisGeometry::node_identity(std::uint32_t i) const {
 }
 
 const std::optional<CircleValue<ExactSum>>& PolygonAxisGeometry::exact_circle(std::uint32_t i) const {
-  if (!circle_done_[i]) {
-    circles_[i] = solve_exact(*sites_, nodes_[i].circle);
-    circle_done_[i] = 1;
-  }
-  return circles_[i];
+  if (!circles_[i])
+    circles_[i] = std::make_unique<const std::optional<CircleValue<ExactSum>>>(solve_exact(*sites_, nodes_[i].circle));
+  return *circles_[i];
 }
 
 const std::optional<CircleValue<ExactSum>>& PolygonAxisGeometry::radical_circle(std::uint32_t i) const {
-  if (!radical_done_[i]) {
-    radicals_[i] = exact_circle(i) ? exact_circle(i) : solve_radical(*sites_, nodes_[i].circle);
-    radical_done_[i] = 1;
-  }
-  return radicals_[i];
+  if (!radicals_[i])
+    radicals_[i] = std::make_unique<const std::optional<CircleValue<ExactSum>>>(
+        exact_circle(i) ? exact_circle(i) : solve_radical(*sites_, nodes_[i].circle));
+  return *radicals_[i];
 }
 
 ExactSum PolygonAxisGeometry::exact_radius(std::uint32_t node) const {
@@ -432,7 +428,7 @@ ExactSum PolygonAxisGeometry::exact_length(std::uint32_t edge) const {
   if (!lengths_[edge]) {
     ExactSum l = frame_length(edge);
     l.scale(to_input_);
-    lengths_[edge] = std::move(l);
+    lengths_[edge] = std::make_unique<const ExactSum>(std::move(l));
   }
   return *lengths_[edge];
 }

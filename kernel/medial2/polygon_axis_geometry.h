@@ -125,13 +125,14 @@ class PolygonAxisGeometry : public MedialGeometry {
   mpq_class to_input_;
   std::vector<AxisNodeData> nodes_;
   std::vector<AxisEdgeData> edges_;
-  mutable std::vector<std::uint8_t> circle_done_;
-  mutable std::vector<std::optional<CircleValue<ExactSum>>> circles_;
-  mutable std::vector<std::uint8_t> radical_done_;
-  mutable std::vector<std::optional<CircleValue<ExactSum>>> radicals_;
-  mutable std::vector<std::optional<ExactSum>> lengths_;
-  mutable std::vector<std::optional<CircleValue<Ball>>> ball_circles_;
-  mutable std::vector<std::optional<CircleValue<DDBall>>> dd_circles_;
+  // Memoised values, one pointer per node or edge (null: not computed yet), allocated when
+  // asked for: the few that are (the engine's filters decide most comparisons) cost no
+  // zeroed slot of their size for every node.
+  mutable std::vector<std::unique_ptr<const std::optional<CircleValue<ExactSum>>>> circles_;
+  mutable std::vector<std::unique_ptr<const std::optional<CircleValue<ExactSum>>>> radicals_;
+  mutable std::vector<std::unique_ptr<const ExactSum>> lengths_;
+  mutable std::vector<std::unique_ptr<const CircleValue<Ball>>> ball_circles_;
+  mutable std::vector<std::unique_ptr<const CircleValue<DDBall>>> dd_circles_;
   mutable std::shared_ptr<const AxisValueClasses> classes_;
 };
 

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <limits>
 #include <stdexcept>
+#include <type_traits>
 
 #include "geometry2/predicates2.h"
 #include "number/sqrt_field.h"
@@ -19,6 +20,13 @@ bool surely_nonzero(const Interval& a) { return a.lo > 0 || a.hi < 0; }
 bool surely_nonzero(const Ball& a) { return a.sign() == 1 || a.sign() == -1; }
 bool surely_nonzero(const Exact& a) { return exact_sign(a.v) != 0; }
 bool surely_nonzero(const DDBall& a) { return a.sign() == 1 || a.sign() == -1; }
+// m > 0 certainly, in the enclosure types (never for the exact forms, which keep their
+// formulas): where sqrt(N1 N2) - m cancels (nearly parallel lines), the enclosures use
+// sqrt(N1 N2) - m = det^2 / (sqrt(N1 N2) + m) (Lagrange: N1 N2 - m^2 = det^2).
+bool surely_positive(const Interval& a) { return a.lo > 0; }
+bool surely_positive(const Ball& a) { return a.sign() == 1; }
+bool surely_positive(const DDBall& a) { return a.sign() == 1; }
+bool surely_positive(const Exact&) { return false; }
 DDBall combine(const DDBall& a, const DDBall& b) { return intersect(a, b); }
 Interval combine(const Interval& a, const Interval& b) { return intersect(a, b); }
 Ball combine(const Ball& a, const Ball& b) { return intersect(a, b); }
@@ -65,17 +73,23 @@ struct Line {
   T nx, ny, c, N;
 };
 
+// Coordinates about an origin o (the enclosures: see solve), or as they are (o null: the
+// exact forms).
 template <class T>
-Pt<T> point_of(const PolygonSites& s, std::uint32_t site) {
-  return {T(s.vertex[site].x), T(s.vertex[site].y)};
+T about(double x, const double* o) {
+  return o ? T(x) - T(*o) : T(x);
 }
 template <class T>
-Line<T> line_of(const PolygonSites& s, std::uint32_t site) {
+Pt<T> point_of(const PolygonSites& s, std::uint32_t site, const Point2* o = nullptr) {
+  return {about<T>(s.vertex[site].x, o ? &o->x : nullptr), about<T>(s.vertex[site].y, o ? &o->y : nullptr)};
+}
+template <class T>
+Line<T> line_of(const PolygonSites& s, std::uint32_t site, const Point2* o = nullptr) {
   const Point2 a = s.vertex[s.seg_start(site)], b = s.vertex[s.seg_end(site)];
   Line<T> l;
   l.nx = T(a.y) - T(b.y);
   l.ny = T(b.x) - T(a.x);
-  l.c = -(l.nx * T(a.x) + l.ny * T(a.y));
+  l.c = -(l.nx * about<T>(a.x, o ? &o->x : nullptr) + l.ny * about<T>(a.y, o ? &o->y : nullptr));
   l.N = l.nx * l.nx + l.ny * l.ny;
   return l;
 }
@@ -92,7 +106,18 @@ CircleValue<T> solve_ppp(const Pt<T>& p1, const Pt<T>& p2, const Pt<T>& p3) {
 // Circle through P and Q tangent to L: centre M + t d on the bisector of P and Q, with
 // a t^2 + 2 g0 g1 t + (g0^2 - N h0) = 0 (see voronoi_circle.h).
 template <class T>
-CircleValue<T> solve_pps(const Pt<T>& p, const Pt<T>& q, const Line<T>& l, bool linear, int root) {
+CircleValue<T> solve_pps(const Pt<T>& p, const Pt<T>& q, const Line<T>& l, bool linear, int root, int tangent) {
+  if (tangent && !std::is_same_v<T, Exact>) {
+    // A (P when tangent = 1, else Q) on L's line: the circle touches L at A, its centre is
+    // A + R n / sqrt(N), and |X - B| = R gives R = -|A - B|^2 sqrt(N) / (2 n.(A - B))
+    // (n.(A - B) != 0: not the linear case). The same circle as the quadratic's double
+    // root below, without its cancellations.
+    const Pt<T>& a = tangent == 1 ? p : q;
+    const Pt<T>& b = tangent == 1 ? q : p;
+    const T dx = a.x - b.x, dy = a.y - b.y;
+    const T f = (dx * dx + dy * dy) / (T(2.0) * (l.nx * dx + l.ny * dy));
+    return {a.x - f * l.nx, a.y - f * l.ny, -(f * sqrt(l.N))};
+  }
   const T mx = T(0.5) * (p.x + q.x), my = T(0.5) * (p.y + q.y);
   const T dx = p.y - q.y, dy = q.x - p.x;
   const T g0 = l.nx * mx + l.ny * my + l.c, g1 = l.nx * dx + l.ny * dy;
@@ -124,7 +149,7 @@ PssQuadratic<T> pss_quadratic(const Pt<T>& p, const Line<T>& l1, const Line<T>& 
   const T x0 = (l2.c * l1.ny - l1.c * l2.ny) / det, y0 = (l1.c * l2.nx - l2.c * l1.nx) / det;
   const T wx = (s1 * l2.ny - s2 * l1.ny) / det, wy = (l1.nx * s2 - l2.nx * s1) / det;
   const T ex = x0 - p.x, ey = y0 - p.y;
-  const T k = (sm - m) / det;
+  const T k = surely_positive(m) ? det / (sm + m) : (sm - m) / det;
   return {x0, y0, wx, wy, k * k, ex * wx + ey * wy, ex * ex + ey * ey};
 }
 
@@ -145,7 +170,13 @@ CircleValue<T> solve_pss_tangent(const Pt<T>& p, const Line<T>& li, const Line<T
   const T si = sqrt(li.N), sij = sqrt(li.N * lj.N);
   const T m = li.nx * lj.nx + li.ny * lj.ny;
   const T g = lj.nx * p.x + lj.ny * p.y + lj.c;
-  const T r = g * si / (sij - m);
+  T r;
+  if (surely_positive(m)) {
+    const T det = li.nx * lj.ny - li.ny * lj.nx;
+    r = g * si * (sij + m) / (det * det);
+  } else {
+    r = g * si / (sij - m);
+  }
   const T k = r / si;
   return {p.x + k * li.nx, p.y + k * li.ny, r};
 }
@@ -179,28 +210,47 @@ CircleValue<T> solve_sss(const Line<T>& a, const Line<T>& b, const Line<T>& c) {
   return {dx / d, dy / d, dr / d};
 }
 
+// The circle with its sites' coordinates about o (null: as they are).
 template <class T>
-CircleValue<T> solve(const PolygonSites& s, const VoronoiCircle& c) {
+CircleValue<T> solve_about(const PolygonSites& s, const VoronoiCircle& c, const Point2* o) {
   const auto& id = c.sites;
+  auto point_of = [&](std::uint32_t site) { return grassfire::point_of<T>(s, site, o); };
+  auto line_of = [&](std::uint32_t site) { return grassfire::line_of<T>(s, site, o); };
   switch (c.kind) {
     case CircleKind::Apex: {
-      const Pt<T> p = point_of<T>(s, id[0]);
+      const Pt<T> p = point_of(id[0]);
       return {p.x, p.y, T(0.0)};
     }
-    case CircleKind::PPP: return solve_ppp(point_of<T>(s, id[0]), point_of<T>(s, id[1]), point_of<T>(s, id[2]));
+    case CircleKind::PPP: return solve_ppp(point_of(id[0]), point_of(id[1]), point_of(id[2]));
     case CircleKind::PPS:
     case CircleKind::PPSLinear:
-      return solve_pps(point_of<T>(s, id[0]), point_of<T>(s, id[1]), line_of<T>(s, id[2]),
-                       c.kind == CircleKind::PPSLinear, c.root);
+      return solve_pps(point_of(id[0]), point_of(id[1]), line_of(id[2]), c.kind == CircleKind::PPSLinear, c.root,
+                       c.tangent);
     case CircleKind::PSS:
-      if (c.tangent)
-        return solve_pss_tangent(point_of<T>(s, id[0]), line_of<T>(s, id[c.tangent]), line_of<T>(s, id[3 - c.tangent]));
-      return solve_pss(point_of<T>(s, id[0]), line_of<T>(s, id[1]), line_of<T>(s, id[2]), c.root);
-    case CircleKind::PSSParallel:
-      return solve_pss_parallel(point_of<T>(s, id[0]), line_of<T>(s, id[1]), line_of<T>(s, id[2]));
-    case CircleKind::SSS: return solve_sss(line_of<T>(s, id[0]), line_of<T>(s, id[1]), line_of<T>(s, id[2]));
+      if (c.tangent) return solve_pss_tangent(point_of(id[0]), line_of(id[c.tangent]), line_of(id[3 - c.tangent]));
+      return solve_pss(point_of(id[0]), line_of(id[1]), line_of(id[2]), c.root);
+    case CircleKind::PSSParallel: return solve_pss_parallel(point_of(id[0]), line_of(id[1]), line_of(id[2]));
+    case CircleKind::SSS: return solve_sss(line_of(id[0]), line_of(id[1]), line_of(id[2]));
   }
   throw std::logic_error("voronoi_circle: unknown kind");
+}
+
+// The enclosures are computed about a vertex of the circle's first site and translated
+// back: in the frame's coordinates a line's c = -n.A is large against n.X + c near the
+// circle (|A| ~ 10^6 against a local feature size ~ 10^2 on the benchmark's curves), and
+// each rounded operation on those magnitudes loses the bits of the cancellation. The
+// exact forms are computed in the frame's coordinates as they are.
+template <class T>
+CircleValue<T> solve(const PolygonSites& s, const VoronoiCircle& c) {
+  if constexpr (std::is_same_v<T, Exact>) {
+    return solve_about<T>(s, c, nullptr);
+  } else {
+    if (c.kind == CircleKind::Apex) return solve_about<T>(s, c, nullptr);
+    const std::uint32_t first = c.sites[0];
+    const Point2 o = s.vertex[s.is_point(first) ? first : s.seg_start(first)];
+    const CircleValue<T> local = solve_about<T>(s, c, &o);
+    return {local.x + T(o.x), local.y + T(o.y), local.r};
+  }
 }
 
 mpq_class q(double d) { return mpq_class(d); }
@@ -230,9 +280,23 @@ PpsTest<T> pps_test(const Point2& p, const Point2& qq, const Point2& a, const Po
   return {aa, delta, rhs - sqrt(N * delta) * w};
 }
 
-int pps_root(const PolygonSites& s, std::uint32_t ps, std::uint32_t qs, std::uint32_t ls, bool* linear) {
+// `on_line`: 1 when P lies on L's line, 2 when Q does (and P does not), else 0.
+int pps_root(const PolygonSites& s, std::uint32_t ps, std::uint32_t qs, std::uint32_t ls, bool* linear,
+             std::uint8_t* on_line) {
   const Point2 p = s.vertex[ps], qq = s.vertex[qs];
   const Point2 a = s.vertex[s.seg_start(ls)], b = s.vertex[s.seg_end(ls)];
+  // A point on L's line (typically a segment's own endpoint): with u = (P - Q) / 2,
+  // a = -4 (n.u)^2 and, when g(P) = 0 or g(Q) = 0, delta = 4 |u|^2 ((n.u)^2 + (n x u)^2 -
+  // N |u|^2) = 0 (Lagrange's identity): one circle, touching L at that point. a = 0 (the
+  // linear case) exactly when PQ is parallel to L, i.e. when both points lie on its line.
+  // These are the exact path's answers below (linear, else root 1 for delta = 0), from
+  // exact orientations instead of rationals.
+  const int op = orientation(a, b, p), oq = orientation(a, b, qq);
+  *on_line = op == 0 ? 1 : oq == 0 ? 2 : 0;
+  if (*on_line) {
+    *linear = op == 0 && oq == 0;
+    return 1;
+  }
   const PpsTest<DDBall> f = pps_test<DDBall>(p, qq, a, b);
   const int fa = f.aa.sign(), fd = f.delta.sign(), ft = f.test.sign();
   if ((fa == 1 || fa == -1) && fd == 1 && (ft == 1 || ft == -1)) {
@@ -308,8 +372,10 @@ VoronoiCircle classify_circle(const PolygonSites& s, const VoronoiTopology::Vert
     case 2: {
       rotate_until([&] { return !s.is_point(c.sites[2]); });
       bool linear = false;
-      c.root = static_cast<std::int8_t>(pps_root(s, c.sites[0], c.sites[1], c.sites[2], &linear));
+      std::uint8_t on_line = 0;
+      c.root = static_cast<std::int8_t>(pps_root(s, c.sites[0], c.sites[1], c.sites[2], &linear, &on_line));
       c.kind = linear ? CircleKind::PPSLinear : CircleKind::PPS;
+      if (c.kind == CircleKind::PPS) c.tangent = on_line;
       break;
     }
     case 1: {

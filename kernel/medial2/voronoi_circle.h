@@ -45,6 +45,9 @@ struct VoronoiCircle {
   // its own segments: the circle touches that line at P, so R is linear (solve_pss_tangent
   // in voronoi_circle.cpp) and the circle lies in Q(sqrt N1, sqrt N2), never nested.
   std::uint8_t tangent = 0;
+  // PPS (not linear) whose P (1) or Q (2) lies on L's line: the discriminant is exactly 0
+  // (one circle, touching L there), and the enclosures use the linear formula of that
+  // circle (solve_pps in voronoi_circle.cpp; the exact forms keep the general one).
 };
 
 VoronoiCircle classify_circle(const PolygonSites& sites, const VoronoiTopology::Vertex& vertex);

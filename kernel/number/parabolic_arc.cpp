@@ -21,7 +21,10 @@ Interval atanh_small(const Interval& t) {
   Interval sum = 0.0;
   Interval power = t;
   for (int j = 0; j < 14; ++j) {
-    sum += power / Interval(2.0 * j + 1.0);
+    // power / Interval(c) for the point c = 2j + 1 > 0, with two of its four quotients:
+    // correctly rounded division by c > 0 is monotone, so power.lo / c is the least.
+    const double c = 2.0 * j + 1.0;
+    sum += Interval{round_down(power.lo / c), round_up(power.hi / c)};
     power = power * t2;
   }
   const Interval remainder = power / (Interval(29.0) * (Interval(1.0) - t2));
