@@ -187,13 +187,17 @@ WindowBall Certifier::evaluate_chain(std::uint32_t w, bool with_offset, std::uin
   return b;
 }
 
-Ball Certifier::time_ball(std::uint32_t w, const Target& x) {
-  const WindowBall b = evaluate(w, true);
-  const std::uint32_t t = s_.windows[w].triangle;
-  const BallVec2 p = target_ball(t, x);
+namespace {
+// The time of an evaluated window (with its offset) at the point p of its frame.
+Ball time_at(const WindowBall& b, const BallVec2& p) {
   if (b.plane) return b.offset + b.source.x * p.x + b.source.y * p.y;
   const BallVec2 d = ball_sub(p, b.source);
   return b.offset + sqrt(d.x * d.x + d.y * d.y);
+}
+}  // namespace
+
+Ball Certifier::time_ball(std::uint32_t w, const Target& x) {
+  return time_at(evaluate(w, true), target_ball(s_.windows[w].triangle, x));
 }
 
 template <class F>
@@ -642,10 +646,7 @@ std::optional<Certifier::EdgeRoot> Certifier::crossing_root_on_edge(std::uint32_
   };
   const Along a = along(w1), b = along(w2);
   auto time = [](const Along& a, const Ball& l) {  // time_ball at the edge point l
-    const BallVec2 p{a.A.x + l * a.D.x, a.A.y + l * a.D.y};
-    if (a.b.plane) return a.b.offset + a.b.source.x * p.x + a.b.source.y * p.y;
-    const BallVec2 d = ball_sub(p, a.b.source);
-    return a.b.offset + sqrt(d.x * d.x + d.y * d.y);
+    return time_at(a.b, BallVec2{a.A.x + l * a.D.x, a.A.y + l * a.D.y});
   };
   auto rate = [](const Along& a, const Ball& l) {  // its derivative in l
     if (a.b.plane) return a.b.source.x * a.D.x + a.b.source.y * a.D.y;
