@@ -22,8 +22,8 @@
 #include <queue>
 #include <string>
 
-#include "burn3/discrete_burning.h"
-#include "burn3/steiner_graph.h"
+#include "burn3/discrete/discrete_burning.h"
+#include "burn3/discrete/steiner_graph.h"
 #include "complex3/synthetic_complexes.h"
 #include "cli.h"
 

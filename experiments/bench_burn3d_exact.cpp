@@ -3,7 +3,7 @@
 // three point sources (issue 8 item 7).
 //
 // Meshes: data/meshes cube.off, octahedron.off and tripod.off, smoothed twice and
-// Loop-refined by 3 to 7 levels (complex3/refined_mesh.h: no two neighbouring faces
+// Loop-refined by 3 to 7 levels (geometry3/refined_mesh.h: no two neighbouring faces
 // coplanar): 512 to 196,608 faces (the octahedron's 131,072 is the one nearest 10^5). Sources at t0 = 0, at the exact barycentric points (1/5, 3/10, 1/2) of
 // faces 0, F/3 and 2F/3 (CGAL gets the nearest doubles of these weights). Each method
 // runs in a forked child (its own peak memory); times are processor seconds of the child
@@ -27,7 +27,7 @@
 //
 // With --axes (issue 9 item 6): medial axes burned from their border by Definition 9 (the
 // junction rule on singular curves, the link rule at singular points), the exact engine
-// against the discrete baseline (burn3/discrete_burning.h) at the spacing whose maximum error
+// against the discrete baseline (burn3/discrete/discrete_burning.h) at the spacing whose maximum error
 // is 1% of the largest BT. Axes: the mesh axes of data/ma/real (made by the project's mesh
 // builder from CGAL's meshes; data/ma/real/README.md) and the union-of-balls axis of 24
 // random balls (union_alpha_complex.h random_ball_set(24, seed 2024); complex3/builders
@@ -50,18 +50,18 @@
 #include <ctime>
 #include <string>
 
-#include "burn3/discrete_burning.h"
+#include "burn3/discrete/discrete_burning.h"
 #include "burn3/exact/exact_burning.h"
 #include "burn3/exact/junction_points.h"
-#include "complex3/builders/union_alpha_complex.h"
-#include "complex3/builders/union_of_balls_axis.h"
-#include "complex3/builders/medial_axis_input.h"
+#include "medial3/balls/union_alpha_complex.h"
+#include "medial3/balls/union_of_balls_axis.h"
+#include "pipeline/medial_axis_input.h"
 #include "io/complex_ma.h"
 #include "pipeline/burn3d.h"
 #include "burn3/geodesic_smsp.h"
 #include "complex3/medial_complex.h"
 #include "complex3/point_location.h"
-#include "complex3/refined_mesh.h"
+#include "geometry3/refined_mesh.h"
 #include "io/mesh_io.h"
 #include "cli.h"
 #include "peak_memory.h"

@@ -2,7 +2,7 @@
 // closed meshes of 10^3 .. 2 10^5 faces.
 //
 // Meshes: data/meshes cube.off and tripod.off, smoothed and Loop-refined
-// (complex3/refined_mesh.h), taken as complexes themselves (mesh_as_complex: exact
+// (geometry3/refined_mesh.h), taken as complexes themselves (mesh_as_complex: exact
 // rationals, the doubles read). Each configuration runs in a forked child (its own peak
 // memory); times are processor seconds of the child (the machine is shared). Columns:
 //  - build_s: MedialComplex(raw) with its embedding check; validate_s: validate();
@@ -37,7 +37,7 @@
 #include "complex3/medial_complex.h"
 #include "complex3/medial_complex_reference.h"
 #include "complex3/point_location.h"
-#include "complex3/refined_mesh.h"
+#include "geometry3/refined_mesh.h"
 #include "io/mesh_io.h"
 #include "peak_memory.h"
 #include "cli.h"

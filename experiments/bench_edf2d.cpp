@@ -23,10 +23,10 @@
 
 #include "burn2/extended_grassfire.h"
 #include "burn2/measures.h"
-#include "io/cpu_clock.h"
-#include "medial2/sampled_axis.h"
+#include "support/cpu_clock.h"
+#include "medial2/sampled/sampled_axis.h"
 #include "peak_memory.h"
-#include "shapes/load_shape.h"
+#include "io/load_shape.h"
 #include "shapes/resample.h"
 #include "cli.h"
 

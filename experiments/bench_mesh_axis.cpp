@@ -23,10 +23,10 @@
 #include <string>
 #include <vector>
 
-#include "complex3/builders/inner_voronoi.h"
-#include "complex3/builders/mesh_axis.h"
+#include "medial3/mesh/inner_voronoi.h"
+#include "medial3/mesh/mesh_axis.h"
 #include "complex3/medial_complex.h"
-#include "io/cpu_clock.h"
+#include "support/cpu_clock.h"
 #include "io/mesh_io.h"
 #include "peak_memory.h"
 #include "cli.h"

@@ -52,10 +52,10 @@
 #include <vector>
 
 #include "burn2/extended_grassfire.h"
-#include "io/cpu_clock.h"
-#include "medial2/polygon_axis.h"
-#include "medial2/polygon_axis_geometry.h"
-#include "medial2/polygon_axis_symmetry.h"
+#include "support/cpu_clock.h"
+#include "medial2/polygon/polygon_axis.h"
+#include "medial2/polygon/polygon_axis_geometry.h"
+#include "medial2/polygon/polygon_axis_symmetry.h"
 #include "cli.h"
 
 using namespace grassfire;

@@ -1,7 +1,7 @@
 // bench_shapes_throughput -- the whole 2D pipeline over every shape of a folder: the exact
 // polygon axis with EDF, EMA and the measures, and the sampled pipeline at 2000 samples.
 //
-// For each *.json / *.wkt file (sorted by name): load and validate (shapes/load_shape.h);
+// For each *.json / *.wkt file (sorted by name): load and validate (io/load_shape.h);
 // (1) exact: pipeline/edf2d.h with AxisMethod::ExactPolygon (axis, burning, ET and ST),
 // then every measure of burn2/ on that axis: closest boundary points, potential residue
 // with its maximum, separation angle and feature size, E(x), rate pruning, topology-
@@ -43,9 +43,9 @@
 #include "burn2/feature_size.h"
 #include "burn2/potential_residue.h"
 #include "burn2/rate_pruning.h"
-#include "io/progress.h"
+#include "support/progress.h"
 #include "pipeline/edf2d.h"
-#include "shapes/load_shape.h"
+#include "io/load_shape.h"
 #include "shard.h"
 #include "cli.h"
 

@@ -1,9 +1,9 @@
 // bench_smsp_baseline -- the peers of the exact engine on closed meshes of 10^3 .. 10^5
 // faces: CGAL Surface_mesh_shortest_path (Epick, burn3/geodesic_smsp.h) and the discrete
-// baseline with point sources (burn3/discrete_burning.h), on the same meshes.
+// baseline with point sources (burn3/discrete/discrete_burning.h), on the same meshes.
 //
 // Meshes: data/meshes cube.off and tripod.off, smoothed and Loop-refined to about 10^3,
-// 10^4, 10^5 faces (complex3/refined_mesh.h). Three point sources, all at t0 = 0, at the
+// 10^4, 10^5 faces (geometry3/refined_mesh.h). Three point sources, all at t0 = 0, at the
 // points (0.2, 0.3, 0.5) of faces 0, F/3 and 2F/3. The discrete spacing h is the mean edge
 // length (about one Steiner point per edge). Each method runs in a forked child (its own
 // peak memory); its times are processor seconds of the child (the machine is shared, so
@@ -20,11 +20,11 @@
 #include <cstring>
 #include <string>
 
-#include "burn3/discrete_burning.h"
+#include "burn3/discrete/discrete_burning.h"
 #include "burn3/geodesic_smsp.h"
 #include "complex3/medial_complex.h"
 #include "complex3/point_location.h"
-#include "complex3/refined_mesh.h"
+#include "geometry3/refined_mesh.h"
 #include "io/mesh_io.h"
 #include "peak_memory.h"
 #include "cli.h"
@@ -94,7 +94,7 @@ double mean_edge_length(const TriangleMesh3& m) {
 }
 
 constexpr const char* kUsage =
-    "usage: bench_smsp_baseline [--quick]\nthe peers of the exact engine on closed meshes of 10^3 .. 10^5 faces: CGAL Surface_mesh_shortest_path (Epick, burn3/geodesic_smsp.h) and the discrete baseline with point sources (burn3/discrete_burning.h), on the same meshes.\n(CSV columns and details: the header of experiments/bench_smsp_baseline.cpp)\n";
+    "usage: bench_smsp_baseline [--quick]\nthe peers of the exact engine on closed meshes of 10^3 .. 10^5 faces: CGAL Surface_mesh_shortest_path (Epick, burn3/geodesic_smsp.h) and the discrete baseline with point sources (burn3/discrete/discrete_burning.h), on the same meshes.\n(CSV columns and details: the header of experiments/bench_smsp_baseline.cpp)\n";
 
 int run(int argc, char** argv) {
   const bool quick = argc > 1 && !std::strcmp(argv[1], "--quick");

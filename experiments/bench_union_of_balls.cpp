@@ -15,8 +15,8 @@
 #include <cstdlib>
 #include <vector>
 
-#include "complex3/builders/union_of_balls_axis.h"
-#include "io/cpu_clock.h"
+#include "medial3/balls/union_of_balls_axis.h"
+#include "support/cpu_clock.h"
 #include "peak_memory.h"
 #include "cli.h"
 

@@ -1,5 +1,5 @@
 // plot_svg.h -- small line plots as SVG for the studies (log or linear axes, several
-// series, a legend, optional reference slopes), drawn on io/render3d.h's SvgCanvas.
+// series, a legend, optional reference slopes), drawn on render/render3d.h's SvgCanvas.
 //
 // Computes: a picture of the series' points joined by lines, with ticks at powers of ten on
 // a logarithmic axis and at "nice" steps (1, 2, 5 x 10^k) on a linear one. Points whose
@@ -16,7 +16,7 @@
 #include <string>
 #include <vector>
 
-#include "io/render3d.h"
+#include "render/render3d.h"
 
 namespace grassfire::plot {
 

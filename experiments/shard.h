@@ -23,7 +23,7 @@
 #include <string>
 #include <vector>
 
-#include "io/progress.h"
+#include "support/progress.h"
 
 namespace grassfire::experiments {
 

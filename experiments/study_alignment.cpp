@@ -25,10 +25,10 @@
 #include <vector>
 
 #include "apps2d/alignment.h"
-#include "io/progress.h"
+#include "support/progress.h"
 #include "pipeline/edf2d.h"
 #include "plot_svg.h"
-#include "shapes/load_shape.h"
+#include "io/load_shape.h"
 #include "shapes/validate_shape.h"
 #include "shard.h"
 #include "cli.h"

@@ -19,10 +19,10 @@
 #include <string>
 
 #include "burn3/burn3_reference.h"
-#include "burn3/junction_arrivals.h"
+#include "burn3/discrete/junction_arrivals.h"
 #include "complex3/synthetic_complexes.h"
-#include "io/progress.h"
-#include "io/render3d.h"
+#include "support/progress.h"
+#include "render/render3d.h"
 #include "shard.h"
 #include "cli.h"
 

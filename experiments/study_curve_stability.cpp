@@ -3,13 +3,13 @@
 //
 // For each mesh, amplitude a (a fraction of the bounding diagonal D) and seed: the mesh
 // with every vertex moved along its normal by a D u, u uniform in [-1, 1]
-// (complex3/mesh_perturbation.h; Hausdorff distance <= a D), its medial axis by the builder
-// `grassfire medial3d` uses for closed meshes (complex3/builders/mesh_axis.h, default
-// options: the solid's Betti numbers checked, thin parts refined), the discrete burning at h = D / 100, and the medial curves (burn3/medial_curves.h)
+// (geometry3/mesh_perturbation.h; Hausdorff distance <= a D), its medial axis by the builder
+// `grassfire medial3d` uses for closed meshes (medial3/mesh/mesh_axis.h, default
+// options: the solid's Betti numbers checked, thin parts refined), the discrete burning at h = D / 100, and the medial curves (curves3/medial_curves.h)
 // with two significance settings: all path ends ("raw", min_et_fraction 0) and those whose
 // ET reaches a tenth of the axis' largest ("significant", 0.1). Compared with the
 // unperturbed mesh's curves (same settings):
-//   hausdorff = the Hausdorff distance between the curve graphs (burn3/curve_distance.h,
+//   hausdorff = the Hausdorff distance between the curve graphs (curves3/curve_distance.h,
 //               sampled every h / 2), and ratio = hausdorff / (a D); its two directions:
 //               extra = from the perturbed curves to the original (new branches, hair),
 //               missing = from the original to the perturbed (branches lost or moved);
@@ -43,13 +43,13 @@
 #include <string>
 #include <vector>
 
-#include "burn3/curve_distance.h"
-#include "burn3/discrete_burning_field.h"
-#include "burn3/medial_curves.h"
-#include "complex3/builders/mesh_axis.h"
-#include "complex3/mesh_perturbation.h"
+#include "curves3/curve_distance.h"
+#include "burn3/discrete/discrete_burning_field.h"
+#include "curves3/medial_curves.h"
+#include "medial3/mesh/mesh_axis.h"
+#include "geometry3/mesh_perturbation.h"
 #include "io/mesh_io.h"
-#include "io/progress.h"
+#include "support/progress.h"
 #include "plot_svg.h"
 #include "shard.h"
 #include "cli.h"

@@ -1,9 +1,9 @@
 // study_exact_axis_throughput -- the exact polygon axis plus the extended grassfire on
 // every shape of a folder (e.g. the 979 shapes of the 2D Shape Structure dataset).
 //
-// For each *.json / *.wkt file: load and validate the shape (shapes/load_shape.h), build
-// the exact axis (medial2/polygon_axis.h), run the extended grassfire; with --validate
-// also the definition-level check (medial2/polygon_axis_validate.h).
+// For each *.json / *.wkt file: load and validate the shape (io/load_shape.h), build
+// the exact axis (medial2/polygon/polygon_axis.h), run the extended grassfire; with --validate
+// also the definition-level check (medial2/polygon/polygon_axis_validate.h).
 // Output (stdout): one CSV row per shape, sorted: file,construction,vertices,nodes,edges,
 // parabolic_arcs,contracted,uncertified_contractions,uncertified_ties,ball_refinements,
 // axis_s,edf_s,valid,error (uncertified_ties: comparisons of the burning that no stage
@@ -21,10 +21,10 @@
 #include <vector>
 
 #include "burn2/extended_grassfire.h"
-#include "io/progress.h"
-#include "medial2/polygon_axis.h"
-#include "medial2/polygon_axis_validate.h"
-#include "shapes/load_shape.h"
+#include "support/progress.h"
+#include "medial2/polygon/polygon_axis.h"
+#include "medial2/polygon/polygon_axis_validate.h"
+#include "io/load_shape.h"
 #include "shard.h"
 #include "cli.h"
 

@@ -1,4 +1,4 @@
-// study_mesh_axis_sampling -- the mesh axis (complex3/builders/mesh_axis.h) against the
+// study_mesh_axis_sampling -- the mesh axis (medial3/mesh/mesh_axis.h) against the
 // sampling density: how far it is from the true axis, and whether its topology is the
 // solid's (issue 10, item 7).
 //
@@ -44,13 +44,13 @@
 #include <string>
 #include <vector>
 
-#include "complex3/builders/convex_polyhedron_axis.h"
-#include "complex3/builders/mesh_axis.h"
+#include "medial3/convex/convex_polyhedron_axis.h"
+#include "medial3/mesh/mesh_axis.h"
 #include "complex3/complex_distance.h"
-#include "complex3/mesh_perturbation.h"
-#include "io/cpu_clock.h"
+#include "geometry3/mesh_perturbation.h"
+#include "support/cpu_clock.h"
 #include "io/mesh_io.h"
-#include "io/progress.h"
+#include "support/progress.h"
 #include "mesh_axis_sampling_plot.h"
 #include "cli.h"
 
@@ -149,7 +149,7 @@ std::vector<Input> read_inputs(const std::string& dir) {
 }
 
 constexpr const char* kUsage =
-    "usage: study_mesh_axis_sampling MESH_DIR [OUT] [--quick] [--densities S1,S2,...] [--max-samples N]\nthe mesh axis (complex3/builders/mesh_axis.h) against the sampling density: how far it is from the true axis, and whether its topology is the solid's (issue 10, item 7).\n(CSV columns and details: the header of experiments/study_mesh_axis_sampling.cpp)\n";
+    "usage: study_mesh_axis_sampling MESH_DIR [OUT] [--quick] [--densities S1,S2,...] [--max-samples N]\nthe mesh axis (medial3/mesh/mesh_axis.h) against the sampling density: how far it is from the true axis, and whether its topology is the solid's (issue 10, item 7).\n(CSV columns and details: the header of experiments/study_mesh_axis_sampling.cpp)\n";
 
 int run(int argc, char** argv) {
   take_verbosity_flags(argc, argv);

@@ -29,11 +29,11 @@
 #include <vector>
 
 #include "apps2d/axis_correspondence.h"
-#include "io/progress.h"
+#include "support/progress.h"
 #include "pipeline/edf2d.h"
 #include "plot_svg.h"
 #include "shapes/builtin_shapes.h"
-#include "shapes/load_shape.h"
+#include "io/load_shape.h"
 #include "shapes/resample.h"
 #include "shard.h"
 #include "cli.h"

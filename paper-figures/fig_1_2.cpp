@@ -3,7 +3,7 @@
 #include <cstdio>
 
 #include "figure_registry.h"
-#include "io/svg_medial2.h"
+#include "render/svg_medial2.h"
 #include "pipeline/edf2d.h"
 #include "shapes/builtin_shapes.h"
 

@@ -9,7 +9,7 @@
 
 #include "fig_2_local_measures.h"
 #include "figure_registry.h"
-#include "shapes/load_shape.h"
+#include "io/load_shape.h"
 
 namespace grassfire::figures {
 namespace {

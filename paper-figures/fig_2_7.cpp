@@ -17,7 +17,7 @@
 #include "burn2/feature_size.h"
 #include "burn2/potential_residue.h"
 #include "figure_registry.h"
-#include "io/svg_medial2.h"
+#include "render/svg_medial2.h"
 #include "pipeline/edf2d.h"
 #include "shapes/validate_shape.h"
 

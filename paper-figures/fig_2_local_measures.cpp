@@ -7,7 +7,7 @@
 #include <cstdio>
 #include <limits>
 
-#include "medial2/union_find.h"
+#include "support/union_find.h"
 #include "shapes/validate_shape.h"
 
 namespace grassfire::figures {

@@ -39,7 +39,7 @@
 
 #include "burn2/closest_points.h"
 #include "burn2/feature_size.h"
-#include "io/svg_medial2.h"
+#include "render/svg_medial2.h"
 #include "pipeline/edf2d.h"
 
 namespace grassfire::figures {

@@ -5,7 +5,7 @@
 
 #include "burn2/burning_state.h"
 #include "figure_registry.h"
-#include "io/svg_medial2.h"
+#include "render/svg_medial2.h"
 #include "pipeline/edf2d.h"
 #include "shapes/builtin_shapes.h"
 

@@ -13,9 +13,9 @@
 #include "apps2d/perturbation.h"
 #include "caption_printf.h"
 #include "figure_registry.h"
-#include "io/svg_medial2.h"
+#include "render/svg_medial2.h"
 #include "pipeline/edf2d.h"
-#include "shapes/load_shape.h"
+#include "io/load_shape.h"
 #include "shapes/validate_shape.h"
 
 namespace grassfire::figures {

@@ -8,7 +8,7 @@
 
 #include "fig_3_pruning.h"
 #include "figure_registry.h"
-#include "shapes/load_shape.h"
+#include "io/load_shape.h"
 
 namespace grassfire::figures {
 namespace {

@@ -17,10 +17,10 @@
 #include "burn2/boundary_eccentricity.h"
 #include "../experiments/plot_svg.h"
 #include "figure_registry.h"
-#include "io/atomic_file.h"
-#include "io/svg_medial2.h"
+#include "support/atomic_file.h"
+#include "render/svg_medial2.h"
 #include "pipeline/edf2d.h"
-#include "shapes/load_shape.h"
+#include "io/load_shape.h"
 
 namespace grassfire::figures {
 namespace {

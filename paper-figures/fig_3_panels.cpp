@@ -4,7 +4,7 @@
 #include <algorithm>
 #include <cstdio>
 
-#include "shapes/load_shape.h"
+#include "io/load_shape.h"
 
 namespace grassfire::figures {
 

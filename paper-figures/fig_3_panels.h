@@ -1,11 +1,11 @@
 // fig_3_panels.h -- what the chapter-3 figures (3.3, 3.4) share: a shape with its sampled
-// medial axis and burning, and rows of panels drawn by io/svg_medial2.h.
+// medial axis and burning, and rows of panels drawn by render/svg_medial2.h.
 #pragma once
 
 #include <string>
 #include <vector>
 
-#include "io/svg_medial2.h"
+#include "render/svg_medial2.h"
 #include "pipeline/edf2d.h"
 
 namespace grassfire::figures {

@@ -8,11 +8,11 @@
 
 #include "burn2/axis_pruning.h"
 #include "fig_3_panels.h"
-#include "io/svg_pruned2.h"
+#include "render/svg_pruned2.h"
 
 namespace grassfire::figures {
 
-// "0.05 of the dimension of the shape" (3.5.1) is 0.05 of shape_dimension (shapes/shape2.h:
+// "0.05 of the dimension of the shape" (3.5.1) is 0.05 of shape_dimension (geometry2/shape2.h:
 // the larger side of the bounding box), as `grassfire prune2d --relative` takes it.
 
 // The ST threshold of Figs. 3.6 (e) and 3.7: 3/10, just above 1 - 1/sqrt(2) ~ 0.2929, the

@@ -1,5 +1,5 @@
 // fig_4_scene.h -- what the chapter-4 figures share: the board and fin with its burning
-// time (the closed-form LPDF is burn3/lpdf.h), and drawing a complex with a scalar field and iso-curves.
+// time (the closed-form LPDF is curves3/lpdf.h), and drawing a complex with a scalar field and iso-curves.
 #pragma once
 
 #include <array>
@@ -7,10 +7,10 @@
 #include <string>
 #include <vector>
 
-#include "burn3/discrete_burning.h"
-#include "burn3/lpdf.h"
+#include "burn3/discrete/discrete_burning.h"
+#include "curves3/lpdf.h"
 #include "complex3/medial_complex.h"
-#include "io/render3d.h"
+#include "render/render3d.h"
 
 namespace grassfire::figures {
 

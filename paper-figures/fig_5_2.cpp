@@ -6,8 +6,8 @@
 #include <cstdio>
 
 #include "complex3/synthetic_complexes.h"
-#include "complex3/builders/medial_axis_input.h"
-#include "complex3/vec3.h"
+#include "pipeline/medial_axis_input.h"
+#include "geometry3/vec3.h"
 #include "fig_4_scene.h"
 #include "fig_5_scene.h"
 #include "figure_registry.h"

@@ -8,7 +8,7 @@
 #include "apps2d/axis_correspondence.h"
 #include "caption_printf.h"
 #include "figure_registry.h"
-#include "io/render3d.h"
+#include "render/render3d.h"
 #include "pipeline/edf2d.h"
 #include "shapes/validate_shape.h"
 

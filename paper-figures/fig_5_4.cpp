@@ -2,13 +2,13 @@
 // helices as tubes, beta sheets as plates): a paddle made of balls -- a round plate of
 // radius-1 balls and a handle of radius-0.8 balls -- its exact medial axis split by
 // ST = 1 - R / BT (>= 1/2: planar, a medial sheet; below: tubular, represented by the
-// medial curves; burn3/shape_analysis.h), and the mixed-dimensional medial structure:
+// medial curves; curves3/shape_analysis.h), and the mixed-dimensional medial structure:
 // the planar sheets with the curves of the tubular parts.
 #include <cmath>
 
 #include "caption_printf.h"
 #include "number/exact_sum.h"
-#include "complex3/builders/union_of_balls_axis.h"
+#include "medial3/balls/union_of_balls_axis.h"
 #include "fig_4_scene.h"
 #include "fig_5_scene.h"
 #include "figure_registry.h"

@@ -6,10 +6,10 @@
 // discrete baseline at 1/150 of the diagonal.
 #include <cmath>
 
-#include "burn3/curve_distance.h"
+#include "curves3/curve_distance.h"
 #include "caption_printf.h"
-#include "complex3/builders/mesh_axis.h"
-#include "complex3/mesh_perturbation.h"
+#include "medial3/mesh/mesh_axis.h"
+#include "geometry3/mesh_perturbation.h"
 #include "fig_4_scene.h"
 #include "fig_5_scene.h"
 #include "figure_registry.h"

@@ -4,7 +4,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "complex3/vec3.h"
+#include "geometry3/vec3.h"
 #include "fig_4_scene.h"
 
 namespace grassfire::figures {

@@ -8,13 +8,13 @@
 #include <string>
 #include <vector>
 
-#include "burn3/axis_refinement.h"
-#include "burn3/burning_paths.h"
-#include "burn3/discrete_burning_field.h"
-#include "burn3/medial_curves.h"
-#include "burn3/shape_analysis.h"
-#include "complex3/triangle_mesh.h"
-#include "io/render3d.h"
+#include "curves3/axis_refinement.h"
+#include "curves3/burning_paths.h"
+#include "burn3/discrete/discrete_burning_field.h"
+#include "curves3/medial_curves.h"
+#include "curves3/shape_analysis.h"
+#include "geometry3/triangle_mesh.h"
+#include "render/render3d.h"
 
 namespace grassfire::figures {
 

@@ -12,10 +12,10 @@
 #include "figure_registry.h"
 #include "geometry2/shape_locator.h"
 #include "io/image_raster.h"
-#include "io/svg_medial2.h"
+#include "render/svg_medial2.h"
 #include "pipeline/edf2d.h"
 #include "shapes/builtin_shapes.h"
-#include "shapes/load_shape.h"
+#include "io/load_shape.h"
 
 namespace grassfire::figures {
 namespace {

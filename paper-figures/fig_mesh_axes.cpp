@@ -10,8 +10,8 @@
 #include <cmath>
 
 #include "caption_printf.h"
-#include "complex3/builders/mesh_axis.h"
-#include "complex3/exact_predicates3.h"
+#include "medial3/mesh/mesh_axis.h"
+#include "geometry3/exact_predicates3.h"
 #include "fig_4_scene.h"
 #include "fig_5_scene.h"
 #include "figure_registry.h"

@@ -16,8 +16,8 @@
 #include <sstream>
 
 #include "figure_registry.h"
-#include "io/progress.h"
-#include "io/xml_escape.h"
+#include "support/progress.h"
+#include "support/xml_escape.h"
 
 namespace grassfire::figures {
 

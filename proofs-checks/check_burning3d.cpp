@@ -26,9 +26,9 @@
 #include <random>
 
 #include "burn3/burn3_reference.h"
-#include "burn3/burn_sets.h"
-#include "burn3/discrete_burning.h"
-#include "burn3/steiner_graph.h"
+#include "burn3/discrete/burn_sets.h"
+#include "burn3/discrete/discrete_burning.h"
+#include "burn3/discrete/steiner_graph.h"
 #include "check_registry.h"
 #include "complex3/closed_subcomplex.h"
 #include "corpora3d.h"

@@ -29,11 +29,11 @@
 #include "burn2/extended_grassfire.h"
 #include "check_registry.h"
 #include "mutants2d.h"
-#include "medial2/polygon_axis.h"
+#include "medial2/polygon/polygon_axis.h"
 #include "medial2/synthetic_graphs.h"
 #include "pipeline/edf2d.h"
 #include "shapes/builtin_shapes.h"
-#include "shapes/load_shape.h"
+#include "io/load_shape.h"
 
 namespace grassfire::checks {
 

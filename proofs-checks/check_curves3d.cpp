@@ -1,8 +1,8 @@
-// check_curves3d.cpp -- 5.1.2: the medial curves (burn3/medial_curves.h) have the b0 and b1
+// check_curves3d.cpp -- 5.1.2: the medial curves (curves3/medial_curves.h) have the b0 and b1
 // of the medial axis, on synthetic, generated and real complexes.
 //
 // Independent reference: the Betti numbers of the axis by GF(2) simplicial homology of its
-// triangles, segments and vertices (complex3/builders/simplicial_homology.h), against the
+// triangles, segments and vertices (complex3/simplicial_homology.h), against the
 // curve graph's, counted afresh from its edge list (union-find: b0, and b1 = E - V + b0).
 // Tolerance: exact (integers). Mutant "curves-drop-edge": the engine's curve graph loses
 // one of its joining edges (a "join", else any edge) before the comparison; removing an
@@ -12,15 +12,15 @@
 #include <dirent.h>
 #include <random>
 
-#include "burn3/discrete_burning_field.h"
-#include "burn3/medial_curves.h"
+#include "burn3/discrete/discrete_burning_field.h"
+#include "curves3/medial_curves.h"
 #include "check_registry.h"
-#include "complex3/builders/convex_polyhedron_axis.h"
-#include "complex3/builders/medial_axis_input.h"
+#include "medial3/convex/convex_polyhedron_axis.h"
+#include "pipeline/medial_axis_input.h"
 #include "complex3/synthetic_complexes.h"
 #include "io/complex_ma.h"
 #include "io/mesh_io.h"
-#include "medial2/union_find.h"
+#include "support/union_find.h"
 
 namespace grassfire::checks {
 namespace {

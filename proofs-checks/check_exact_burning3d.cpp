@@ -2,7 +2,7 @@
 // item 4), on the complexes the exact engine burns (no singular edge):
 //  - random planar sheets (seeded masks of grid cells: holes, reflex corners;
 //    tilted; random border rules and radii), burned from the border;
-//  - small closed meshes of data/meshes, Loop-refined (complex3/refined_mesh.h), burned as
+//  - small closed meshes of data/meshes, Loop-refined (geometry3/refined_mesh.h), burned as
 //    themselves from seeded point sources with start times t0 (no border).
 // Rows per corpus:
 //  - Def. 10 against an independent reference: on sheets PlanarSheetReference (the
@@ -32,7 +32,7 @@
 #include "check_registry.h"
 #include "complex3/complex_builder.h"
 #include "complex3/point_location.h"
-#include "complex3/refined_mesh.h"
+#include "geometry3/refined_mesh.h"
 #include "io/mesh_io.h"
 #include "mutants3d.h"
 

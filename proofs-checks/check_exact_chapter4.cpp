@@ -45,12 +45,12 @@
 #include <map>
 #include <memory>
 
-#include "burn3/discrete_burning_field.h"
+#include "burn3/discrete/discrete_burning_field.h"
 #include "burn3/exact/exact_burning.h"
 #include "check_registry.h"
 #include "complex3/closed_subcomplex.h"
-#include "complex3/exact_predicates3.h"
-#include "complex3/vec3.h"
+#include "geometry3/exact_predicates3.h"
+#include "geometry3/vec3.h"
 #include "corpora3d.h"
 #include "mutants3d.h"
 

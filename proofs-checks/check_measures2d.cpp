@@ -32,14 +32,14 @@
 #include "burn2/potential_residue.h"
 #include "burn2/rate_pruning.h"
 #include "check_registry.h"
-#include "medial2/union_find.h"
+#include "support/union_find.h"
 #include "mutants2d.h"
-#include "medial2/disk_union_axis.h"
-#include "medial2/disk_union_validate.h"
+#include "medial2/disks/disk_union_axis.h"
+#include "medial2/disks/disk_union_validate.h"
 #include "medial2/synthetic_graphs.h"
 #include "pipeline/edf2d.h"
 #include "shapes/builtin_shapes.h"
-#include "shapes/load_shape.h"
+#include "io/load_shape.h"
 
 namespace grassfire::checks {
 

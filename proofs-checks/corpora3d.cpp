@@ -9,7 +9,7 @@
 #include <set>
 
 #include "burn3/burn3_reference.h"
-#include "complex3/builders/convex_polyhedron_axis.h"
+#include "medial3/convex/convex_polyhedron_axis.h"
 #include "complex3/complex_builder.h"
 #include "complex3/synthetic_complexes.h"
 #include "io/complex_ma.h"

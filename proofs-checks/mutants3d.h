@@ -21,7 +21,7 @@
 #include <memory>
 #include <vector>
 
-#include "burn3/discrete_burning.h"
+#include "burn3/discrete/discrete_burning.h"
 #include "check_registry.h"
 
 namespace grassfire::checks {

@@ -3,7 +3,7 @@
 
 #include <cstdio>
 
-#include "io/xml_escape.h"
+#include "support/xml_escape.h"
 
 namespace grassfire::checks {
 

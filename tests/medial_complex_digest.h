@@ -26,9 +26,9 @@
 
 #include "complex3/complex_builder.h"
 #include "complex3/medial_complex.h"
-#include "complex3/refined_mesh.h"
+#include "geometry3/refined_mesh.h"
 #include "complex3/synthetic_complexes.h"
-#include "complex3/triangle_mesh.h"
+#include "geometry3/triangle_mesh.h"
 #include "io/complex_ma.h"
 #include "io/mesh_io.h"
 

@@ -6,7 +6,7 @@
 
 #include "apps2d/alignment.h"
 #include "pipeline/edf2d.h"
-#include "shapes/load_shape.h"
+#include "io/load_shape.h"
 #include "shapes/resample.h"
 #include "shapes/validate_shape.h"
 
@@ -25,7 +25,7 @@ Shape2 polygon(std::vector<Point2> outer, std::vector<std::vector<Point2>> holes
 
 // Translated and rounded to 9 decimals: the copy of a dataset shape (at most 7 decimals)
 // translated by a 3-decimal vector stays on decimals, so its exact axis is built by the
-// same construction (Boost.Polygon on integers, medial2/polygon_axis.h) as the original's,
+// same construction (Boost.Polygon on integers, medial2/polygon/polygon_axis.h) as the original's,
 // and the copy is the original moved exactly (up to the doubles' representation).
 Shape2 translated(const Shape2& s, double dx, double dy) {
   Shape2 t = s;

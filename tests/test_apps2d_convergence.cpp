@@ -9,7 +9,7 @@
 #include "apps2d/axis_correspondence.h"
 #include "pipeline/edf2d.h"
 #include "shapes/builtin_shapes.h"
-#include "shapes/load_shape.h"
+#include "io/load_shape.h"
 
 using namespace grassfire;
 

@@ -13,7 +13,7 @@
 
 #include "apps2d/boundary_matching.h"
 #include "pipeline/edf2d.h"
-#include "shapes/load_shape.h"
+#include "io/load_shape.h"
 #include "support.h"
 
 using namespace grassfire;

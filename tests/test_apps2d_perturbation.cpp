@@ -7,7 +7,7 @@
 #include "apps2d/alignment.h"
 #include "apps2d/perturbation.h"
 #include "shapes/builtin_shapes.h"
-#include "shapes/load_shape.h"
+#include "io/load_shape.h"
 
 using namespace grassfire;
 

@@ -6,9 +6,9 @@
 #include <map>
 #include <random>
 
-#include "complex3/builders/simplicial_homology.h"
-#include "complex3/builders/union_of_balls_axis.h"
-#include "complex3/builders/union_of_balls_reference.h"
+#include "complex3/simplicial_homology.h"
+#include "medial3/balls/union_of_balls_axis.h"
+#include "medial3/balls/union_of_balls_reference.h"
 #include "complex3/medial_complex.h"
 #include "io/mesh_io.h"
 

@@ -5,8 +5,8 @@
 #include <algorithm>
 #include <map>
 
-#include "complex3/builders/convex_polyhedron_axis.h"
-#include "complex3/builders/simplicial_homology.h"
+#include "medial3/convex/convex_polyhedron_axis.h"
+#include "complex3/simplicial_homology.h"
 #include "complex3/medial_complex.h"
 #include "io/complex_text.h"
 #include "io/mesh_io.h"

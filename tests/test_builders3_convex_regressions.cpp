@@ -2,7 +2,7 @@
 // seeded random cuts of the cube, which the proof checks also run.
 #include <catch2/catch.hpp>
 
-#include "complex3/builders/convex_polyhedron_axis.h"
+#include "medial3/convex/convex_polyhedron_axis.h"
 #include "complex3/medial_complex.h"
 
 using namespace grassfire;

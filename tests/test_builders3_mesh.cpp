@@ -3,9 +3,9 @@
 
 #include <fstream>
 
-#include "complex3/builders/mesh_checks.h"
-#include "complex3/builders/simplicial_homology.h"
-#include "complex3/builders/union_of_balls_axis.h"
+#include "medial3/mesh/mesh_checks.h"
+#include "complex3/simplicial_homology.h"
+#include "medial3/balls/union_of_balls_axis.h"
 #include "complex3/medial_complex.h"
 #include "io/mesh_io.h"
 #include "support.h"

@@ -9,13 +9,13 @@
 #include <random>
 #include <set>
 
-#include "complex3/builders/axis_pruning.h"
-#include "complex3/builders/inner_voronoi.h"
-#include "complex3/builders/mesh_axis.h"
-#include "complex3/builders/mesh_checks.h"
-#include "complex3/builders/simplicial_homology.h"
-#include "complex3/builders/synthetic_meshes.h"
-#include "complex3/exact_predicates3.h"
+#include "medial3/mesh/axis_pruning.h"
+#include "medial3/mesh/inner_voronoi.h"
+#include "medial3/mesh/mesh_axis.h"
+#include "medial3/mesh/mesh_checks.h"
+#include "complex3/simplicial_homology.h"
+#include "geometry3/synthetic_meshes.h"
+#include "geometry3/exact_predicates3.h"
 #include "complex3/medial_complex.h"
 #include "io/mesh_io.h"
 #include "number/exact_sum.h"

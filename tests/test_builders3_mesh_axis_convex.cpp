@@ -15,9 +15,9 @@
 #include <cmath>
 #include <map>
 
-#include "complex3/builders/convex_polyhedron_axis.h"
-#include "complex3/builders/mesh_axis.h"
-#include "complex3/builders/synthetic_meshes.h"
+#include "medial3/convex/convex_polyhedron_axis.h"
+#include "medial3/mesh/mesh_axis.h"
+#include "geometry3/synthetic_meshes.h"
 #include "complex3/complex_distance.h"
 #include "complex3/medial_complex.h"
 #include "io/mesh_io.h"

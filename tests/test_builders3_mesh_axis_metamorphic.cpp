@@ -11,10 +11,10 @@
 #include <random>
 #include <tuple>
 
-#include "complex3/builders/inner_voronoi.h"
-#include "complex3/builders/mesh_axis.h"
-#include "complex3/builders/mesh_samples.h"
-#include "complex3/builders/synthetic_meshes.h"
+#include "medial3/mesh/inner_voronoi.h"
+#include "medial3/mesh/mesh_axis.h"
+#include "medial3/mesh/mesh_samples.h"
+#include "geometry3/synthetic_meshes.h"
 #include "complex3/medial_complex.h"
 #include "io/mesh_io.h"
 #include "support.h"

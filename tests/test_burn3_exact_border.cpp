@@ -6,7 +6,7 @@
 #include <random>
 
 #include "burn3/burn3_reference.h"
-#include "burn3/discrete_burning.h"
+#include "burn3/discrete/discrete_burning.h"
 #include "burn3/exact/exact_burning.h"
 #include "complex3/synthetic_complexes.h"
 #include "test_burn3_exact_support.h"

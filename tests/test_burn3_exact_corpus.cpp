@@ -4,9 +4,9 @@
 
 #include <cmath>
 
-#include "burn3/discrete_burning.h"
+#include "burn3/discrete/discrete_burning.h"
 #include "burn3/exact/exact_burning.h"
-#include "complex3/builders/medial_axis_input.h"
+#include "pipeline/medial_axis_input.h"
 #include "complex3/synthetic_complexes.h"
 #include "io/complex_ma.h"
 #include "test_burn3_exact_support.h"

@@ -10,13 +10,13 @@
 #include <cmath>
 #include <random>
 
-#include "burn3/discrete_burning.h"
+#include "burn3/discrete/discrete_burning.h"
 #include "burn3/exact/exact_burning.h"
 #include "burn3/geodesic_smsp.h"
 #include "burn3/planar_sheet_reference.h"
 #include "burn3/point_sources.h"
 #include "complex3/point_location.h"
-#include "complex3/refined_mesh.h"
+#include "geometry3/refined_mesh.h"
 #include "complex3/synthetic_complexes.h"
 #include "io/mesh_io.h"
 #include "test_burn3_exact_support.h"

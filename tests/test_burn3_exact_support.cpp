@@ -4,7 +4,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "burn3/discrete_burning.h"
+#include "burn3/discrete/discrete_burning.h"
 
 namespace grassfire::testing {
 

@@ -25,7 +25,7 @@
 
 #include <cmath>
 
-#include "burn3/discrete_burning.h"
+#include "burn3/discrete/discrete_burning.h"
 #include "burn3/exact/exact_burning.h"
 #include "complex3/point_location.h"
 #include "complex3/synthetic_complexes.h"

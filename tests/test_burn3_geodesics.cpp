@@ -5,12 +5,12 @@
 #include <cmath>
 #include <map>
 
-#include "burn3/discrete_burning.h"
+#include "burn3/discrete/discrete_burning.h"
 #include "burn3/geodesic_smsp.h"
 #include "burn3/point_sources.h"
 #include "complex3/medial_complex.h"
 #include "complex3/point_location.h"
-#include "complex3/refined_mesh.h"
+#include "geometry3/refined_mesh.h"
 #include "io/mesh_io.h"
 #include "test_complex3_support.h"
 #include "test_sheets_support.h"

@@ -5,7 +5,7 @@
 
 #include <cmath>
 
-#include "burn3/discrete_burning.h"
+#include "burn3/discrete/discrete_burning.h"
 #include "complex3/synthetic_complexes.h"
 #include "test_complex3_support.h"
 

@@ -19,7 +19,7 @@
 
 #include <random>
 
-#include "burn3/discrete_burning.h"
+#include "burn3/discrete/discrete_burning.h"
 #include "burn3/exact/exact_burning.h"
 #include "complex3/synthetic_complexes.h"
 #include "number/sqrt_field.h"

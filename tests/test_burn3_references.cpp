@@ -6,8 +6,8 @@
 #include <random>
 
 #include "burn3/burn3_reference.h"
-#include "burn3/discrete_burning.h"
-#include "burn3/discrete_query.h"
+#include "burn3/discrete/discrete_burning.h"
+#include "burn3/discrete/discrete_query.h"
 #include "burn3/planar_sheet_reference.h"
 #include "complex3/point_location.h"
 #include "complex3/synthetic_complexes.h"

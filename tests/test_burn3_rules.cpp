@@ -9,11 +9,11 @@
 #include <sstream>
 
 #include "burn3/burn3_reference.h"
-#include "burn3/burn_sets.h"
-#include "burn3/discrete_burning.h"
-#include "burn3/junction_arrivals.h"
-#include "burn3/steiner_graph.h"
-#include "complex3/builders/mesh_axis.h"
+#include "burn3/discrete/burn_sets.h"
+#include "burn3/discrete/discrete_burning.h"
+#include "burn3/discrete/junction_arrivals.h"
+#include "burn3/discrete/steiner_graph.h"
+#include "medial3/mesh/mesh_axis.h"
 #include "complex3/closed_subcomplex.h"
 #include "complex3/complex_builder.h"
 #include "complex3/synthetic_complexes.h"

@@ -1,5 +1,5 @@
 // The link rule at singular points on the exact engine (Definition 9, Prop 6; issue 9), on
-// the medial axes of seeded random cuts of the cube (complex3/builders/convex_polyhedron_axis.h,
+// the medial axes of seeded random cuts of the cube (medial3/convex/convex_polyhedron_axis.h,
 // built exactly: points where four or more sheets meet, joined by singular curves). BT at
 // every vertex the link rule decides is compared with two computations made another way:
 //  - the link rule applied afresh (MedialComplex::link_burns) to the limits of BT along
@@ -20,10 +20,10 @@
 // Prop 5.1 and Prop 6 rows on convex polyhedra). Now it burns at 0.909525471047.
 #include <catch2/catch.hpp>
 
-#include "burn3/discrete_burning.h"
+#include "burn3/discrete/discrete_burning.h"
 #include "burn3/exact/exact_burning.h"
-#include "complex3/builders/convex_polyhedron_axis.h"
-#include "complex3/exact_predicates3.h"
+#include "medial3/convex/convex_polyhedron_axis.h"
+#include "geometry3/exact_predicates3.h"
 
 using namespace grassfire;
 

@@ -4,8 +4,8 @@
 #include <cmath>
 #include <random>
 
-#include "burn3/discrete_burning.h"
-#include "burn3/discrete_query.h"
+#include "burn3/discrete/discrete_burning.h"
+#include "burn3/discrete/discrete_query.h"
 #include "complex3/point_location.h"
 #include "complex3/synthetic_complexes.h"
 #include "number/exact_sum.h"

@@ -6,12 +6,12 @@
 #include <cmath>
 #include <random>
 
-#include "burn3/burning_paths.h"
-#include "burn3/discrete_burning_field.h"
+#include "curves3/burning_paths.h"
+#include "burn3/discrete/discrete_burning_field.h"
 #include "burn3/point_sources.h"
 #include "complex3/synthetic_complexes.h"
 #include "complex3/synthetic_tubes.h"
-#include "complex3/vec3.h"
+#include "geometry3/vec3.h"
 #include "test_complex3_support.h"
 
 using namespace grassfire;

@@ -10,7 +10,7 @@
 #include <random>
 #include <sstream>
 
-#include "complex3/filtered_predicates3.h"
+#include "geometry3/filtered_predicates3.h"
 #include "medial_complex_digest.h"
 
 using namespace grassfire;

@@ -6,7 +6,7 @@
 #include <functional>
 
 #include "burn3/burn3_reference.h"
-#include "burn3/steiner_graph.h"
+#include "burn3/discrete/steiner_graph.h"
 #include "complex3/medial_complex.h"
 
 namespace grassfire::testing {

@@ -10,8 +10,8 @@
 #include <random>
 
 #include "geometry2/predicates2.h"
-#include "medial2/segment_voronoi.h"
-#include "medial2/voronoi_circle.h"
+#include "medial2/polygon/segment_voronoi.h"
+#include "medial2/polygon/voronoi_circle.h"
 #include "number/mpfr_bounds.h"
 #include "shapes/validate_shape.h"
 

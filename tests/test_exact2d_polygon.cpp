@@ -1,4 +1,4 @@
-// The exact polygon medial axis (medial2/polygon_axis.h): hand-built shapes with exact
+// The exact polygon medial axis (medial2/polygon/polygon_axis.h): hand-built shapes with exact
 // expected values, the definition-level validation, Boost vs CGAL, engine vs oracle.
 #include <catch2/catch.hpp>
 
@@ -11,11 +11,11 @@
 
 #include "burn2/edf_definition.h"
 #include "burn2/extended_grassfire.h"
-#include "medial2/polygon_axis.h"
-#include "medial2/polygon_axis_geometry.h"
-#include "medial2/polygon_axis_validate.h"
+#include "medial2/polygon/polygon_axis.h"
+#include "medial2/polygon/polygon_axis_geometry.h"
+#include "medial2/polygon/polygon_axis_validate.h"
 #include "number/sqrt_field.h"
-#include "shapes/load_shape.h"
+#include "io/load_shape.h"
 #include "shapes/validate_shape.h"
 #include "support.h"
 

@@ -1,4 +1,4 @@
-// Value classes of the exact polygon axis (medial2/polygon_axis_symmetry.h) and their use
+// Value classes of the exact polygon axis (medial2/polygon/polygon_axis_symmetry.h) and their use
 // by the burning engine (burn2/burn_times.h): exact symmetries are found, and not for a
 // polygon one unit off; classed atoms have exactly equal values; mirror chains tie by
 // class; the engine still equals the oracle, which does not use the classes.
@@ -8,10 +8,10 @@
 
 #include "burn2/edf_definition.h"
 #include "burn2/extended_grassfire.h"
-#include "medial2/polygon_axis.h"
-#include "medial2/polygon_axis_geometry.h"
-#include "medial2/polygon_axis_symmetry.h"
-#include "medial2/polygon_axis_validate.h"
+#include "medial2/polygon/polygon_axis.h"
+#include "medial2/polygon/polygon_axis_geometry.h"
+#include "medial2/polygon/polygon_axis_symmetry.h"
+#include "medial2/polygon/polygon_axis_validate.h"
 #include "number/mpfr_bounds.h"
 #include "shapes/validate_shape.h"
 #include "support.h"

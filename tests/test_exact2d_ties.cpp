@@ -11,10 +11,10 @@
 
 #include "burn2/edf_definition.h"
 #include "burn2/extended_grassfire.h"
-#include "medial2/polygon_axis.h"
-#include "medial2/polygon_axis_geometry.h"
-#include "medial2/polygon_axis_validate.h"
-#include "shapes/load_shape.h"
+#include "medial2/polygon/polygon_axis.h"
+#include "medial2/polygon/polygon_axis_geometry.h"
+#include "medial2/polygon/polygon_axis_validate.h"
+#include "io/load_shape.h"
 #include "support.h"
 
 using namespace grassfire;

@@ -1,4 +1,4 @@
-// The wide and mp binary policies (medial2/polygon_axis.h, boost_wide_traits.h,
+// The wide and mp binary policies (medial2/polygon/polygon_axis.h, boost_wide_traits.h,
 // boost_mp_traits.h): Boost.Polygon's builder on 62-bit integer frames, and on integers of
 // any size (filter stage and MPFR run), against CGAL's Segment_Delaunay_graph_2 on the same
 // exact polygon, Voronoi topology site by site, on seeded polygons with arbitrary
@@ -13,8 +13,8 @@
 #include <string>
 #include <tuple>
 
-#include "medial2/polygon_axis.h"
-#include "medial2/segment_voronoi.h"
+#include "medial2/polygon/polygon_axis.h"
+#include "medial2/polygon/segment_voronoi.h"
 #include "shapes/validate_shape.h"
 #include "support.h"
 

@@ -9,13 +9,13 @@
 #include <memory>
 #include <random>
 
-#include "burn3/burning_paths.h"
-#include "burn3/discrete_burning_field.h"
+#include "curves3/burning_paths.h"
+#include "burn3/discrete/discrete_burning_field.h"
 #include "burn3/exact/exact_burning_field.h"
-#include "burn3/medial_curves.h"
+#include "curves3/medial_curves.h"
 #include "complex3/synthetic_complexes.h"
 #include "complex3/synthetic_tubes.h"
-#include "complex3/vec3.h"
+#include "geometry3/vec3.h"
 #include "test_burn3_exact_support.h"
 
 using namespace grassfire;

@@ -5,8 +5,8 @@
 
 #include <cmath>
 
-#include "burn3/discrete_burning.h"
-#include "burn3/lpdf.h"
+#include "burn3/discrete/discrete_burning.h"
+#include "curves3/lpdf.h"
 #include "complex3/synthetic_complexes.h"
 #include "complex3/synthetic_tubes.h"
 #include "test_complex3_support.h"

@@ -1,4 +1,4 @@
-// The exact medial axis of a union of disks (medial2/disk_union_axis.h) and its input
+// The exact medial axis of a union of disks (medial2/disks/disk_union_axis.h) and its input
 // format (io/disk_list.h): hand-derived axes, the definition-level validation, degenerate
 // and malformed inputs, the pipeline and the command line.
 #include <catch2/catch.hpp>
@@ -10,9 +10,9 @@
 
 #include "burn2/extended_grassfire.h"
 #include "io/disk_list.h"
-#include "medial2/disk_union_axis.h"
-#include "medial2/disk_union_geometry.h"
-#include "medial2/disk_union_validate.h"
+#include "medial2/disks/disk_union_axis.h"
+#include "medial2/disks/disk_union_geometry.h"
+#include "medial2/disks/disk_union_validate.h"
 #include "pipeline/edf2d.h"
 #include "support.h"
 

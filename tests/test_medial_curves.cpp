@@ -6,16 +6,16 @@
 #include <cmath>
 #include <memory>
 
-#include "burn3/curve_distance.h"
-#include "burn3/discrete_burning_field.h"
-#include "burn3/medial_curves.h"
-#include "complex3/builders/convex_polyhedron_axis.h"
+#include "curves3/curve_distance.h"
+#include "burn3/discrete/discrete_burning_field.h"
+#include "curves3/medial_curves.h"
+#include "medial3/convex/convex_polyhedron_axis.h"
 #include "complex3/synthetic_complexes.h"
 #include "complex3/synthetic_tubes.h"
-#include "complex3/vec3.h"
+#include "geometry3/vec3.h"
 #include "io/complex_ma.h"
 #include "io/mesh_io.h"
-#include "medial2/union_find.h"
+#include "support/union_find.h"
 #include "test_complex3_support.h"
 
 using namespace grassfire;

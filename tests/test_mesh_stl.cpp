@@ -12,10 +12,10 @@
 #include <regex>
 #include <set>
 
-#include "complex3/builders/mesh_checks.h"
-#include "complex3/builders/mesh_embedding.h"
+#include "medial3/mesh/mesh_checks.h"
+#include "medial3/mesh/mesh_embedding.h"
 #include "complex3/complex_intersections.h"
-#include "complex3/exact_predicates3.h"
+#include "geometry3/exact_predicates3.h"
 #include "io/complex_text.h"
 #include "io/mesh_io.h"
 #include "io/mesh_weld.h"

@@ -7,7 +7,7 @@
 
 #include <random>
 
-#include "complex3/closest_point3.h"
+#include "geometry3/closest_point3.h"
 #include "complex3/point_location.h"
 #include "medial_complex_digest.h"
 #include "test_complex3_support.h"

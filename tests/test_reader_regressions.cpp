@@ -3,7 +3,7 @@
 // message that is now given instead.
 #include <catch2/catch.hpp>
 
-#include "complex3/builders/convex_polyhedron_axis.h"
+#include "medial3/convex/convex_polyhedron_axis.h"
 #include "complex3/medial_complex.h"
 #include "io/complex_json.h"
 #include "io/complex_ma.h"

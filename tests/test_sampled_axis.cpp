@@ -1,4 +1,4 @@
-// The Voronoi medial axis of boundary samples (medial2/sampled_axis.h) and the 2D pipeline.
+// The Voronoi medial axis of boundary samples (medial2/sampled/sampled_axis.h) and the 2D pipeline.
 #include <catch2/catch.hpp>
 
 #include <algorithm>
@@ -7,10 +7,10 @@
 
 #include "burn2/edf_definition.h"
 #include "geometry2/predicates2.h"
-#include "medial2/sampled_geometry.h"
+#include "medial2/sampled/sampled_geometry.h"
 #include "pipeline/edf2d.h"
 #include "shapes/builtin_shapes.h"
-#include "shapes/load_shape.h"
+#include "io/load_shape.h"
 #include "support.h"
 
 using namespace grassfire;

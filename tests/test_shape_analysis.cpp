@@ -5,8 +5,8 @@
 #include <cmath>
 #include <memory>
 
-#include "burn3/discrete_burning_field.h"
-#include "burn3/shape_analysis.h"
+#include "burn3/discrete/discrete_burning_field.h"
+#include "curves3/shape_analysis.h"
 #include "complex3/synthetic_complexes.h"
 #include "test_complex3_support.h"
 

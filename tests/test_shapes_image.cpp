@@ -13,7 +13,7 @@
 #include "io/image_raster.h"
 #include "pipeline/edf2d.h"
 #include "shapes/image_shape.h"
-#include "shapes/load_shape.h"
+#include "io/load_shape.h"
 #include "support.h"
 
 using namespace grassfire;

@@ -12,7 +12,7 @@
 #include "io/shape_json.h"
 #include "io/shape_wkt.h"
 #include "shapes/builtin_shapes.h"
-#include "shapes/load_shape.h"
+#include "io/load_shape.h"
 
 using namespace grassfire;
 

@@ -12,7 +12,7 @@
 
 #include "io/shape_format.h"
 #include "shapes/builtin_shapes.h"
-#include "shapes/load_shape.h"
+#include "io/load_shape.h"
 #include "shapes/validate_shape.h"
 
 using namespace grassfire;

@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "complex3/exact_predicates3.h"
+#include "geometry3/exact_predicates3.h"
 #include "complex3/raw_complex.h"
 
 namespace grassfire::testing {

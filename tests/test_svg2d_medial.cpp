@@ -1,4 +1,4 @@
-// Pictures of 2D results (io/svg_medial2.h): well-formed SVG, one element per drawn edge
+// Pictures of 2D results (render/svg_medial2.h): well-formed SVG, one element per drawn edge
 // piece, the EMA marker, the colour-bar range against the EDF computed from the fire entry
 // times, and `grassfire edf2d --svg`.
 #include <algorithm>
@@ -9,7 +9,7 @@
 #include <regex>
 #include <sstream>
 
-#include "io/svg_medial2.h"
+#include "render/svg_medial2.h"
 #include "pipeline/edf2d.h"
 #include "shapes/builtin_shapes.h"
 #include "support.h"

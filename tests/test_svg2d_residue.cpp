@@ -1,4 +1,4 @@
-// Pictures of scalars other than the burning's fields (io/svg_medial2.h: Medial2Scalar,
+// Pictures of scalars other than the burning's fields (render/svg_medial2.h: Medial2Scalar,
 // potential_residue_scalar, draw_medial2_scalar, medial2_panel_frame): PR along the exact
 // axis of the 10 x 4 rectangle against hand-derived values, PR constant on the edges of a
 // sampled axis, a field drawn as a scalar equal to draw_medial2, and the panel frame.
@@ -8,7 +8,7 @@
 
 #include "burn2/closest_points.h"
 #include "burn2/potential_residue.h"
-#include "io/svg_medial2.h"
+#include "render/svg_medial2.h"
 #include "pipeline/edf2d.h"
 #include "shapes/builtin_shapes.h"
 #include "support.h"

@@ -1,4 +1,4 @@
-// Pictures of pruned medial axes and the numbers of a pruning (io/svg_pruned2.h): the
+// Pictures of pruned medial axes and the numbers of a pruning (render/svg_pruned2.h): the
 // summary on a hand-built star and on blunt-sharp against hand-derived lengths and Betti
 // numbers, and what draw_pruned2 puts into the SVG (one polyline per chain of kept edges,
 // the faint axis, cut points, overlays, field colours, a tree shrunk to its EMA).
@@ -8,7 +8,7 @@
 #include <string>
 
 #include "burn2/extended_grassfire.h"
-#include "io/svg_pruned2.h"
+#include "render/svg_pruned2.h"
 #include "pipeline/edf2d.h"
 #include "shapes/builtin_shapes.h"
 #include "support.h"

@@ -8,8 +8,8 @@
 #include <random>
 #include <string>
 
-#include "complex3/builders/union_alpha_complex.h"
-#include "complex3/exact_predicates3.h"
+#include "medial3/balls/union_alpha_complex.h"
+#include "geometry3/exact_predicates3.h"
 #include "io/mesh_io.h"
 #include "union_axis_digest.h"
 

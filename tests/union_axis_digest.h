@@ -24,7 +24,7 @@
 #include <utility>
 #include <vector>
 
-#include "complex3/builders/union_of_balls_axis.h"
+#include "medial3/balls/union_of_balls_axis.h"
 #include "io/mesh_io.h"
 
 namespace grassfire::testing {

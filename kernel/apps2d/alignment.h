@@ -16,7 +16,7 @@
 // precision; the EMA point and the PR maximum are the double positions of certified
 // points (inside a parabolic arc placed by MedialGeometry::point_along, a double drawing
 // routine): centres are measurements, not decisions.
-// Contract: validated shapes (shapes/shape2.h); the burning was computed on the exact
+// Contract: validated shapes (geometry2/shape2.h); the burning was computed on the exact
 // polygon axis of the same shape. A shape with holes has an EMA made of cycles and no EMA
 // point, and PR is infinite between rings: those centres are then absent.
 // Complexity: centres O(n) after the axis; overlap O((n + k) log n) for n vertices and k
@@ -29,7 +29,7 @@
 
 #include "burn2/extended_grassfire.h"
 #include "shapes/resample.h"
-#include "shapes/shape2.h"
+#include "geometry2/shape2.h"
 
 namespace grassfire {
 

@@ -33,7 +33,7 @@
 
 #include "burn2/extended_grassfire.h"
 #include "medial2/medial_graph.h"
-#include "shapes/shape2.h"
+#include "geometry2/shape2.h"
 
 namespace grassfire {
 

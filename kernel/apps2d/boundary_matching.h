@@ -36,7 +36,7 @@
 #include <vector>
 
 #include "burn2/extended_grassfire.h"
-#include "shapes/shape2.h"
+#include "geometry2/shape2.h"
 
 namespace grassfire {
 

@@ -3,7 +3,7 @@
 // and lines joining marked samples of the first shape to the samples of the second that
 // the matching assigns them.
 //
-// Computes: SVG through io/svg_medial2.h's frame and heat colours (blue = low, red = high),
+// Computes: SVG through render/svg_medial2.h's frame and heat colours (blue = low, red = high),
 // each signature normalised by its own range. Display only, no decision.
 // Contract: each signature was sampled on the outer ring of its shape; `match` pairs
 // samples of a with samples of b (apps2d/boundary_matching.h). Complexity: O(samples).
@@ -14,7 +14,7 @@
 #include <vector>
 
 #include "apps2d/boundary_matching.h"
-#include "io/svg_medial2.h"
+#include "render/svg_medial2.h"
 
 namespace grassfire {
 

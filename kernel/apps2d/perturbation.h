@@ -11,7 +11,7 @@
 //     OneSided perturbs only the points with (p - c) . direction > 0, c the bounding-box
 //     centre, and leaves the others where they are;
 //  3. coordinates are rounded to `decimal_digits` decimals (so the exact polygon axis runs
-//     on integers, medial2/polygon_axis.h), rounding = 10^-digits bounds that move;
+//     on integers, medial2/polygon/polygon_axis.h), rounding = 10^-digits bounds that move;
 //  4. the result is validated (shapes/validate_shape.h); if the noise made it
 //     self-intersecting, steps 2-4 are redone with attempt + 1, up to `max_attempts`.
 // Guarantee: every point of the new boundary is within `amplitude` of the old boundary and
@@ -26,7 +26,7 @@
 
 #include <cstdint>
 
-#include "shapes/shape2.h"
+#include "geometry2/shape2.h"
 
 namespace grassfire {
 

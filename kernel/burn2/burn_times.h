@@ -11,7 +11,7 @@
 // Between (1) and (2), exact ties are looked for by value classes: the graph's geometry
 // names atoms (R at a node, an edge length) with provably equal values (for the exact
 // polygon axis, the atoms an exact symmetry of the polygon maps onto each other:
-// medial2/polygon_axis_symmetry.h). A record's class is hash-consed from its chain: an
+// medial2/polygon/polygon_axis_symmetry.h). A record's class is hash-consed from its chain: an
 // ignition's class from the radius class of its leaf, an advance's from (class of its
 // predecessor, length class of its edge), or from (class of its predecessor's
 // predecessor, joined length class) when the two edges are pieces of one curve through a

@@ -7,9 +7,9 @@
 #include <algorithm>
 #include <stdexcept>
 
-#include "medial2/disk_union_geometry.h"
-#include "medial2/polygon_axis_geometry.h"
-#include "medial2/sampled_geometry.h"
+#include "medial2/disks/disk_union_geometry.h"
+#include "medial2/polygon/polygon_axis_geometry.h"
+#include "medial2/sampled/sampled_geometry.h"
 #include "number/sqrt_field.h"
 
 namespace grassfire {

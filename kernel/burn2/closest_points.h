@@ -9,19 +9,19 @@
 // each as a ring, an arc length along the ring from its vertex 0 (in the ring's vertex
 // order; exact when the position is) and a certified enclosure of the point.
 // By axis:
-//  - sampled Voronoi axis (medial2/sampled_axis.h): a node's closest points are the
+//  - sampled Voronoi axis (medial2/sampled/sampled_axis.h): a node's closest points are the
 //    samples on its empty circle (its Delaunay triangle, or all samples of a cocircular
 //    group, found by a nearest-neighbour query and exact rational distance tests); an
 //    edge's generators are the two samples of its dual Delaunay edge, the samples common
 //    to its two end nodes. Sample k of a ring with m samples and exact perimeter L sits at
 //    arc length k L / m (shapes/resample.h places it there, up to double rounding); the
 //    generators do not move along an edge.
-//  - exact polygon axis (medial2/polygon_axis.h): a node's closest points are the feet
+//  - exact polygon axis (medial2/polygon/polygon_axis.h): a node's closest points are the feet
 //    of its defining sites (the vertex of a point site, the perpendicular foot on a
 //    segment site); an edge's generators are the feet of its two sites at each end, and
 //    move along the edge. Arc lengths are exact sums of square roots when the node's
 //    circle is (polygon edge lengths plus the foot's offset), enclosures otherwise.
-//  - union of disks (medial2/disk_union_axis.h): corners only (closest points of nodes
+//  - union of disks (medial2/disks/disk_union_axis.h): corners only (closest points of nodes
 //    and edge generators); arc lengths along circular arcs are not provided
 //    (has_arc_length is false), so no potential residue or boundary eccentricity.
 // Contract: g was built by one of those constructions (the sampled axis from `samples`
@@ -37,7 +37,7 @@
 #include "geometry2/lazy_point.h"
 #include "medial2/medial_graph.h"
 #include "shapes/resample.h"
-#include "shapes/shape2.h"
+#include "geometry2/shape2.h"
 
 namespace grassfire {
 

@@ -5,7 +5,7 @@
 #include <cmath>
 #include <stdexcept>
 
-#include "medial2/union_find.h"
+#include "support/union_find.h"
 
 namespace grassfire {
 

@@ -3,7 +3,7 @@
 
 #include <functional>
 
-#include "complex3/exact_predicates3.h"
+#include "geometry3/exact_predicates3.h"
 #include "number/exact_sum.h"
 
 namespace grassfire {

@@ -19,7 +19,7 @@
 #include <cstdint>
 #include <functional>
 
-#include "burn3/discrete_burning.h"
+#include "burn3/discrete/discrete_burning.h"
 #include "complex3/medial_complex.h"
 
 namespace grassfire {

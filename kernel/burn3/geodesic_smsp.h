@@ -29,8 +29,8 @@
 #include <memory>
 #include <vector>
 
-#include "complex3/exact_predicates3.h"
-#include "complex3/triangle_mesh.h"
+#include "geometry3/exact_predicates3.h"
+#include "geometry3/triangle_mesh.h"
 
 namespace grassfire {
 

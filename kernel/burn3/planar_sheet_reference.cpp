@@ -4,7 +4,7 @@
 #include <algorithm>
 #include <stdexcept>
 
-#include "complex3/exact_predicates3.h"
+#include "geometry3/exact_predicates3.h"
 
 namespace grassfire {
 namespace {

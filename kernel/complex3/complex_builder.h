@@ -9,7 +9,7 @@
 #include <map>
 #include <string>
 
-#include "complex3/exact_predicates3.h"
+#include "geometry3/exact_predicates3.h"
 #include "complex3/raw_complex.h"
 
 namespace grassfire {

@@ -5,7 +5,7 @@
 #include <numeric>
 #include <sstream>
 
-#include "complex3/exact_predicates3.h"
+#include "geometry3/exact_predicates3.h"
 
 namespace grassfire {
 namespace {

@@ -13,7 +13,7 @@
 #include <optional>
 #include <stdexcept>
 
-#include "complex3/exact_predicates3.h"
+#include "geometry3/exact_predicates3.h"
 
 namespace grassfire {
 namespace {

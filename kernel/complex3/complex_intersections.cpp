@@ -2,7 +2,7 @@
 // translation unit of complex3 that includes CGAL.
 #include "complex3/complex_intersections.h"
 
-#include "complex3/exact_predicates3.h"
+#include "geometry3/exact_predicates3.h"
 
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 #include <CGAL/box_intersection_d.h>

@@ -22,7 +22,7 @@
 #include <optional>
 #include <string>
 
-#include "complex3/filtered_predicates3.h"
+#include "geometry3/filtered_predicates3.h"
 #include "complex3/raw_complex.h"
 
 namespace grassfire {

@@ -57,8 +57,8 @@
 
 #include <memory>
 
-#include "complex3/exact_predicates3.h"
-#include "complex3/filtered_predicates3.h"
+#include "geometry3/exact_predicates3.h"
+#include "geometry3/filtered_predicates3.h"
 #include "complex3/raw_complex.h"
 
 namespace grassfire {

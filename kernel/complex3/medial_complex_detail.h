@@ -11,7 +11,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "complex3/filtered_predicates3.h"
+#include "geometry3/filtered_predicates3.h"
 #include "complex3/medial_complex.h"
 
 namespace grassfire {

@@ -6,8 +6,8 @@
 #include <limits>
 #include <stdexcept>
 
-#include "complex3/closest_point3.h"
-#include "complex3/filtered_predicates3.h"
+#include "geometry3/closest_point3.h"
+#include "geometry3/filtered_predicates3.h"
 
 namespace grassfire {
 namespace {

@@ -35,7 +35,7 @@
 #include <utility>
 #include <vector>
 
-#include "complex3/box_tree3.h"
+#include "geometry3/box_tree3.h"
 #include "complex3/medial_complex.h"
 #include "number/interval.h"
 

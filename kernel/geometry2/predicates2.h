@@ -23,7 +23,7 @@
 #include <vector>
 
 #include "geometry2/point2.h"
-#include "shapes/shape2.h"
+#include "geometry2/shape2.h"
 
 namespace grassfire {
 

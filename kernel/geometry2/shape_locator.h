@@ -13,7 +13,7 @@
 // on the segment's line counts as lying on its left), which is a consistent symbolic
 // perturbation of the segment, so the parity is right whenever the query point is not on
 // the boundary; boundary points are detected exactly first.
-// Contract: a validated Shape2 (shapes/shape2.h). Complexity: O(E + cells) to build; a
+// Contract: a validated Shape2 (geometry2/shape2.h). Complexity: O(E + cells) to build; a
 // query costs the number of edges in its cell (O(1) for evenly spread boundaries).
 #pragma once
 
@@ -22,7 +22,7 @@
 #include <vector>
 
 #include "geometry2/lazy_point.h"
-#include "shapes/shape2.h"
+#include "geometry2/shape2.h"
 
 namespace grassfire {
 

@@ -5,7 +5,7 @@
 #include <cmath>
 #include <sstream>
 
-#include "io/atomic_file.h"
+#include "support/atomic_file.h"
 #include "io/complex_text.h"
 
 namespace grassfire {

@@ -7,10 +7,10 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "io/atomic_file.h"
+#include "support/atomic_file.h"
 #include "io/complex_text.h"
 #include "io/json_text.h"
-#include "io/quoted.h"
+#include "support/quoted.h"
 
 namespace grassfire {
 namespace {

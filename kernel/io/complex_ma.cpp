@@ -6,9 +6,9 @@
 #include <sstream>
 #include <set>
 
-#include "io/atomic_file.h"
+#include "support/atomic_file.h"
 #include "io/complex_text.h"
-#include "io/quoted.h"
+#include "support/quoted.h"
 
 namespace grassfire {
 namespace {

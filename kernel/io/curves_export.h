@@ -1,4 +1,4 @@
-// curves_export.h -- medial curve graphs (burn3/medial_curves.h) as JSON and polylines.
+// curves_export.h -- medial curve graphs (curves3/medial_curves.h) as JSON and polylines.
 //
 // JSON, format "grassfire-curves3d", version 1 (later versions add members, never remove
 // or change one):
@@ -11,12 +11,12 @@
 //    "options": {"arrive_cosine", "depart_cosine", "time_margin", "min_et_fraction"}, "stats": {refinement and construction counts, seconds},
 //    "analysis": {"planar_tubularity", "planar_area", "tubular_area", "tubular_curve_length",
 //                 "planar_curve_length", "sheet_areas": [...], "curve_lengths": [...]}}
-// (burn3/shape_analysis.h: the split of 5.3 and the signature; lists sorted descending).
+// (curves3/shape_analysis.h: the split of 5.3 and the signature; lists sorted descending).
 // "bt" and "et" are null where the point never burns (BT = infinity); R is exact at the
 // axis' vertices and interpolated linearly elsewhere; numbers are doubles.
 // Polylines: each edge a 2-point line; scalars R, BT, ET per node (polyline_export.h).
 //
-// Burning paths (burn3/burning_paths.h), format "grassfire-paths3d", version 1:
+// Burning paths (curves3/burning_paths.h), format "grassfire-paths3d", version 1:
 //   {"format": "grassfire-paths3d", "version": 1, "input": NAME, "method": FIELD,
 //    "from": "vertices" | "curves" | "ends" | "points",
 //    "paths": [{"bt", "length", "points": [[x, y, z], ...]}, ...]}
@@ -29,9 +29,9 @@
 
 #include <string>
 
-#include "burn3/burning_paths.h"
-#include "burn3/medial_curves.h"
-#include "burn3/shape_analysis.h"
+#include "curves3/burning_paths.h"
+#include "curves3/medial_curves.h"
+#include "curves3/shape_analysis.h"
 #include "io/polyline_export.h"
 
 namespace grassfire {

@@ -6,7 +6,7 @@
 #include <fstream>
 #include <sstream>
 
-#include "io/quoted.h"
+#include "support/quoted.h"
 #include "number/exact_sum.h"
 
 namespace grassfire {

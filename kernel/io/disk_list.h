@@ -1,6 +1,6 @@
 // disk_list.h -- the disk-list text format: a planar shape given as a union of disks.
 //
-// Format (one disk per line, the input of medial2/disk_union_axis.h and of
+// Format (one disk per line, the input of medial2/disks/disk_union_axis.h and of
 // `grassfire edf2d --disks FILE`):
 //     # comment lines and blank lines are ignored; '#' also starts a trailing comment
 //     x y r

@@ -5,7 +5,7 @@
 #include <set>
 #include <vector>
 
-#include "io/quoted.h"
+#include "support/quoted.h"
 
 namespace grassfire {
 namespace {

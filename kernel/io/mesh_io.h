@@ -40,9 +40,9 @@
 
 #include <string>
 
-#include "complex3/ball_set.h"
+#include "geometry3/ball_set.h"
 #include "complex3/raw_complex.h"
-#include "complex3/triangle_mesh.h"
+#include "geometry3/triangle_mesh.h"
 
 namespace grassfire {
 

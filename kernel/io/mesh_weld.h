@@ -13,7 +13,7 @@
 // then renumbers the vertices in file order and records the file index of each one
 // (vertex_origin). Nothing else is repaired: zero-area triangles with three distinct
 // vertices, open edges, non-manifold edges or vertices and self-intersections are refused
-// by the solid checks (complex3/builders/mesh_checks.h), which name the file's elements,
+// by the solid checks (medial3/mesh/mesh_checks.h), which name the file's elements,
 // since dropping or moving anything there would change the solid.
 // Complexity: O(n log n) for n vertices and triangles; no floating-point arithmetic.
 #pragma once
@@ -22,7 +22,7 @@
 
 #include <string>
 
-#include "complex3/triangle_mesh.h"
+#include "geometry3/triangle_mesh.h"
 
 namespace grassfire {
 

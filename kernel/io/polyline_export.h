@@ -5,7 +5,7 @@
 // edge with the segments of every polyline) and legacy VTK (POLYDATA with POINTS, LINES,
 // one polyline per line, and POINT_DATA SCALARS). Infinite values are written "inf"
 // (ParaView and MeshLab read them with strtod). Every file is written whole or not at all
-// (io/atomic_file.h); malformed input (indices out of range, NaN, a field of the wrong
+// (support/atomic_file.h); malformed input (indices out of range, NaN, a field of the wrong
 // size or with a bad name) throws ComplexFormatError naming the file, before writing.
 #pragma once
 

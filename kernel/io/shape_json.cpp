@@ -6,7 +6,7 @@
 #include <stdexcept>
 
 #include "io/json_text.h"
-#include "io/quoted.h"
+#include "support/quoted.h"
 
 namespace grassfire {
 

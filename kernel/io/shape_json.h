@@ -7,7 +7,7 @@
 // Reading: nlohmann::json converts decimal numbers with strtod (correctly rounded); values
 // must be finite numbers. Errors (ShapeFormatError) start with the source and give the line
 // and column of a syntax error, or the element (e.g. "points[12].y") of a bad value.
-// The result is not validated: call validate_shape (or use shapes/load_shape.h).
+// The result is not validated: call validate_shape (or use io/load_shape.h).
 // Complexity: O(file size).
 #pragma once
 
@@ -15,7 +15,7 @@
 #include <string>
 
 #include "io/shape_format.h"
-#include "shapes/shape2.h"
+#include "geometry2/shape2.h"
 
 namespace grassfire {
 

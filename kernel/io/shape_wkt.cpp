@@ -6,7 +6,7 @@
 #include <cmath>
 #include <sstream>
 
-#include "io/quoted.h"
+#include "support/quoted.h"
 
 namespace grassfire {
 

@@ -17,7 +17,7 @@
 // Errors (ShapeFormatError): "<source>:<line>:<column>: <problem>", 1-based positions.
 // Writing: POLYGON with one ring per line, each closed, coordinates printed as the shortest
 // decimals that read back exactly, so write then read returns the same doubles.
-// The result is not validated: call validate_shape (or use shapes/load_shape.h).
+// The result is not validated: call validate_shape (or use io/load_shape.h).
 // Complexity: O(file size).
 #pragma once
 
@@ -25,7 +25,7 @@
 #include <string>
 
 #include "io/shape_format.h"
-#include "shapes/shape2.h"
+#include "geometry2/shape2.h"
 
 namespace grassfire {
 

@@ -68,7 +68,7 @@ class MedialGeometry {
   // Value classes: two nodes with the same radius_class have provably equal R, two edges
   // with the same length_class provably equal lengths (the class is the id of a member).
   // By default every atom is its own class; the exact polygon axis merges the atoms that
-  // an exact symmetry of the polygon maps onto each other (medial2/polygon_axis_symmetry.h).
+  // an exact symmetry of the polygon maps onto each other (medial2/polygon/polygon_axis_symmetry.h).
   virtual std::uint32_t radius_class(std::uint32_t node) const { return node; }
   virtual std::uint32_t length_class(std::uint32_t edge) const { return edge; }
   // For two edges that meet at a degree-2 node and are pieces of one curve (the same

@@ -9,7 +9,7 @@
 // the basis, e.g. sqrt 8 = 2 sqrt 2, sqrt 6 = sqrt 2 sqrt 3 / 1 when 2 and 3 are in it), so
 // the formal ring is the field of degree 2^k (Besicovitch) and a nonzero number has a
 // nonzero norm. Used for Voronoi vertices of boundary corners of a union of disks
-// (medial2/disk_union_axis.h), whose coordinates lie in such fields.
+// (medial2/disks/disk_union_axis.h), whose coordinates lie in such fields.
 // Also: root_of_sum(x) = sqrt(x) as an ExactSum when it denests, else a certified
 // constant whose identity is the canonical text of x (canonical_roots below).
 // Contract: generators are positive rationals; at most kMaxGenerators of them.

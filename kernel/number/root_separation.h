@@ -4,7 +4,7 @@
 // Computes: the sign of x = q + sum_j c_j sqrt(s_j) + sum_i d_i sqrt(E_i), with rationals
 // q, c_j, d_i, s_j >= 0 and radicands E_i >= 0 that are themselves constant-free sums
 // (CertifiedConstant::radicand(), e.g. number/sqrt_field.h's sqrt_constant): the values of
-// nested radicals such as PSS circles and bisector lengths (medial2/voronoi_circle.h).
+// nested radicals such as PSS circles and bisector lengths (medial2/polygon/voronoi_circle.h).
 // Method: x lies in K = Q(sqrt a_1, .., sqrt a_k, sqrt E_1, .., sqrt E_G), where a_1..a_k
 // are the square classes of every rational radicand (those inside the E_i included) and
 // E_i that are rational multiples of one another count once (sqrt(t E) = sqrt(t) sqrt(E)).

@@ -42,7 +42,7 @@ std::shared_ptr<const CertifiedConstant> sqrt_constant(ExactSum x);
 ExactSum sqrt_term(const ExactSum& x);
 // a * b where a may also hold square roots of sums (sqrt_constant, sqrt_term) and b holds
 // no constants: c sqrt(s) * d sqrt(E) = c d sqrt(s E), written with sqrt_term. Keeps nested
-// radicals such as PSS circles (medial2/voronoi_circle.h) in the form that
+// radicals such as PSS circles (medial2/polygon/voronoi_circle.h) in the form that
 // number/root_separation.h decides. Throws std::invalid_argument for any other constant.
 ExactSum multiply_radical(const ExactSum& a, const ExactSum& b);
 // Exact sign of a sum without constants (never uncertified).

@@ -8,7 +8,7 @@
 #include "burn3/point_sources.h"
 #include "complex3/point_location.h"
 #include "io/complex_text.h"
-#include "io/progress.h"
+#include "support/progress.h"
 #include "pipeline/complex_input.h"
 
 namespace grassfire {

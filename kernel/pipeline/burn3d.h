@@ -15,7 +15,7 @@
 //    "BT_error" (methods with a certified two-sided bound: exact)}}
 // with null for BT, ET and BT_error where nothing burns.
 // Order of the checks (the program's messages depend on it): the method name, the
-// complex, the spacing, the sources, the queries. Progress on stderr follows io/progress.h.
+// complex, the spacing, the sources, the queries. Progress on stderr follows support/progress.h.
 // Contract: errors are exceptions whose message names the input and the problem
 // (std::invalid_argument for a bad method or spacing); nothing is returned then.
 // Complexity: that of the builder (for shapes), O(cells) per located point plus exact

@@ -3,8 +3,8 @@
 #include <limits>
 #include <sstream>
 
-#include "burn3/discrete_burning.h"
-#include "burn3/discrete_query.h"
+#include "burn3/discrete/discrete_burning.h"
+#include "burn3/discrete/discrete_query.h"
 #include "pipeline/burn3d_methods.h"
 
 namespace grassfire {

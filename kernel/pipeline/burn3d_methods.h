@@ -57,7 +57,7 @@ struct BurnOutcome {
   std::string summary;
 };
 
-// Dijkstra over vertices and Steiner points (burn3/discrete_burning.h, discrete_query.h).
+// Dijkstra over vertices and Steiner points (burn3/discrete/discrete_burning.h, discrete_query.h).
 BurnOutcome burn_by_discrete(const BurnRequest& request);
 // The exact window-propagation engine (issue 8); pipeline/burn3d_exact.cpp.
 BurnOutcome burn_by_exact(const BurnRequest& request);

@@ -3,13 +3,13 @@
 
 #include <stdexcept>
 
-#include "complex3/builders/medial_axis_input.h"
+#include "pipeline/medial_axis_input.h"
 #include "complex3/synthetic_complexes.h"
 #include "io/complex_json.h"
 #include "io/complex_ma.h"
 #include "io/mesh_io.h"
 #include "io/mesh_weld.h"
-#include "io/progress.h"
+#include "support/progress.h"
 
 namespace grassfire {
 namespace {

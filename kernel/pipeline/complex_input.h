@@ -3,7 +3,7 @@
 // INPUT is a synthetic complex name (synthetic_complexes.h), a grassfire-complex JSON file
 // (.json, io/complex_json.h), a .ma medial axis, a mesh burned as itself
 // (mesh_is_complex, .off/.ply/.obj), or a shape whose medial axis is built as
-// `grassfire medial3d` builds it (complex3/builders/medial_axis_input.h: convex meshes and
+// `grassfire medial3d` builds it (pipeline/medial_axis_input.h: convex meshes and
 // half-spaces exactly, ball lists exactly, other closed meshes through their inner polar
 // balls). Errors name the input; nothing is written. `grassfire burn3d`, `grassfire complex`
 // and the Python module's grassfire.burn3d read their INPUT through it.

@@ -3,7 +3,7 @@
 
 #include <stdexcept>
 
-#include "io/cpu_clock.h"
+#include "support/cpu_clock.h"
 
 namespace grassfire {
 

@@ -1,12 +1,12 @@
 // edf2d.h -- the whole 2D pipeline: shape -> samples -> medial axis -> EDF, EMA, ET, ST.
 //
 // Computes: for a validated shape, its medial axis, either from uniform arc-length
-// boundary samples (shapes/resample.h, medial2/sampled_axis.h) or exactly for the polygon
-// (medial2/polygon_axis.h) -- or exactly for a union of disks (medial2/disk_union_axis.h,
+// boundary samples (shapes/resample.h, medial2/sampled/sampled_axis.h) or exactly for the polygon
+// (medial2/polygon/polygon_axis.h) -- or exactly for a union of disks (medial2/disks/disk_union_axis.h,
 // from options.disks; the shape is then unused) -- then the extended grassfire on it
 // (burn2/extended_grassfire.h) and the node measures (burn2/measures.h), with timings.
 // This is what `grassfire edf2d`, the benchmark, the figures and the proof checks run.
-// Contract: a validated Shape2 (shapes/load_shape.h gives one).
+// Contract: a validated Shape2 (io/load_shape.h gives one).
 // Complexity: O(n log n) for n samples.
 #pragma once
 
@@ -15,9 +15,9 @@
 
 #include "burn2/extended_grassfire.h"
 #include "burn2/measures.h"
-#include "medial2/disk_union_axis.h"
-#include "medial2/polygon_axis.h"
-#include "medial2/sampled_axis.h"
+#include "medial2/disks/disk_union_axis.h"
+#include "medial2/polygon/polygon_axis.h"
+#include "medial2/sampled/sampled_axis.h"
 #include "shapes/resample.h"
 
 namespace grassfire {
@@ -34,7 +34,7 @@ struct Edf2dOptions {
   const DiskList* disks = nullptr;        // AxisMethod::DiskUnion
 };
 
-// Thread CPU seconds per stage (io/cpu_clock.h).
+// Thread CPU seconds per stage (support/cpu_clock.h).
 struct Edf2dTimings {
   double resample = 0, delaunay = 0, axis = 0, burn = 0, measures = 0;
   double total() const { return resample + delaunay + axis + burn + measures; }

@@ -18,7 +18,7 @@
 #include "pipeline/edf2d_json.h"
 #include "python_values.h"
 #include "shapes/image_shape.h"
-#include "shapes/load_shape.h"
+#include "io/load_shape.h"
 
 namespace py = pybind11;
 

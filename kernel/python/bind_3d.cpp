@@ -16,7 +16,7 @@
 #include <string>
 
 #include "bindings.h"
-#include "complex3/builders/medial_axis_input.h"
+#include "pipeline/medial_axis_input.h"
 #include "complex3/medial_complex.h"
 #include "io/complex_text.h"
 #include "pipeline/burn3d.h"

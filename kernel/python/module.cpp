@@ -13,7 +13,7 @@
 
 #include "bindings.h"
 #include "grassfire_version.h"
-#include "io/progress.h"
+#include "support/progress.h"
 
 namespace py = pybind11;
 

@@ -14,7 +14,7 @@
 #include <string>
 #include <vector>
 
-#include "shapes/shape2.h"
+#include "geometry2/shape2.h"
 
 namespace grassfire {
 

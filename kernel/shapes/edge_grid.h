@@ -26,7 +26,7 @@
 #include <vector>
 
 #include "geometry2/predicates2.h"
-#include "shapes/shape2.h"
+#include "geometry2/shape2.h"
 
 namespace grassfire {
 

@@ -22,7 +22,7 @@
 //     pixel centres (marching squares with the same saddle rule): the polygon through the
 //     midpoints of the pixel-boundary edges, every corner cut.
 //   Collinear vertices are merged. The outer ring is counter-clockwise, holes (background
-//   components enclosed by the foreground) clockwise; the result satisfies shapes/shape2.h.
+//   components enclosed by the foreground) clockwise; the result satisfies geometry2/shape2.h.
 // Invariant (tests check it exactly): a pixel centre lies inside the shape iff the pixel
 // is foreground (of the kept component), in both contour modes.
 // Errors: ImageShapeError naming the source: no foreground pixel, several components
@@ -36,7 +36,7 @@
 #include <string>
 
 #include "io/image_raster.h"
-#include "shapes/shape2.h"
+#include "geometry2/shape2.h"
 
 namespace grassfire {
 

@@ -28,7 +28,7 @@
 #include <cstddef>
 #include <vector>
 
-#include "shapes/shape2.h"
+#include "geometry2/shape2.h"
 
 namespace grassfire {
 

@@ -1,4 +1,4 @@
-// validate_shape.h -- exact check of the Shape2 contract (shapes/shape2.h), and normalization.
+// validate_shape.h -- exact check of the Shape2 contract (geometry2/shape2.h), and normalization.
 //
 // Computes: whether a shape is a valid planar polygon with holes: at least one ring, finite
 // coordinates, every ring with at least 3 vertices, every ring simple, no two rings
@@ -41,7 +41,7 @@
 
 #include "geometry2/predicates2.h"
 #include "number/interval.h"
-#include "shapes/shape2.h"
+#include "geometry2/shape2.h"
 
 namespace grassfire {
 

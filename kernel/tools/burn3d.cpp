@@ -5,8 +5,8 @@
 // queries (--at, x,y,z), locating each exactly on the complex (complex3/point_location.h:
 // a source must lie on it, a query snaps to its nearest point); burn by the chosen method
 // (pipeline/burn3d_methods.h). This file writes every output through a temporary file
-// renamed when complete (io/atomic_file.h), so a failure leaves no partial file. Long
-// stages report progress on stderr (io/progress.h).
+// renamed when complete (support/atomic_file.h), so a failure leaves no partial file. Long
+// stages report progress on stderr (support/progress.h).
 //
 // --csv OUT: header `x,y,z,bt,bt_error,snap`, one row per query in query order; x,y,z
 // are the query's own text; bt is the burning time at the located point (`inf` where it
@@ -18,7 +18,7 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
-#include "io/atomic_file.h"
+#include "support/atomic_file.h"
 #include "io/complex_export.h"
 #include "io/complex_text.h"
 #include "io/point_csv.h"
@@ -61,8 +61,8 @@ int run_burn3d(int argc, char** argv) {
       .option("ply", "OUT", "write the complex with per-vertex R, BT, ET as PLY")
       .option("vtk", "OUT", "write the complex with per-vertex R, BT, ET as legacy VTK")
       .option("json", "OUT", "write a JSON report (counts, timings, per-vertex x y z R BT ET; null = never burns)")
-      .epilog("The discrete method over-estimates BT by O(h) (kernel/burn3/discrete_burning.h); at --at points its\n"
-              "bt is an upper bound from the graph points of the point's triangles (kernel/burn3/discrete_query.h).\n"
+      .epilog("The discrete method over-estimates BT by O(h) (kernel/burn3/discrete/discrete_burning.h); at --at points its\n"
+              "bt is an upper bound from the graph points of the point's triangles (kernel/burn3/discrete/discrete_query.h).\n"
               "The exact method returns certified enclosures: |bt - BT| <= bt_error at every query and vertex\n"
               "(--json: vertex_values.BT_error, stats.certification per stage, stats.uncertified; on singular\n"
               "curves stats.kinks, stats.merges, stats.quenches, stats.tangents as {x,y,z,bt,error} and stats.unclassified_switches).\n"

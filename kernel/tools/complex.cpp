@@ -6,7 +6,7 @@
 #include "io/complex_export.h"
 #include "io/complex_json.h"
 #include "io/complex_ma.h"
-#include "io/progress.h"
+#include "support/progress.h"
 #include "pipeline/complex_input.h"
 #include "tools/commands.h"
 #include "tools/options.h"

@@ -1,21 +1,21 @@
 // curves3d.cpp -- `grassfire curves3d`: medial curves of a 3D medial axis (5.1.2).
 //
 // Builds the complex and its burning field (tools/field_input.h), the medial curve graph
-// (burn3/medial_curves.h), validates it (1-dimensional, in the axis, the axis' b0 and b1),
-// splits the axis into planar and tubular parts (burn3/shape_analysis.h, 5.3) and only then
+// (curves3/medial_curves.h), validates it (1-dimensional, in the axis, the axis' b0 and b1),
+// splits the axis into planar and tubular parts (curves3/shape_analysis.h, 5.3) and only then
 // writes the outputs, each whole or not at all: --json (format grassfire-curves3d with the
 // analysis, io/curves_export.h), --ply and --vtk (polylines with R, BT, ET), and for a mesh
 // input --surface-ply / --surface-vtk: the mesh with BT, ET, R of the medial ball touching
 // each vertex (Fig. 5.5).
 #include <iostream>
 
-#include "burn3/medial_curves.h"
-#include "burn3/shape_analysis.h"
+#include "curves3/medial_curves.h"
+#include "curves3/shape_analysis.h"
 #include "complex3/medial_complex.h"
 #include "io/complex_export.h"
 #include "io/complex_text.h"
 #include "io/mesh_io.h"
-#include "io/atomic_file.h"
+#include "support/atomic_file.h"
 #include "io/curves_export.h"
 #include "tools/commands.h"
 #include "pipeline/complex_input.h"

@@ -3,13 +3,13 @@
 #include <iostream>
 #include <sstream>
 
-#include "io/atomic_file.h"
+#include "support/atomic_file.h"
 #include "io/disk_list.h"
-#include "io/svg_medial2.h"
+#include "render/svg_medial2.h"
 #include "pipeline/edf2d.h"
 #include "pipeline/edf2d_json.h"
 #include "shapes/builtin_shapes.h"
-#include "shapes/load_shape.h"
+#include "io/load_shape.h"
 #include "tools/commands.h"
 #include "tools/options.h"
 

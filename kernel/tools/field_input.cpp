@@ -5,7 +5,7 @@
 #include <optional>
 #include <stdexcept>
 
-#include "burn3/discrete_burning_field.h"
+#include "burn3/discrete/discrete_burning_field.h"
 #include "burn3/exact/exact_burning_field.h"
 #include "pipeline/burn3d.h"
 #include "pipeline/complex_input.h"

@@ -3,8 +3,8 @@
 // Declares the options shared by those commands (--method, --spacing, --max-points,
 // --mesh-is-complex) and builds, from INPUT (pipeline/complex_input.h), the validated
 // MedialComplex and a BurningField over it (burn3/burning_field.h): `discrete` runs the
-// baseline (burn3/discrete_burning.h) with the Steiner spacing h (default: 1/100 of the
-// bounding box diagonal) and wraps it (burn3/discrete_burning_field.h); `exact` runs the
+// baseline (burn3/discrete/discrete_burning.h) with the Steiner spacing h (default: 1/100 of the
+// bounding box diagonal) and wraps it (burn3/discrete/discrete_burning_field.h); `exact` runs the
 // window-propagation engine from the border ignition (burn3/exact/exact_burning.h; refused
 // on complexes it cannot burn as Definition 9 unless --singular-walls) and wraps it
 // (burn3/exact/exact_burning_field.h), with --spacing the spacing of the edge points at
@@ -16,7 +16,7 @@
 #include <string>
 
 #include "burn3/burning_field.h"
-#include "burn3/discrete_burning.h"
+#include "burn3/discrete/discrete_burning.h"
 #include "burn3/exact/exact_burning.h"
 #include "tools/options.h"
 

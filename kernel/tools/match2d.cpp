@@ -17,10 +17,10 @@
 
 #include "apps2d/boundary_matching.h"
 #include "apps2d/match_svg.h"
-#include "io/atomic_file.h"
+#include "support/atomic_file.h"
 #include "pipeline/edf2d.h"
 #include "shapes/builtin_shapes.h"
-#include "shapes/load_shape.h"
+#include "io/load_shape.h"
 #include "tools/commands.h"
 #include "tools/options.h"
 

@@ -2,12 +2,12 @@
 #include <fstream>
 #include <iostream>
 
-#include "complex3/builders/medial_axis_input.h"
+#include "pipeline/medial_axis_input.h"
 #include "complex3/medial_complex.h"
 #include "io/complex_export.h"
 #include "io/complex_json.h"
 #include "io/complex_ma.h"
-#include "io/progress.h"
+#include "support/progress.h"
 #include "tools/commands.h"
 #include "tools/options.h"
 

@@ -1,7 +1,7 @@
 // options.cpp -- see options.h.
 #include "tools/options.h"
 
-#include "io/progress.h"
+#include "support/progress.h"
 
 #include <cerrno>
 #include <cmath>

@@ -5,7 +5,7 @@
 // false with exit code 0; a malformed command line prints the usage and an error and
 // returns false with exit code 2. Values are checked when read (integers, reals).
 // Every command also takes --quiet (nothing but errors) and --progress (progress lines on
-// stderr even when it is not a terminal); parse() sets the verbosity of io/progress.h.
+// stderr even when it is not a terminal); parse() sets the verbosity of support/progress.h.
 #pragma once
 
 #include <map>

@@ -1,8 +1,8 @@
 // paths3d.cpp -- `grassfire paths3d`: burning paths on a 3D medial axis (5.1.2, Fig. 5.2).
 //
 // Builds the complex and its burning field (tools/field_input.h), then the burning paths
-// of the chosen points (burn3/burning_paths.h): every vertex, every node of the medial
-// curves (burn3/medial_curves.h; the curves are validated first), the paths that end on
+// of the chosen points (curves3/burning_paths.h): every vertex, every node of the medial
+// curves (curves3/medial_curves.h; the curves are validated first), the paths that end on
 // the curves (one per arriving side at a node on an edge), or the points of a CSV file
 // (header x,y,z; io/point_csv.h), each located exactly at its nearest point of the complex
 // (complex3/point_location.h). Outputs (each written whole or not at all): --json (format grassfire-paths3d,
@@ -12,8 +12,8 @@
 #include <iostream>
 #include <sstream>
 
-#include "burn3/burning_paths.h"
-#include "io/atomic_file.h"
+#include "curves3/burning_paths.h"
+#include "support/atomic_file.h"
 #include "io/complex_text.h"
 #include "io/curves_export.h"
 #include "io/point_csv.h"

@@ -19,12 +19,12 @@
 #include <nlohmann/json.hpp>
 
 #include "burn2/axis_pruning.h"
-#include "io/atomic_file.h"
+#include "support/atomic_file.h"
 #include "io/disk_list.h"
-#include "medial2/union_find.h"
+#include "support/union_find.h"
 #include "pipeline/edf2d.h"
 #include "shapes/builtin_shapes.h"
-#include "shapes/load_shape.h"
+#include "io/load_shape.h"
 #include "tools/commands.h"
 #include "tools/options.h"
 

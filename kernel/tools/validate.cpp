@@ -2,7 +2,7 @@
 #include <cstdio>
 #include <iostream>
 
-#include "shapes/load_shape.h"
+#include "io/load_shape.h"
 #include "tools/commands.h"
 #include "tools/options.h"
 

@@ -7,9 +7,9 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "complex3/builders/convex_polyhedron_axis.h"
-#include "complex3/builders/mesh_checks.h"
-#include "complex3/builders/union_of_balls_axis.h"
+#include "medial3/convex/convex_polyhedron_axis.h"
+#include "medial3/mesh/mesh_checks.h"
+#include "medial3/balls/union_of_balls_axis.h"
 #include "complex3/medial_complex.h"
 #include "io/complex_json.h"
 #include "io/complex_ma.h"
@@ -17,7 +17,7 @@
 #include "io/mesh_io.h"
 #include "io/shape_json.h"
 #include "io/shape_wkt.h"
-#include "medial2/disk_union_axis.h"
+#include "medial2/disks/disk_union_axis.h"
 #include "shapes/validate_shape.h"
 
 namespace grassfire::fuzz {

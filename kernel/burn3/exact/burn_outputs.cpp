@@ -7,7 +7,7 @@
 #include <map>
 #include <sstream>
 
-#include "io/atomic_file.h"
+#include "support/atomic_file.h"
 #include "number/exact_sum.h"
 
 namespace grassfire {

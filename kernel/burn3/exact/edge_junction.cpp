@@ -42,7 +42,7 @@
 
 #include "burn3/exact/junction_kinks.h"
 #include "burn3/exact/window_propagation.h"
-#include "complex3/exact_predicates3.h"
+#include "geometry3/exact_predicates3.h"
 #include "number/sqrt_field.h"
 
 namespace grassfire {

@@ -7,7 +7,7 @@
 #include <string>
 
 #include "burn3/exact/window_values.h"
-#include "complex3/exact_predicates3.h"
+#include "geometry3/exact_predicates3.h"
 #include "number/sqrt_field.h"
 
 namespace grassfire {

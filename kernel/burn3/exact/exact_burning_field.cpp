@@ -7,8 +7,8 @@
 #include <stdexcept>
 
 #include "burn3/exact/window_values.h"
-#include "complex3/exact_predicates3.h"
-#include "complex3/vec3.h"
+#include "geometry3/exact_predicates3.h"
+#include "geometry3/vec3.h"
 
 namespace grassfire {
 

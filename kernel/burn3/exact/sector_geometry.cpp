@@ -4,7 +4,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "complex3/exact_predicates3.h"
+#include "geometry3/exact_predicates3.h"
 #include "number/ball_exact_sum.h"
 
 namespace grassfire {

@@ -3,7 +3,7 @@
 
 #include <stdexcept>
 
-#include "complex3/exact_predicates3.h"
+#include "geometry3/exact_predicates3.h"
 #include "number/ball_exact_sum.h"
 #include "number/sqrt_field.h"
 

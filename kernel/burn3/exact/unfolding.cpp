@@ -4,8 +4,8 @@
 #include <cmath>
 #include <stdexcept>
 
-#include "complex3/exact_predicates3.h"
-#include "medial2/union_find.h"
+#include "geometry3/exact_predicates3.h"
+#include "support/union_find.h"
 #include "number/ball_exact_sum.h"
 #include "number/exact_sum.h"
 #include "number/sqrt_field.h"

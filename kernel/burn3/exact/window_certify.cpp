@@ -6,7 +6,7 @@
 #include <stdexcept>
 
 #include "burn3/exact/window_values.h"
-#include "complex3/exact_predicates3.h"
+#include "geometry3/exact_predicates3.h"
 #include "number/ball_exact_sum.h"
 #include "number/sqrt_field.h"
 

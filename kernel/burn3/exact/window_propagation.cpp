@@ -8,7 +8,7 @@
 
 #include "burn3/exact/sources.h"
 #include "burn3/exact/window_values.h"
-#include "complex3/exact_predicates3.h"
+#include "geometry3/exact_predicates3.h"
 
 namespace grassfire {
 

@@ -3,7 +3,7 @@
 // at R = 0, 2 sqrt 2 along the corner branch, 3 along the middle segment).
 #include <grassfire/grassfire_version.h>
 #include <grassfire/pipeline/edf2d.h>
-#include <grassfire/shapes/load_shape.h>
+#include <grassfire/io/load_shape.h>
 
 #include <cmath>
 #include <cstdio>

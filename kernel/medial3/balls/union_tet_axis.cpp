@@ -1,0 +1,466 @@
+// union_tet_axis.cpp -- see union_tet_axis.h.
+#include "medial3/balls/union_tet_axis.h"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <memory>
+#include <numeric>
+#include <stdexcept>
+
+#include "geometry3/exact_predicates3.h"
+
+namespace grassfire {
+
+namespace {
+
+using Box = std::array<Interval, 3>;
+
+Interval squared_distance(const Box& a, const Box& b) {
+  Interval s(0.0);
+  for (int k = 0; k < 3; ++k) s += square(a[k] - b[k]);
+  return s;
+}
+
+Box enclose_point(const ExactPoint3& p) { return {enclose(p.x), enclose(p.y), enclose(p.z)}; }
+
+// A uniform grid over the boundary vertices, for box queries.
+class PointGrid {
+ public:
+  explicit PointGrid(const std::vector<BoundaryVertex>& points) {
+    lo_ = {INFINITY, INFINITY, INFINITY};
+    std::array<double, 3> hi{-INFINITY, -INFINITY, -INFINITY};
+    for (const BoundaryVertex& v : points)
+      for (int k = 0; k < 3; ++k) {
+        lo_[k] = std::min(lo_[k], v.approx[k].lo);
+        hi[k] = std::max(hi[k], v.approx[k].hi);
+      }
+    double extent = 0;
+    for (int k = 0; k < 3; ++k) extent = std::max(extent, hi[k] - lo_[k]);
+    h_ = std::max(extent / std::max(1.0, std::cbrt(static_cast<double>(points.size()))), 1e-300);
+    for (int k = 0; k < 3; ++k) dims_[k] = static_cast<long>((hi[k] - lo_[k]) / h_) + 1;
+    cells_.resize(static_cast<std::size_t>(dims_[0] * dims_[1] * dims_[2]));
+    for (std::uint32_t i = 0; i < points.size(); ++i) cells_[cell_of(points[i].approx)].push_back(i);
+  }
+
+  template <class F>
+  void visit(const std::array<double, 3>& lo, const std::array<double, 3>& hi, F f) const {
+    std::array<long, 3> a, b;
+    for (int k = 0; k < 3; ++k) {
+      a[k] = clamp_index(k, std::floor((lo[k] - lo_[k]) / h_) - 1);
+      b[k] = clamp_index(k, std::floor((hi[k] - lo_[k]) / h_) + 1);
+    }
+    for (long x = a[0]; x <= b[0]; ++x)
+      for (long y = a[1]; y <= b[1]; ++y)
+        for (long z = a[2]; z <= b[2]; ++z)
+          for (std::uint32_t i : cells_[static_cast<std::size_t>((x * dims_[1] + y) * dims_[2] + z)]) f(i);
+  }
+  double spacing() const { return h_; }
+
+ private:
+  long clamp_index(int k, double i) const { return static_cast<long>(std::clamp(i, 0.0, static_cast<double>(dims_[k] - 1))); }
+  std::size_t cell_of(const Box& p) const {
+    long i[3];
+    for (int k = 0; k < 3; ++k) i[k] = clamp_index(k, std::floor((p[k].mid() - lo_[k]) / h_));
+    return static_cast<std::size_t>((i[0] * dims_[1] + i[1]) * dims_[2] + i[2]);
+  }
+  std::array<double, 3> lo_;
+  double h_ = 1;
+  std::array<long, 3> dims_{1, 1, 1};
+  std::vector<std::vector<std::uint32_t>> cells_;
+};
+
+struct PlaneInfo {
+  bool bisector = false;
+  std::array<std::uint32_t, 3> face{};  // balls of a tetrahedron face
+  std::uint32_t v = 0, u = 0;           // bisector of boundary vertices v (kept side) and u
+};
+
+struct VertexKey {
+  std::vector<std::uint32_t> feature, equidistant;
+  std::uint32_t collision = 0;
+  bool operator<(const VertexKey& o) const {
+    return std::tie(feature, equidistant, collision) < std::tie(o.feature, o.equidistant, o.collision);
+  }
+};
+
+bool contains(const std::array<std::uint32_t, 3>& set, std::uint32_t x) {
+  return std::find(set.begin(), set.end(), x) != set.end();
+}
+
+bool boxes_overlap(const Box& a, const Box& b) {
+  for (int k = 0; k < 3; ++k)
+    if (a[k].hi < b[k].lo || b[k].hi < a[k].lo) return false;
+  return true;
+}
+
+// The exact bisector planes of boundary vertices, made on first use: most planes are only
+// ever evaluated by the interval filter, and the axis vertices keep their planes beyond
+// the builder's life (LazyPoint3), so the field is shared. Not thread-safe.
+class BisectorField {
+ public:
+  BisectorField(const std::vector<BoundaryVertex>& boundary, const RadicalTable& table)
+      : boundary_(boundary), table_(&table), made_(boundary.size()) {}
+
+  // |x - v|^2 <= |x - u|^2  <=>  2 (u - v) . x + |v|^2 - |u|^2 <= 0.
+  CellPlane::Coefficients bisector(std::uint32_t v, std::uint32_t u) const {
+    const Entry& p = entry(v);
+    const Entry& q = entry(u);
+    return {(q.x[0] - p.x[0]) * mpq_class(2), (q.x[1] - p.x[1]) * mpq_class(2), (q.x[2] - p.x[2]) * mpq_class(2),
+            p.norm2 - q.norm2};
+  }
+
+ private:
+  struct Entry {
+    std::array<RadicalNumber, 3> x;
+    RadicalNumber norm2;
+  };
+  const Entry& entry(std::uint32_t i) const {
+    if (!made_[i]) {
+      const BoundaryVertex& v = boundary_[i];
+      // |v|^2 = |z|^2 + s |n|^2 + 2 side sqrt(s) z . n
+      made_[i] = std::make_unique<Entry>(Entry{
+          v.coordinates(*table_), v.rational ? RadicalNumber(dot(v.point, v.point))
+                                             : RadicalNumber(dot(v.z, v.z) + v.s * dot(v.n, v.n)) +
+                                                   RadicalNumber::root(*table_, v.radical, 2 * v.side * dot(v.z, v.n))});
+    }
+    return *made_[i];
+  }
+  std::vector<BoundaryVertex> boundary_;
+  const RadicalTable* table_;
+  mutable std::vector<std::unique_ptr<Entry>> made_;
+};
+
+// The per-run state: boundary vertices, the global vertex table and the polygons.
+class Builder {
+ public:
+  Builder(const BallSet& balls, const AlphaComplex& k, const std::vector<BoundaryVertex>& boundary,
+          const RadicalTable& table, bool reach)
+      : balls_(balls), k_(k), boundary_(boundary), grid_(boundary),
+        field_(std::make_shared<const BisectorField>(boundary, table)), reach_(reach) {}
+
+  TetAxis run() {
+    for (std::uint32_t t : k_.of_dimension(3))
+      if (k_.in_complex(t)) process_tetrahedron(k_.simplices()[t]);
+    merge_coincident();
+    drop_duplicate_polygons();
+    return std::move(out_);
+  }
+
+ private:
+  std::vector<std::uint32_t> feature_of(const CellVertex& x) const {
+    bool first = true;
+    std::vector<std::uint32_t> f;
+    for (std::uint32_t p : x.support) {
+      const PlaneInfo& info = info_[p];
+      if (info.bisector) continue;
+      if (first) {
+        f.assign(info.face.begin(), info.face.end());
+        first = false;
+      } else {
+        f.erase(std::remove_if(f.begin(), f.end(), [&](std::uint32_t b) { return !contains(info.face, b); }), f.end());
+      }
+    }
+    return f;
+  }
+
+  // The bisector of v and u contains the face through x when every ball of that face has
+  // both v and u on its sphere (its centre is then equidistant from them).
+  bool structural(const std::vector<std::uint32_t>& feature, std::uint32_t v, std::uint32_t u) const {
+    if (feature.empty()) return false;
+    for (std::uint32_t b : feature)
+      if (!contains(boundary_[v].balls, b) || !contains(boundary_[u].balls, b)) return false;
+    return true;
+  }
+
+  VertexKey key_of(const CellVertex& x) const {
+    VertexKey key;
+    key.feature = feature_of(x);
+    if (key.feature.size() == 1) return key;  // a ball centre
+    for (std::uint32_t p : x.support) {
+      const PlaneInfo& info = info_[p];
+      if (!info.bisector || structural(key.feature, info.v, info.u)) continue;
+      key.equidistant.push_back(info.v);
+      key.equidistant.push_back(info.u);
+    }
+    std::sort(key.equidistant.begin(), key.equidistant.end());
+    key.equidistant.erase(std::unique(key.equidistant.begin(), key.equidistant.end()), key.equidistant.end());
+    return key;
+  }
+
+  std::uint32_t bisector(PlaneSet& planes, std::map<std::pair<std::uint32_t, std::uint32_t>, std::uint32_t>& cache,
+                         std::uint32_t v, std::uint32_t u) {
+    auto [it, fresh] = cache.emplace(std::make_pair(v, u), 0);
+    if (!fresh) return it->second;
+    // |x - v|^2 <= |x - u|^2  <=>  2 (u - v) . x + |v|^2 - |u|^2 <= 0.
+    const Box& a = boundary_[v].approx;
+    const Box& b = boundary_[u].approx;
+    // In local coordinates x - o: d + n . o = |v - o|^2 - |u - o|^2 = (v - u) . (v + u - 2 o).
+    std::array<Interval, 4> approx;
+    approx[3] = Interval(0.0);
+    for (int k = 0; k < 3; ++k) {
+      approx[k] = Interval(2) * (b[k] - a[k]);
+      approx[3] += (a[k] - b[k]) * (a[k] + b[k] - Interval(2 * origin_[k]));
+    }
+    auto make = [field = field_, v, u]() { return field->bisector(v, u); };
+    it->second = planes.add(CellPlane(make, approx, 0));
+    info_.push_back({true, {}, v, u});
+    return it->second;
+  }
+
+  ConvexCell tetrahedron_cell(PlaneSet& planes, const PowerSimplex& tau) {
+    std::array<ExactPoint3, 4> c;
+    for (int k = 0; k < 4; ++k) c[k] = balls_.centers[tau.balls[k]];
+    std::vector<CellFace> faces;
+    std::vector<std::vector<std::uint32_t>> support(4);
+    for (int omit = 0; omit < 4; ++omit) {
+      std::array<int, 3> f;
+      for (int k = 0, m = 0; k < 4; ++k)
+        if (k != omit) f[m++] = k;
+      if (orientation(c[f[0]], c[f[1]], c[f[2]], c[omit]) > 0) std::swap(f[1], f[2]);  // outward order
+      const ExactPoint3 n = cross(c[f[1]] - c[f[0]], c[f[2]] - c[f[0]]);
+      const mpq_class d = -dot(n, c[f[0]]);
+      const Interval a = enclose(n.x), b = enclose(n.y), cz = enclose(n.z);
+      const std::array<Interval, 4> local{a, b, cz, enclose(d) + a * origin_[0] + b * origin_[1] + cz * origin_[2]};
+      const std::uint32_t id =
+          planes.add(CellPlane({RadicalNumber(n.x), RadicalNumber(n.y), RadicalNumber(n.z), RadicalNumber(d)}, local, 0));
+      std::array<std::uint32_t, 3> fb{tau.balls[f[0]], tau.balls[f[1]], tau.balls[f[2]]};
+      std::sort(fb.begin(), fb.end());
+      info_.push_back({false, fb, 0, 0});
+      faces.push_back({{static_cast<std::uint32_t>(f[0]), static_cast<std::uint32_t>(f[1]), static_cast<std::uint32_t>(f[2])}, {id}});
+      for (int k : f) support[k].push_back(id);
+    }
+    std::vector<CellVertex> corners;
+    for (int k = 0; k < 4; ++k) corners.push_back(rational_vertex(c[k], support[k], origin_));
+    return ConvexCell(planes, std::move(corners), std::move(faces));
+  }
+
+  std::vector<std::uint32_t> candidates(const std::array<Box, 4>& corners) const {
+    std::array<double, 3> lo, hi, centre;
+    for (int k = 0; k < 3; ++k) {
+      lo[k] = std::min({corners[0][k].lo, corners[1][k].lo, corners[2][k].lo, corners[3][k].lo});
+      hi[k] = std::max({corners[0][k].hi, corners[1][k].hi, corners[2][k].hi, corners[3][k].hi});
+      centre[k] = 0.5 * (lo[k] + hi[k]);
+    }
+    // B^2: the smallest max-corner squared distance among a few vertices near the centre.
+    double b2 = INFINITY;
+    for (double r = grid_.spacing(); !std::isfinite(b2) && r < 1e300; r *= 2) {
+      grid_.visit({centre[0] - r, centre[1] - r, centre[2] - r}, {centre[0] + r, centre[1] + r, centre[2] + r},
+                  [&](std::uint32_t u) {
+                    double worst = 0;
+                    for (const Box& c : corners) worst = std::max(worst, squared_distance(c, boundary_[u].approx).hi);
+                    b2 = std::min(b2, worst);
+                  });
+    }
+    const double b = round_up(std::sqrt(b2));
+    std::vector<std::pair<double, std::uint32_t>> found;
+    grid_.visit({lo[0] - b, lo[1] - b, lo[2] - b}, {hi[0] + b, hi[1] + b, hi[2] + b}, [&](std::uint32_t v) {
+      Interval d2(0.0);
+      for (int k = 0; k < 3; ++k) {
+        const Box& p = boundary_[v].approx;
+        const double gap = std::max({0.0, (Interval(lo[k]) - p[k]).lo, (p[k] - Interval(hi[k])).lo});
+        d2 += square(Interval(gap));
+      }
+      if (d2.lo <= b2) found.push_back({d2.lo, v});
+    });
+    std::sort(found.begin(), found.end());
+    std::vector<std::uint32_t> out;
+    for (const auto& f : found) out.push_back(f.second);
+    return out;
+  }
+
+  // Candidate i owns no point of tau when some other candidate is certainly closer at all
+  // four corners (then everywhere in tau: the half-space nearer to it is convex), given the
+  // squared distances from each candidate to each corner. The definition-level path asks
+  // only the first 8 candidates; the cell such a test spares would be emptied by clipping,
+  // so asking all of them changes no output.
+  bool excluded(std::size_t i, const std::vector<std::array<Interval, 4>>& corner_d2) const {
+    const std::size_t n = reach_ ? corner_d2.size() : std::min<std::size_t>(corner_d2.size(), 8);
+    for (std::size_t j = 0; j < n; ++j) {
+      if (j == i) continue;
+      bool closer = true;
+      for (int c = 0; c < 4 && closer; ++c) closer = corner_d2[j][c].hi < corner_d2[i][c].lo;
+      if (closer) return true;
+    }
+    return false;
+  }
+
+  void process_tetrahedron(const PowerSimplex& tau) {
+    ++out_.tetrahedra;
+    PlaneSet planes;
+    info_.clear();
+    const ExactPoint3& first = balls_.centers[tau.balls[0]];
+    origin_ = {first.x.get_d(), first.y.get_d(), first.z.get_d()};
+    const ConvexCell tet = tetrahedron_cell(planes, tau);
+    planes.set_structural_zero([this](std::uint32_t p, const CellVertex& x) {
+      return info_[p].bisector && structural(feature_of(x), info_[p].v, info_[p].u);
+    });
+    std::array<Box, 4> corners;
+    for (int k = 0; k < 4; ++k) corners[k] = enclose_point(balls_.centers[tau.balls[k]]);
+    const std::vector<std::uint32_t> cand = candidates(corners);
+    out_.candidates += cand.size();
+    std::map<std::pair<std::uint32_t, std::uint32_t>, std::uint32_t> cache;
+    std::vector<std::array<Interval, 4>> corner_d2(cand.size());
+    for (std::size_t i = 0; i < cand.size(); ++i)
+      for (int c = 0; c < 4; ++c) corner_d2[i][c] = squared_distance(corners[c], boundary_[cand[i]].approx);
+    struct Neighbour {
+      double mid, lo;  // |u - v|^2
+      std::uint32_t u;
+      bool operator<(const Neighbour& o) const { return mid < o.mid || (mid == o.mid && u < o.u); }
+    };
+    std::vector<Neighbour> order;
+    for (std::size_t i = 0; i < cand.size(); ++i) {
+      const std::uint32_t v = cand[i];
+      if (excluded(i, corner_d2)) continue;
+      ++out_.cells_clipped;
+      order.clear();
+      for (std::uint32_t u : cand)
+        if (u != v) {
+          const Interval d = squared_distance(boundary_[u].approx, boundary_[v].approx);
+          order.push_back({d.mid(), d.lo, u});
+        }
+      std::sort(order.begin(), order.end());
+      ConvexCell cell = tet;
+      double reach2 = reach_ ? reach_squared(cell, v) : INFINITY;
+      for (const auto& [d, d_lo, u] : order) {
+        if (d_lo > reach2) {
+          ++out_.beyond_reach;
+          continue;
+        }
+        ++out_.clips;
+        const ConvexCell::Clip c = cell.clip(bisector(planes, cache, v, u));
+        if (c == ConvexCell::Clip::Emptied) break;
+        if (c == ConvexCell::Clip::Cut && reach_) reach2 = reach_squared(cell, v);
+      }
+      record_faces(cell, planes, v);
+    }
+    out_.stats.merge(planes.stats);
+  }
+
+  // (2 R)^2 rounded up, R the largest distance from boundary vertex v to a vertex of the
+  // cell (a certified upper bound): a bisector of v and u with |u - v|^2 > (2 R)^2 leaves
+  // every point x of the cell strictly on v's side, |x - u| >= |u - v| - |x - v| > R >= |x - v|.
+  double reach_squared(const ConvexCell& cell, std::uint32_t v) const {
+    Box local;
+    for (int k = 0; k < 3; ++k) local[k] = boundary_[v].approx[k] - Interval(origin_[k]);
+    double r2 = 0;
+    for (const CellFace& f : cell.faces())
+      for (std::uint32_t x : f.vertices) r2 = std::max(r2, squared_distance(cell.vertex(x).approx, local).hi);
+    return std::isfinite(r2) ? 4 * r2 : INFINITY;  // x 4 is exact
+  }
+
+  void record_faces(const ConvexCell& cell, PlaneSet& planes, std::uint32_t v) {
+    for (const CellFace& f : cell.faces()) {
+      auto b = std::find_if(f.planes.begin(), f.planes.end(), [&](std::uint32_t p) { return info_[p].bisector; });
+      if (b == f.planes.end()) continue;
+      TetAxisPolygon poly;
+      poly.v = info_[*b].v;
+      poly.u = info_[*b].u;
+      poly.plane = std::make_shared<const CellPlane>(planes[*b]);
+      for (std::uint32_t x : f.vertices) poly.vertices.push_back(global_vertex(cell.vertex(x), planes, v));
+      out_.polygons.push_back(std::move(poly));
+    }
+  }
+
+  std::uint32_t global_vertex(const CellVertex& x, PlaneSet& planes, std::uint32_t owner) {
+    VertexKey key = key_of(x);
+    for (;;) {
+      auto it = ids_.find(key);
+      if (it == ids_.end()) break;
+      const Box global{x.approx[0] + origin_[0], x.approx[1] + origin_[1], x.approx[2] + origin_[2]};
+      if (boxes_overlap(out_.vertices[it->second].point->approx(), global)) return it->second;
+      ++key.collision;  // equal keys, certainly different points: a degenerate key
+      ++out_.key_collisions;
+    }
+    TetAxisVertex g;
+    g.feature = key.feature;
+    const Box global{x.approx[0] + origin_[0], x.approx[1] + origin_[1], x.approx[2] + origin_[2]};
+    if (x.exact)
+      g.point = std::make_shared<LazyPoint3>(x.exact, global);
+    else
+      g.point = std::make_shared<LazyPoint3>(
+          std::array<CellPlane, 3>{planes[x.defining[0]], planes[x.defining[1]], planes[x.defining[2]]}, global);
+    g.nearest = owner;
+    const auto id = static_cast<std::uint32_t>(out_.vertices.size());
+    ids_.emplace(std::move(key), id);
+    out_.vertices.push_back(std::move(g));
+    return id;
+  }
+
+  // Points with different keys whose boxes overlap are compared exactly (degenerate input).
+  void merge_coincident() {
+    std::vector<std::uint32_t> order(out_.vertices.size()), parent(out_.vertices.size());
+    std::iota(order.begin(), order.end(), 0u);
+    std::iota(parent.begin(), parent.end(), 0u);
+    auto& vs = out_.vertices;
+    std::sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) { return vs[a].point->approx()[0].lo < vs[b].point->approx()[0].lo; });
+    auto find = [&](std::uint32_t a) {
+      while (parent[a] != a) a = parent[a] = parent[parent[a]];
+      return a;
+    };
+    for (std::size_t i = 0; i < order.size(); ++i)
+      for (std::size_t j = i + 1; j < order.size() && vs[order[j]].point->approx()[0].lo <= vs[order[i]].point->approx()[0].hi; ++j) {
+        const std::uint32_t a = find(order[i]), b = find(order[j]);
+        if (a == b || !boxes_overlap(vs[order[i]].point->approx(), vs[order[j]].point->approx())) continue;
+        if (!same_point(vs[order[i]].point->exact(), vs[order[j]].point->exact(), &out_.stats.number)) continue;
+        // Keep the most specific feature (a ball centre over an edge point, ...).
+        const bool a_first = !vs[a].feature.empty() && (vs[b].feature.empty() || vs[a].feature.size() <= vs[b].feature.size());
+        parent[a_first ? b : a] = a_first ? a : b;
+        ++out_.merged_by_position;
+      }
+    if (out_.merged_by_position == 0) return;
+    std::vector<TetAxisPolygon> kept;
+    for (TetAxisPolygon& p : out_.polygons) {
+      std::vector<std::uint32_t> ring;
+      for (std::uint32_t v : p.vertices) {
+        const std::uint32_t r = find(v);
+        if (ring.empty() || ring.back() != r) ring.push_back(r);
+      }
+      while (ring.size() > 1 && ring.back() == ring.front()) ring.pop_back();
+      if (ring.size() < 3) continue;
+      p.vertices = std::move(ring);
+      kept.push_back(std::move(p));
+    }
+    out_.polygons = std::move(kept);
+  }
+
+  // A face between the cells of v and u is found from both cells, and a face on a
+  // triangle shared by two tetrahedra from both; keep one of each.
+  void drop_duplicate_polygons() {
+    std::map<std::vector<std::uint32_t>, bool> seen;
+    std::vector<TetAxisPolygon> kept;
+    for (TetAxisPolygon& p : out_.polygons) {
+      std::vector<std::uint32_t> s = p.vertices;
+      std::sort(s.begin(), s.end());
+      if (seen.emplace(std::move(s), true).second) kept.push_back(std::move(p));
+    }
+    out_.polygons = std::move(kept);
+  }
+
+  const BallSet& balls_;
+  const AlphaComplex& k_;
+  const std::vector<BoundaryVertex>& boundary_;
+  PointGrid grid_;
+  std::shared_ptr<const BisectorField> field_;
+  bool reach_;
+  std::vector<PlaneInfo> info_;  // per tetrahedron, indexed by plane id
+  std::array<double, 3> origin_{0, 0, 0};  // per tetrahedron: local coordinates of the enclosures
+  std::map<VertexKey, std::uint32_t> ids_;
+  TetAxis out_;
+};
+
+}  // namespace
+
+bool same_point(const HomogeneousPoint& a, const HomogeneousPoint& b, NumberStats* stats) {
+  for (int k = 0; k < 3; ++k)
+    if (sign(a.c[k] * b.c[3] - b.c[k] * a.c[3], stats) != 0) return false;
+  return true;
+}
+
+TetAxis tet_axis(const BallSet& balls, const AlphaComplex& k, const std::vector<BoundaryVertex>& boundary,
+                 const RadicalTable& table, bool reach) {
+  if (boundary.empty()) return {};
+  return Builder(balls, k, boundary, table, reach).run();
+}
+
+}  // namespace grassfire
