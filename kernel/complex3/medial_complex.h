@@ -60,6 +60,7 @@
 #include "geometry3/exact_predicates3.h"
 #include "geometry3/filtered_predicates3.h"
 #include "complex3/raw_complex.h"
+#include "geometry3/vec3.h"
 
 namespace grassfire {
 
@@ -78,8 +79,6 @@ enum class VertexKind : std::uint8_t {
   SingularPoint     // anything else (M0): junctions of singular curves, pinches, curve ends
 };
 const char* to_string(VertexKind k);
-
-using Vec3d = std::array<double, 3>;
 
 struct ComplexVertex {
   ExactPoint3 exact;

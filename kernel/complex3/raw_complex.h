@@ -20,11 +20,9 @@
 #include <string>
 #include <vector>
 
-namespace grassfire {
+#include "geometry3/exact_point3.h"
 
-struct ExactPoint3 {
-  mpq_class x, y, z;
-};
+namespace grassfire {
 
 enum class IgnitionRule : std::uint8_t { Linear, DistanceToPoint, Never };
 

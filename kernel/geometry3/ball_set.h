@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-#include "complex3/raw_complex.h"
+#include "geometry3/exact_point3.h"
 
 namespace grassfire {
 

@@ -12,7 +12,7 @@
 
 #include <array>
 
-#include "complex3/raw_complex.h"
+#include "geometry3/exact_point3.h"
 
 namespace grassfire {
 

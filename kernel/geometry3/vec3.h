@@ -3,9 +3,15 @@
 // exact geometry (those go through exact_predicates3.h).
 #pragma once
 
+#include <array>
 #include <cmath>
 
-#include "complex3/medial_complex.h"
+namespace grassfire {
+
+// A point or vector of R^3 in doubles (drawing, sampling, approximate baselines).
+using Vec3d = std::array<double, 3>;
+
+}  // namespace grassfire
 
 namespace grassfire::v3 {
 
