@@ -39,6 +39,7 @@
 #include "medial2/synthetic_graphs.h"
 #include "pipeline/edf2d.h"
 #include "shapes/builtin_shapes.h"
+#include "io/disk_list.h"
 #include "io/load_shape.h"
 
 namespace grassfire::checks {

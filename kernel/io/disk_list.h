@@ -23,27 +23,11 @@
 
 #include <gmpxx.h>
 
-#include <cstddef>
-#include <stdexcept>
 #include <string>
-#include <vector>
+
+#include "medial2/disks/disks.h"
 
 namespace grassfire {
-
-struct Disk {
-  mpq_class x, y, r;     // exact centre and radius
-  std::size_t line = 0;  // 1-based line in the source (0 for disks built in code)
-};
-
-struct DiskList {
-  std::string name;  // the file path or source name, used in messages
-  std::vector<Disk> disks;
-};
-
-class DiskListError : public std::runtime_error {
- public:
-  using std::runtime_error::runtime_error;
-};
 
 // Parses `text`; `source` names it in messages.
 DiskList parse_disk_list(const std::string& text, const std::string& source);

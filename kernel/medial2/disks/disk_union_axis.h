@@ -36,7 +36,7 @@
 
 #include <cstdint>
 
-#include "io/disk_list.h"
+#include "medial2/disks/disks.h"
 #include "medial2/medial_graph.h"
 #include "number/exact_sum.h"
 

@@ -23,7 +23,7 @@
 #include <vector>
 
 #include "geometry2/lazy_point.h"
-#include "io/disk_list.h"
+#include "medial2/disks/disks.h"
 #include "medial2/medial_graph.h"
 #include "number/ball.h"
 #include "number/exact_sum.h"

@@ -15,7 +15,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "io/disk_list.h"
+#include "medial2/disks/disks.h"
 #include "medial2/disks/disk_union_geometry.h"
 
 namespace grassfire {
