@@ -19,18 +19,13 @@
 #include <string>
 #include <vector>
 
+#include "shapes/gray_alpha_image.h"
+
 namespace grassfire {
 
 class ImageFormatError : public std::runtime_error {
  public:
   using std::runtime_error::runtime_error;
-};
-
-struct GrayAlphaImage {
-  std::uint32_t width = 0, height = 0;
-  std::vector<std::uint8_t> gray, alpha;  // row-major, row 0 at the top
-  std::uint8_t gray_at(std::uint32_t x, std::uint32_t y) const { return gray[std::size_t(y) * width + x]; }
-  std::uint8_t alpha_at(std::uint32_t x, std::uint32_t y) const { return alpha[std::size_t(y) * width + x]; }
 };
 
 // By extension: .png or .gif (case-insensitive).

@@ -16,6 +16,7 @@
 
 #include <string>
 
+#include "io/image_raster.h"
 #include "shapes/image_shape.h"
 #include "geometry2/shape2.h"
 #include "shapes/validate_shape.h"

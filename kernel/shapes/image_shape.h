@@ -35,8 +35,8 @@
 #include <stdexcept>
 #include <string>
 
-#include "io/image_raster.h"
 #include "geometry2/shape2.h"
+#include "shapes/gray_alpha_image.h"
 
 namespace grassfire {
 
