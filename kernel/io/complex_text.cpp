@@ -109,12 +109,6 @@ std::optional<std::string> exact_decimal_string(const mpq_class& q) {
   return (sgn(scaled) < 0 ? "-" : "") + s;
 }
 
-std::string shortest_double(double x) {
-  char buf[64];
-  const auto r = std::to_chars(buf, buf + sizeof buf, x);
-  return std::string(buf, r.ptr);
-}
-
 std::string decimal_or_nearest(const mpq_class& q) {
   if (auto s = exact_decimal_string(q)) return *s;
   return shortest_double(q.get_d());

@@ -18,6 +18,8 @@
 #include <string>
 #include <vector>
 
+#include "support/number_text.h"  // shortest_double, which the 3D writers use
+
 namespace grassfire {
 
 // A file that cannot be read or parsed. what() is "<path>:<line>: <problem>" (or
@@ -48,6 +50,5 @@ std::optional<std::uint64_t> parse_index(const std::string& token);  // decimal 
 std::optional<std::string> exact_decimal_string(const mpq_class& q);
 // Exact decimal when there is one, else the shortest text of the nearest double.
 std::string decimal_or_nearest(const mpq_class& q);
-std::string shortest_double(double x);
 
 }  // namespace grassfire

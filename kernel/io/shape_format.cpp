@@ -16,10 +16,4 @@ std::string read_shape_file_text(const std::string& path) {
   return text.str();
 }
 
-std::string format_coordinate(double x) {
-  char buf[64];
-  const std::to_chars_result r = std::to_chars(buf, buf + sizeof buf, x);
-  return std::string(buf, r.ptr);
-}
-
 }  // namespace grassfire

@@ -5,6 +5,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "support/number_text.h"  // shortest_double: coordinates that read back exactly
+
 namespace grassfire {
 
 // A file that cannot be read or parsed as a shape. what() starts with the file path (or
@@ -17,8 +19,5 @@ class ShapeFormatError : public std::runtime_error {
 
 // The whole content of a file; throws ShapeFormatError naming the path when it cannot be read.
 std::string read_shape_file_text(const std::string& path);
-
-// The shortest decimal that converts back to exactly x (std::to_chars), e.g. "0.31466".
-std::string format_coordinate(double x);
 
 }  // namespace grassfire

@@ -57,7 +57,7 @@ void write_shape_json(const Shape2& shape, std::ostream& out) {
   out << "{\"points\":[";
   const std::vector<Point2>& p = shape.rings[0].points;
   for (std::size_t i = 0; i < p.size(); ++i)
-    out << (i ? ",\n" : "\n") << "  {\"x\":" << format_coordinate(p[i].x) << ",\"y\":" << format_coordinate(p[i].y)
+    out << (i ? ",\n" : "\n") << "  {\"x\":" << shortest_double(p[i].x) << ",\"y\":" << shortest_double(p[i].y)
         << "}";
   out << "\n]}\n";
 }

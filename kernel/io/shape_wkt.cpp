@@ -171,7 +171,7 @@ void write_shape_wkt(const Shape2& shape, std::ostream& out) {
     out << (r ? ",\n  (" : "\n  (");
     for (std::size_t i = 0; i <= p.size() && !p.empty(); ++i) {
       const Point2& q = p[i % p.size()];  // closed: the first point again at the end
-      out << (i ? ", " : "") << format_coordinate(q.x) << " " << format_coordinate(q.y);
+      out << (i ? ", " : "") << shortest_double(q.x) << " " << shortest_double(q.y);
     }
     out << ")";
   }

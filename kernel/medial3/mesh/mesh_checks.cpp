@@ -10,7 +10,7 @@
 
 #include "medial3/mesh/mesh_embedding.h"
 #include "geometry3/exact_predicates3.h"
-#include "io/complex_text.h"
+#include "support/number_text.h"
 
 namespace grassfire {
 
