@@ -6,6 +6,7 @@
 #include <map>
 
 #include "medial3/convex/convex_polyhedron_axis.h"
+#include "io/halfspace_list.h"
 #include "complex3/simplicial_homology.h"
 #include "complex3/medial_complex.h"
 #include "io/complex_text.h"

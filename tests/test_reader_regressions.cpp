@@ -4,6 +4,7 @@
 #include <catch2/catch.hpp>
 
 #include "medial3/convex/convex_polyhedron_axis.h"
+#include "io/halfspace_list.h"
 #include "complex3/medial_complex.h"
 #include "io/complex_json.h"
 #include "io/complex_ma.h"

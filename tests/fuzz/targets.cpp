@@ -8,6 +8,7 @@
 #include <stdexcept>
 
 #include "medial3/convex/convex_polyhedron_axis.h"
+#include "io/halfspace_list.h"
 #include "medial3/mesh/mesh_checks.h"
 #include "medial3/balls/union_of_balls_axis.h"
 #include "complex3/medial_complex.h"

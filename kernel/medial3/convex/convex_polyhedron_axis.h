@@ -42,11 +42,7 @@ struct ConvexPolyhedron {
   std::vector<HalfSpace> planes;
 };
 
-// The half-space text format: one plane `a b c d` per line, meaning a x + b y + c z <= d;
-// decimals as in complex_text.h, read exactly; `#` starts a comment; blank lines are
-// ignored. Errors (ComplexFormatError) name the file and line.
-ConvexPolyhedron parse_halfspaces(const std::string& text, const std::string& source);
-ConvexPolyhedron read_halfspaces(const std::string& path);
+// The half-space text format (.hs files) is read by io/halfspace_list.h.
 // The facet planes of a closed convex triangle mesh (coplanar triangles merged).
 ConvexPolyhedron convex_polyhedron_from_mesh(const TriangleMesh3& mesh);
 // A seeded random test polyhedron: the cube [-2, 2]^3 cut by 1-4 planes whose normals have
