@@ -1,6 +1,6 @@
 // bench_burn3d_exact -- the exact burning engine (kernel/burn3/exact/) against CGAL's
 // Surface_mesh_shortest_path (Epick, burn3/geodesic_smsp.h) on closed curved meshes with
-// three point sources (issue 8 item 7).
+// three point sources (docs/exact-engine.md).
 //
 // Meshes: data/meshes cube.off, octahedron.off and tripod.off, smoothed twice and
 // Loop-refined by 3 to 7 levels (geometry3/refined_mesh.h: no two neighbouring faces
@@ -17,7 +17,7 @@
 //  - uncertified: decisions of the propagation no certification stage decided;
 //  - max_diff: max over vertices of the distance from CGAL's value to the engine's
 //    certified enclosure (both exact to double precision: about 1e-12 expected);
-//  - ratio = exact_s / smsp_s (issue 8 target: <= 0.5 at 10^5 faces).
+//  - ratio = exact_s / smsp_s (target of docs/benchmarks.md: <= 0.5 at 10^5 faces).
 // CSV on stdout:
 // mesh,faces,smsp_s,exact_s,ratio,peak_mem_mb,uncertified,complex_s,smsp_peak_mb,windows,max_diff,
 // unfolding_s,propagation_s (exact_s split: the engine's frames and crossings of the
@@ -25,7 +25,7 @@
 // Usage: bench_burn3d_exact [--max-faces N] [--mesh NAME]   (meshes above N faces are
 // skipped, default 200000; --mesh: only that file of data/meshes)
 //
-// With --axes (issue 9 item 6): medial axes burned from their border by Definition 9 (the
+// With --axes (docs/exact-engine.md): medial axes burned from their border by Definition 9 (the
 // junction rule on singular curves, the link rule at singular points), the exact engine
 // against the discrete baseline (burn3/discrete/discrete_burning.h) at the spacing whose maximum error
 // is 1% of the largest BT. Axes: the mesh axes of data/ma/real (made by the project's mesh

@@ -24,7 +24,7 @@
 // construction = the one the input policy chose (polygon_axis.h); shape is "symmetric" or "shifted"; axis_ratio = axis_s / boost_s,
 // ratio_to_boost = axis_plus_edf_s / boost_s (wall clock), cpu_ratio the same in thread
 // CPU time (what to read on a loaded machine); uncertified = ties of the burning and
-// contractions of the axis that no stage could prove (zero is the goal, DESIGN.md 3); an
+// contractions of the axis that no stage could prove (zero is the goal, docs/design.md 3); an
 // empty cgal_sdg_s means skipped; peak_mem_mb is the process's peak resident size after
 // the row. Each time is the best of --repeat runs (default 1). stderr: the axis report
 // (where its CPU time goes: Voronoi, values, value classes, burning; contractions, double-

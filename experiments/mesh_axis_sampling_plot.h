@@ -1,5 +1,4 @@
-// mesh_axis_sampling_plot.h -- the picture of the mesh-axis sampling study (issue 10,
-// item 7; experiments/study_mesh_axis_sampling.cpp), shared by the study and by the
+// mesh_axis_sampling_plot.h -- the picture of the mesh-axis sampling study (docs/exactness.md; experiments/study_mesh_axis_sampling.cpp), shared by the study and by the
 // paper figure that redraws it from the committed CSV (paper-figures/fig_mesh_axis_sampling.cpp).
 //
 // Computes: two panels in one SVG, one series per mesh:

@@ -1,5 +1,5 @@
 // study_board_fin_convergence -- the discrete baseline against the closed form on the board
-// and fin (4.1.2, 4.2.1; DESIGN.md 5, reference case 1) as the Steiner spacing h halves.
+// and fin (4.1.2, 4.2.1; docs/design.md 5, reference case 1) as the Steiner spacing h halves.
 //
 // For each h: max, mean and min of BT_discrete - BT over the graph points in the region
 // |x| <= 7, y <= 7, z <= 7 (well inside the truncation at E = 10, where the closed form is
@@ -127,7 +127,7 @@ void write_summary(const std::vector<Row>& rows, const std::string& path) {
 }
 
 constexpr const char* kUsage =
-    "usage: study_board_fin_convergence [OUT] [--quick] [--shard I/N] [--progress|--quiet]\nthe discrete baseline against the closed form on the board and fin (4.1.2, 4.2.1; DESIGN.md 5, reference case 1) as the Steiner spacing h halves.\n(CSV columns and details: the header of experiments/study_board_fin_convergence.cpp)\n";
+    "usage: study_board_fin_convergence [OUT] [--quick] [--shard I/N] [--progress|--quiet]\nthe discrete baseline against the closed form on the board and fin (4.1.2, 4.2.1; docs/design.md 5, reference case 1) as the Steiner spacing h halves.\n(CSV columns and details: the header of experiments/study_board_fin_convergence.cpp)\n";
 
 int run(int argc, char** argv) {
   const experiments::Shard shard = experiments::take_shard(argc, argv);

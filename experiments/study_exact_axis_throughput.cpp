@@ -7,7 +7,7 @@
 // Output (stdout): one CSV row per shape, sorted: file,construction,vertices,nodes,edges,
 // parabolic_arcs,contracted,uncertified_contractions,uncertified_ties,ball_refinements,
 // axis_s,edf_s,valid,error (uncertified_ties: comparisons of the burning that no stage
-// could prove, DESIGN.md 3); then a summary line on stderr: shapes, failures, total
+// could prove, docs/design.md 3); then a summary line on stderr: shapes, failures, total
 // seconds, the uncertified counts and how many shapes have any.
 // --shard I/N runs every N-th shape (experiments/shard.h); --progress / --quiet as the program.
 // Usage: study_exact_axis_throughput FOLDER [--validate] [--shard I/N] [--progress|--quiet]

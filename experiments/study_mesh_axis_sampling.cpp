@@ -1,6 +1,6 @@
 // study_mesh_axis_sampling -- the mesh axis (medial3/mesh/mesh_axis.h) against the
 // sampling density: how far it is from the true axis, and whether its topology is the
-// solid's (issue 10, item 7).
+// solid's (docs/exactness.md).
 //
 // For each closed mesh of MESH_DIR (*.off, smallest first by vertex count, so that a
 // long run has the small meshes done early) and each density s = samples per mean edge
@@ -149,7 +149,7 @@ std::vector<Input> read_inputs(const std::string& dir) {
 }
 
 constexpr const char* kUsage =
-    "usage: study_mesh_axis_sampling MESH_DIR [OUT] [--quick] [--densities S1,S2,...] [--max-samples N]\nthe mesh axis (medial3/mesh/mesh_axis.h) against the sampling density: how far it is from the true axis, and whether its topology is the solid's (issue 10, item 7).\n(CSV columns and details: the header of experiments/study_mesh_axis_sampling.cpp)\n";
+    "usage: study_mesh_axis_sampling MESH_DIR [OUT] [--quick] [--densities S1,S2,...] [--max-samples N]\nthe mesh axis (medial3/mesh/mesh_axis.h) against the sampling density: how far it is from the true axis, and whether its topology is the solid's (docs/exactness.md).\n(CSV columns and details: the header of experiments/study_mesh_axis_sampling.cpp)\n";
 
 int run(int argc, char** argv) {
   take_verbosity_flags(argc, argv);

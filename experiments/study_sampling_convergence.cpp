@@ -1,5 +1,5 @@
 // study_sampling_convergence -- does the EDF on the sampled Voronoi axis converge to the
-// EDF on the exact polygon axis as the boundary sampling densifies (issue 4, item 3)?
+// EDF on the exact polygon axis as the boundary sampling densifies (docs/exactness.md)?
 //
 // For each shape of a fixed list (22 real shapes of the 2D Shape Structure dataset and the
 // built-ins) and each sample count N: the sampled pipeline (pipeline/edf2d.h, Sampled, N
@@ -194,7 +194,7 @@ void write_plot(const std::vector<Row>& rows, const std::string& path) {
 }
 
 constexpr const char* kUsage =
-    "usage: study_sampling_convergence SHAPES_DIR [OUT] [--quick] [--shard I/N] [--progress|--quiet]\ndoes the EDF on the sampled Voronoi axis converge to the EDF on the exact polygon axis as the boundary sampling densifies (issue 4, item 3)?\n(CSV columns and details: the header of experiments/study_sampling_convergence.cpp)\n";
+    "usage: study_sampling_convergence SHAPES_DIR [OUT] [--quick] [--shard I/N] [--progress|--quiet]\ndoes the EDF on the sampled Voronoi axis converge to the EDF on the exact polygon axis as the boundary sampling densifies (docs/exactness.md)?\n(CSV columns and details: the header of experiments/study_sampling_convergence.cpp)\n";
 
 int run(int argc, char** argv) {
   const experiments::Shard shard = experiments::take_shard(argc, argv);

@@ -1,4 +1,4 @@
-// fig_4_exact.cpp -- chapter-4 figures from the exact engine (issue 9 item 5): Fig. 4.5
+// fig_4_exact.cpp -- chapter-4 figures from the exact engine (docs/exact-engine.md): Fig. 4.5
 // (a complex decomposed into M2, M1, M0 and its border), Figs. 4.4 and 5.1 redone with
 // the exact burning time, and the exact burning time on real medial axes.
 //

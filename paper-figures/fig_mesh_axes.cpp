@@ -1,4 +1,4 @@
-// fig_mesh_axes.cpp -- a gallery of mesh medial axes (issue 10, item 7; 2.1.2 in 3D): for each
+// fig_mesh_axes.cpp -- a gallery of mesh medial axes (docs/exactness.md; 2.1.2 in 3D): for each
 // closed mesh of data/meshes, the axis of `grassfire medial3d --kind mesh` at its default
 // options (mesh_axis.h: inner Voronoi complex of surface samples, pruned without changing
 // its homotopy type, refined until it has the solid's Betti numbers and its thin parts

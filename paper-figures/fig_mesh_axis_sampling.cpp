@@ -1,4 +1,4 @@
-// fig_mesh_axis_sampling.cpp -- the mesh-axis sampling study as a figure (issue 10, item 7;
+// fig_mesh_axis_sampling.cpp -- the mesh-axis sampling study as a figure (docs/exactness.md;
 // 2.1.2 in 3D): redrawn from the committed CSV experiments/results/mesh_axis_sampling.csv
 // (the study takes minutes on the shared meshes, which the project does not ship; rerun it
 // with `build/experiments/study_mesh_axis_sampling ../shared/data/meshes`). The panels are

@@ -20,7 +20,7 @@
 //    it holds by the baseline's rule (an arrival along a curve burns the point), and in a
 //    sheet |BT_h(x) - BT_h(y)| <= d + (snapping of the segment xy) holds by Dijkstra's
 //    relaxation: neither is evidence for the continuous BT, which needs the exact engine
-//    (issue 9).
+//    (docs/exact-engine.md).
 #include <algorithm>
 #include <cmath>
 #include <random>

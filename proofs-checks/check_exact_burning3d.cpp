@@ -1,5 +1,4 @@
-// check_exact_burning3d.cpp -- chapter 4 on the EXACT burning time (burn3/exact, issue 9
-// item 4), on the complexes the exact engine burns (no singular edge):
+// check_exact_burning3d.cpp -- chapter 4 on the EXACT burning time (burn3/exact, docs/exact-engine.md), on the complexes the exact engine burns (no singular edge):
 //  - random planar sheets (seeded masks of grid cells: holes, reflex corners;
 //    tilted; random border rules and radii), burned from the border;
 //  - small closed meshes of data/meshes, Loop-refined (geometry3/refined_mesh.h), burned as
@@ -140,7 +139,7 @@ void lipschitz(const Interval& x, const Interval& y, double d, double d_hi, Exac
 constexpr double kNearPair = 1.0;
 
 // Returns false (nothing checked) where the planar reference does not apply: a pinch
-// vertex splits the sheet (the engine burns it by the link rule since issue 9, but the
+// vertex splits the sheet (the engine burns it by the link rule since the junction rule (docs/exact-engine.md), but the
 // reference needs one planar sheet).
 bool check_sheet(const CheckContext& ctx, std::uint32_t seed, ExactTallies& t) {
   const MedialComplex mc(random_planar_sheet(seed));

@@ -1,5 +1,5 @@
 // check_exact_chapter4.cpp -- Props 5, 6 and 7 of chapter 4 (4.3) on the EXACT burning time
-// (burn3/exact, issue 9 item 4), by limits along sequences into the points where BT may
+// (burn3/exact, docs/exact-engine.md), by limits along sequences into the points where BT may
 // jump: vertices (singular points among them) and one point of every edge (the midpoint;
 // on the baseline the middle graph point of the edge), points of singular curves among them.
 //

@@ -20,7 +20,7 @@
 //    fail. Every checked row must detect at least one mutant that violates its
 //    proposition; CTest fails otherwise.
 //
-// Adding rows (for instance chapter 4 on the exact burning time, issue 9):
+// Adding rows (for instance chapter 4 on the exact burning time, docs/exact-engine.md):
 //  1. In a new proofs-checks/check_*.cpp (CMake globs them), write
 //       std::vector<CheckRow> my_check(const CheckContext& ctx)
 //     building its corpora at the size ctx.size asks for (Tiny is what `--mutants` runs

@@ -12,7 +12,7 @@
 //  - convex polyhedra: the exact axes of data/meshes' cube and octahedron and of seeded
 //    random cuts of the cube (random_cut_cube).
 // References of BT (Definition 10) at a point, each derived independently of the
-// baseline: the closed forms of the board and fin (DESIGN.md 5), of books and the Y, of
+// baseline: the closed forms of the board and fin (docs/design.md 5), of books and the Y, of
 // box axes (synthetic_complexes.h), of the regular cube and octahedron (every sheet is the
 // bisector of two faces meeting at an edge of dihedral angle theta and burns from that
 // edge: BT = R / sin(theta / 2), i.e. sqrt2 R and sqrt(3/2) R); and on planar convex sheets

@@ -13,7 +13,7 @@
 //    (one point of the maximal closed subcomplex given BT = 0). The point is the burned
 //    point of median BT among the points inside sheets (M2), or among all points with
 //    BT > 0 where no point lies inside a sheet (sheets of single triangles).
-// An exact engine (issue 9) applies the output mutants to its own per-point times with
+// An exact engine (docs/exact-engine.md) applies the output mutants to its own per-point times with
 // mutate_burning_times, and the rule mutants through its own hook.
 #pragma once
 

@@ -1,5 +1,5 @@
 // Exact burning engine: the border ignition rules (Linear with any slope, DistanceToPoint,
-// Never) on planar convex sheets against the brute force over the border (issue 8 items 1, 6).
+// Never) on planar convex sheets against the brute force over the border (docs/exact-engine.md).
 #include <catch2/catch.hpp>
 
 #include <cmath>

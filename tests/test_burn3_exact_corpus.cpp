@@ -1,5 +1,5 @@
 // Exact burning engine on graphs (segments: the link rule and the 2D rule) and on every
-// complex the project builds or reads (issue 8 items 1, 6; issue 9 item 3 for the bound).
+// complex the project builds or reads (docs/exact-engine.md; docs/exact-engine.md for the bound).
 #include <catch2/catch.hpp>
 
 #include <cmath>

@@ -1,4 +1,4 @@
-// Exact burning engine, metamorphic checks (issue 8 item 6): rational rotations
+// Exact burning engine, metamorphic checks (docs/exact-engine.md): rational rotations
 // (Pythagorean), translations and scalings change BT exactly as they should; reordering
 // vertices and triangles changes nothing.
 #include <catch2/catch.hpp>

@@ -1,5 +1,5 @@
 // Exact burning engine on planar sheets: point sources and border ignition against exact
-// closed forms and the brute-force reference (issue 8 items 1, 2, 6).
+// closed forms and the brute-force reference (docs/exact-engine.md).
 #include <catch2/catch.hpp>
 
 #include <cmath>

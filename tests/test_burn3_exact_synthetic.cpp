@@ -1,5 +1,4 @@
-// Exact burning engine on the synthetic complexes with singular edges as walls (issue 8,
-// part 1; ExactBurningOptions::singular_walls, `burn3d --singular-walls`): exact closed
+// Exact burning engine on the synthetic complexes with singular edges as walls (docs/exact-engine.md; ExactBurningOptions::singular_walls, `burn3d --singular-walls`): exact closed
 // forms where the walls do not change BT, and per-side arrivals. The junction rule itself
 // is tested in test_burn3_junction.cpp.
 #include <catch2/catch.hpp>

@@ -1,4 +1,4 @@
-// The exact engine's junction rule on singular curves (Definition 9, 4.2.1; issue 9): BT on
+// The exact engine's junction rule on singular curves (Definition 9, 4.2.1; docs/exact-engine.md): BT on
 // the synthetic complexes against closed forms (board and fin, book:K, the Y), the
 // board-and-fin kink proved at exactly 2 + sqrt2, metamorphic checks, and the discrete
 // baseline as an upper bound on complexes with singular edges.

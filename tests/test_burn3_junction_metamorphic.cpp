@@ -1,5 +1,4 @@
-// Metamorphic checks of the junction rule (Definition 9 on singular curves; issue 9 item
-// 3): on complexes with singular edges (books, the Y, the board and fin, the box's medial
+// Metamorphic checks of the junction rule (Definition 9 on singular curves; docs/exact-engine.md): on complexes with singular edges (books, the Y, the board and fin, the box's medial
 // axis, seeded random books), BT is unchanged by renumbering vertices and triangles, by
 // reordering the sheets around the singular edges (the triangles of each sheet moved as a
 // block, sheets in reverse order), by a rational rotation (Pythagorean angles) with a

@@ -1,5 +1,5 @@
 // Kinks, merges and quench points of the junction rule located and classified exactly
-// (junction_points.h; issue 9 item 2). Closed forms derived by hand:
+// (junction_points.h; docs/exact-engine.md). Closed forms derived by hand:
 //  - board and fin truncated at E (synthetic_complexes.h): on N, at s (the point (s, s, 0)),
 //    the back side arrives at s and the fin at sqrt2 (s - 1); N burns at the second, so the
 //    kink is at s = 2 + sqrt2 with BT 2 + sqrt2 (4.2.1). Beyond it N burns at sqrt2 (s - 1),

@@ -1,4 +1,4 @@
-// Tangent handovers at switch points of the junction rule (junction_tangents.h; issue 9):
+// Tangent handovers at switch points of the junction rule (junction_tangents.h; docs/exact-engine.md):
 // a sloped plane wave handing over to the circle about its own border vertex, proved, not
 // measured. Closed form derived by hand for the three-page book below (spine (0,0,0) ->
 // (0,0,5); page j a single quad of width w_j split by its diagonal; every bottom and top edge

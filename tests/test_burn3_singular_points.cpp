@@ -1,4 +1,4 @@
-// The link rule at singular points on the exact engine (Definition 9, Prop 6; issue 9), on
+// The link rule at singular points on the exact engine (Definition 9, Prop 6; docs/exact-engine.md), on
 // the medial axes of seeded random cuts of the cube (medial3/convex/convex_polyhedron_axis.h,
 // built exactly: points where four or more sheets meet, joined by singular curves). BT at
 // every vertex the link rule decides is compared with two computations made another way:

@@ -1,4 +1,4 @@
-// Strata, sheets, sectors and links of hand-built medial complexes (ch. 4, DESIGN.md 5).
+// Strata, sheets, sectors and links of hand-built medial complexes (ch. 4, docs/design.md 5).
 #include <catch2/catch.hpp>
 
 #include <cmath>

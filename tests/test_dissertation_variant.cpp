@@ -1,4 +1,4 @@
-// The dissertation's thinning algorithm (3.3.2) against the definition (DESIGN.md 4).
+// The dissertation's thinning algorithm (3.3.2) against the definition (docs/design.md 4).
 // It removes the leaf of smallest value and gives the exposed neighbour value + edge
 // length, ordering by the leaf's value rather than by the arrival time at the neighbour.
 #include <catch2/catch.hpp>

@@ -1,4 +1,4 @@
-// Exact ties that no value class proves (issue 11, item 3): hat-4 and watch-18 of the
+// Exact ties that no value class proves (docs/exactness.md): hat-4 and watch-18 of the
 // shapes2d dataset (tests/data/ties2d/README.md). The burning must leave no uncertified
 // decision, the tied values must be proved equal (root_separation.h, arc primitives), and
 // an independent Arb evaluation of the same values from the circle formulas (no exact

@@ -1,4 +1,4 @@
-// The exact engine as a BurningField (burn3/exact/exact_burning_field.h; issue 9): samples
+// The exact engine as a BurningField (burn3/exact/exact_burning_field.h; docs/exact-engine.md): samples
 // are the engine's certified enclosures, paths are geodesics from where the fire started
 // (BT = f(end) + length, the length and f computed here independently), the discrete
 // baseline lies above (gap shrinking in h), and medial curves from the exact field keep

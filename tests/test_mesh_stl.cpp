@@ -1,4 +1,4 @@
-// Meshes as people have them (issue 10, item 3): STL binary and ASCII, welding of exactly
+// Meshes as people have them (docs/formats.md): STL binary and ASCII, welding of exactly
 // repeated vertices, dropping of degenerate and repeated faces (with counts), and the
 // refusal, naming the file's faces, of what remains open, non-manifold or self-intersecting.
 // The STL files are written by tests/data/stl/make_stl.py.

@@ -1,4 +1,4 @@
-// One regression test per reader bug found by tests/fuzz/fuzz_readers (issue 10, item 6).
+// One regression test per reader bug found by tests/fuzz/fuzz_readers (docs/formats.md).
 // Each test feeds the reader a reduced form of the input that failed, and checks the clear
 // message that is now given instead.
 #include <catch2/catch.hpp>

@@ -1,5 +1,5 @@
 // axis_correspondence.h -- nearest points between two medial graphs of (nearly) one shape,
-// to compare an approximate axis and its EDF with a reference (issue 4: convergence of the
+// to compare an approximate axis and its EDF with a reference (docs/exactness.md: convergence of the
 // sampled axis to the exact polygon axis; 3.4 and 5.1.3: stability under perturbation).
 //
 // Computes:

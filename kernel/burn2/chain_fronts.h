@@ -1,4 +1,4 @@
-// chain_fronts.h -- the fronts inside one chain of a medial graph (DESIGN.md 4, 3.3).
+// chain_fronts.h -- the fronts inside one chain of a medial graph (docs/design.md 4, 3.3).
 //
 // Computes: for a chain x_0, e_1, ..., e_k, x_k (medial2/medial_chains.h) whose ends sent
 // fire into it at times s0 (from x_0) and / or s1 (from x_k), what the arrival-ordered

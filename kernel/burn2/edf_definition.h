@@ -4,7 +4,7 @@
 // the graph reached from x through one incident edge), reach(b) = max over leaves y in b
 // of d(x, y) + R(y), infinite when b leads into the 2-core. EDF(x) = R(x) at a leaf,
 // the second largest reach elsewhere, infinite on the 2-core (Definition 3 with Lemma 3;
-// DESIGN.md 4). Along an edge {i, j} of length w the EDF at distance s from i is
+// docs/design.md 4). Along an edge {i, j} of length w the EDF at distance s from i is
 // min(s + A_i, w - s + A_j), A_i the largest reach at i away from the edge; the EMA of
 // a tree component is the unique point where the EDF is largest (Prop 3), found by
 // exact comparison of node values and of the edge maxima (A_i + A_j + w) / 2.

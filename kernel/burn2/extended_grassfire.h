@@ -2,7 +2,7 @@
 //
 // Computes: the extended distance function EDF (3.1.2, Definition 3) at every node, its
 // piecewise-linear form along every edge, the extended medial axis EMA (Definition 4),
-// and the log of burning events, by the arrival-ordered event simulation of DESIGN.md 4:
+// and the log of burning events, by the arrival-ordered event simulation of docs/design.md 4:
 // each leaf z ignites at R(z); fire runs along edges at unit speed; a node burns when at
 // most one incident edge is still unarrived, and fire continues into that edge; fronts
 // arriving while two or more edges are unarrived annihilate; two fronts on one edge

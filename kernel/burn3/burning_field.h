@@ -40,7 +40,7 @@
 // border ignition or a source at p. path_in_triangle walks the winning window's chain of
 // parents: the straight piece back to the window's entry edge, the parent window that
 // emitted it (across a manifold edge: the same pseudo-source unfolded; across a singular
-// curve: the arriving window rotated about the curve, DESIGN.md 5), down to its origin on
+// curve: the arriving window rotated about the curve, docs/design.md 5), down to its origin on
 // the border or at a source. edge_points may be any subdivision (e.g. ceil(|e| / h) - 1
 // points, as the baseline) and edge_point_burn_time is the engine's BT at those points.
 // That implementation is burn3/exact/exact_burning_field.h. Nothing else changes:

@@ -5,7 +5,7 @@
 // for point sources s_i with start times t0_i, the function
 //     T(x) = min over i of t0_i + d_geodesic(s_i, x)
 // at arbitrary query points x: the burning time of the mesh burned as itself with point
-// sources and no border ignition (point_sources.h; DESIGN.md 5, reference case 3).
+// sources and no border ignition (point_sources.h; docs/design.md 5, reference case 3).
 // CGAL's shortest-path tree has no per-source offsets, so the sources are grouped by
 // t0 and each group gets its own sequence tree; T is the minimum over the groups of
 // t0 + the group's distance. Points are (face, barycentric weights of the mesh

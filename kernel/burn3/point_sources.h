@@ -1,11 +1,11 @@
-// point_sources.h -- fire started at points of a complex (issue 8: a closed mesh has no
+// point_sources.h -- fire started at points of a complex (docs/exact-engine.md: a closed mesh has no
 // border, so point sources are how it burns).
 //
 // A point source ignites one point x of the complex at time t0: BT(x) <= t0, and fire
 // leaves x in every direction at unit speed (4.2.3 with the ignition set extended by the
 // sources; a source at a point of a singular curve ignites it regardless of the link rule).
 // Sources add to the border's own ignition; without_border_ignition turns that off, so
-// that only the sources burn (multi-source geodesic distance on a manifold, DESIGN.md 5,
+// that only the sources burn (multi-source geodesic distance on a manifold, docs/design.md 5,
 // reference case 3).
 // Contract: each location lies on the complex (snap_squared == 0). Complexity: O(1) each.
 #pragma once

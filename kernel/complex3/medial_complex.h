@@ -7,7 +7,7 @@
 // planar sheet (else per triangle), the link of every vertex with its sectors (fans of
 // triangles between consecutive pole directions, 4.2.2 and Fig. 4.5), the vertex kinds
 // (interior, border, singular curve, singular point, ...), and the ignition function f
-// on border points (RawComplex rules; f = R by default). DESIGN.md 5.
+// on border points (RawComplex rules; f = R by default). docs/design.md 5.
 //
 // Vocabulary of the link (the graph a small sphere around a point cuts out of M):
 //  - link nodes are the incident edges (directions), link arcs are the incident triangles;
@@ -15,13 +15,13 @@
 //  - a sector is a maximal fan of incident triangles joined across non-pole edges; its two
 //    ends are poles or free ends (border edges), or it is closed (a full circle without
 //    poles, the neighbourhood of an interior point);
-//  - the burning condition at a point (DESIGN.md 5, Definition 9): with the arrived link
+//  - the burning condition at a point (docs/design.md 5, Definition 9): with the arrived link
 //    elements removed, the link contains no cycle (every disk type of Definition 8 is a
 //    cycle of the link and must have received fire), and at most one segment direction is
 //    left (the 2D rule of 3.3.1 for 1-dimensional parts). The condition is monotone: more
 //    arrivals never falsify it (Lemma 2).
 //  - a border point is a point at which the condition already holds with nothing arrived:
-//    it ignites at f. The corner c of the board and fin (DESIGN.md 5) has a circle in its
+//    it ignites at f. The corner c of the board and fin (docs/design.md 5) has a circle in its
 //    link and is not a border point, as Fig. 4.4 requires.
 //
 // Exactness: every combinatorial decision (degeneracy, duplicates, angular order around an

@@ -9,7 +9,7 @@
 // filtered construction (filtered_predicates3.h) must agree with.
 // Contract: a constructed MedialComplex. Complexity: O(sum over edges of k log k) rational
 // predicates for k triangles on an edge, plus O(corners) orientations.
-// Section: DESIGN.md 3 (every fast algorithm has a slow definition-level reference), 5.
+// Section: docs/design.md 3 (every fast algorithm has a slow definition-level reference), 5.
 #pragma once
 
 #include <cstdint>

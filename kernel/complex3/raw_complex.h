@@ -2,13 +2,13 @@
 //
 // The hand-over format between the medial-axis builders (convex polyhedron, union of
 // balls, mesh approximation, synthetic complexes, .ma files) and the MedialComplex,
-// which derives strata, sheets, sectors and links from it (ch. 4, DESIGN.md 5).
+// which derives strata, sheets, sectors and links from it (ch. 4, docs/design.md 5).
 // Coordinates are exact rationals; the medial ball at a vertex has squared radius
 // `radius_squared` (rational for every builder we have: Voronoi/power vertices of
 // rational input). Ignition along each border edge follows `border_rule`:
 //  - Linear: f interpolates the vertex values R linearly along the edge;
 //  - DistanceToPoint: f(x) = |x - p| for the given rational point p (the medial ball of a
-//    Voronoi-based axis touches the sample p; DESIGN.md 5);
+//    Voronoi-based axis touches the sample p; docs/design.md 5);
 //  - Never: a truncation border that never ignites (f = infinity).
 // Edges not listed in border_rules are Linear.
 #pragma once

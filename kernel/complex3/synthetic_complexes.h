@@ -2,7 +2,7 @@
 //
 // Computes: RawComplexes with exact rational vertices, and (where the answer is known in
 // closed form) the burning time BT at any point of them:
-//  - board and fin (4.1.2, 4.2.1, DESIGN.md 5, reference case 1), zero radius, a = 1: the
+//  - board and fin (4.1.2, 4.2.1, docs/design.md 5, reference case 1), zero radius, a = 1: the
 //    board {z = 0, y >= 0} truncated to [-E, E] x [0, E], the fin {(s, s, z): 1 <= s <= E,
 //    0 <= z <= E}, junction N from c = (1, 1, 0) to (E, E, 0). B (y = 0) and F (s = 1)
 //    ignite at f = 0; the truncation borders never ignite (IgnitionRule::Never). Every
@@ -14,7 +14,7 @@
 //    the cylinder is approximated by a prism over a k-gon whose vertices are exact rational
 //    points of the circle (not a regular k-gon: rational parametrisation of the circle).
 //    Board border and cylinder rim ignite at f = 0 (options: only the side y = -L, and the
-//    prism's height). No closed form (DESIGN.md gives none).
+//    prism's height). No closed form (docs/design.md gives none).
 //  - a book of k pages on one spine (z axis); page j is the rectangle [0, w_j] x [0, S] in
 //    the half-plane of a rational unit direction near angle 2 pi j / k. Every border edge
 //    ignites at f = 0 (zero radius). (Were top and bottom truncations that never ignite,
@@ -47,7 +47,7 @@ struct BoardFinOptions {
 RawComplex board_fin(const BoardFinOptions& options = {});
 // The kink k = (2 + sqrt 2, 2 + sqrt 2, 0) and BT there, 2 + sqrt 2.
 std::array<double, 3> board_fin_kink();
-// BT of the zero-radius board and fin at a point of it (DESIGN.md 5, derived in the .cpp):
+// BT of the zero-radius board and fin at a point of it (docs/design.md 5, derived in the .cpp):
 // fin (z > 0): sqrt2 (s - 1); N (x = y >= 1, z = 0): max(s, sqrt2 (s - 1));
 // board front side (y > x) with x > 2 + sqrt2: 2 + sqrt2 + |p - k|; elsewhere on the board: y.
 double board_fin_burning_time(const std::array<double, 3>& p);

@@ -299,7 +299,7 @@ LpdfResult largest_plate_distance(const MedialComplex& mc, const LpdfOptions& op
   return out;
 }
 
-// The board and fin with zero radius (DESIGN.md 5), a = 1, c = (1, 1, 0); F the fin's
+// The board and fin with zero radius (docs/design.md 5), a = 1, c = (1, 1, 0); F the fin's
 // border s = 1, B the board's y = 0, N the junction x = y >= 1 (z = 0). Definition 7 with
 // R = 0: the largest geodesic radius of a disk centred at p inside a locally embedded disk.
 //  - Fin: F is a border of every disk holding p, at distance sqrt2 (s - 1) inside the fin;

@@ -4,7 +4,7 @@
 // circumcentres of three input doubles (Voronoi vertices of boundary samples, 2.1.2).
 // A circumcentre is rational; it is kept as its three defining points plus an interval
 // enclosure, and its exact coordinates (GMP rationals) are computed only when the interval
-// filter cannot decide a sign (DESIGN.md 3: filter, then exact; fallbacks are counted).
+// filter cannot decide a sign (docs/design.md 3: filter, then exact; fallbacks are counted).
 // Contract: the three defining points of a circumcentre are not collinear.
 // Complexity: O(1) per predicate; the exact fallback costs a few dozen GMP operations.
 #pragma once

@@ -3,7 +3,7 @@
 //
 // Computes: the exact sign of orient(a, b, c) = det[b - a, c - a] for double points, and
 // every decision built on it (which segments meet and how; inside / boundary / outside).
-// Method (DESIGN.md 3): a double filter with Shewchuk's static error bound, then an exact
+// Method (docs/design.md 3): a double filter with Shewchuk's static error bound, then an exact
 // GMP fallback. The filter evaluates det = (a.x - c.x)(b.y - c.y) - (a.y - c.y)(b.x - c.x)
 // in round-to-nearest; Shewchuk (1997, "ccwerrboundA") proves |det - exact| <= (3 + 16 eps)
 // eps * (|l| + |r|), eps = 2^-53, l and r the two rounded products, when nothing underflows.
@@ -16,7 +16,7 @@
 // Contract: finite coordinates (readers and validate_shape reject NaN and infinity).
 // Complexity: O(1) per orientation (the fallback costs a few GMP rational operations);
 // locate_in_ring O(n) for n vertices.
-// Section: DESIGN.md 3; the input side of the 2D pipeline (dissertation 2.1.2, 3.3.2).
+// Section: docs/design.md 3; the input side of the 2D pipeline (dissertation 2.1.2, 3.3.2).
 #pragma once
 
 #include <cstdint>

@@ -12,7 +12,7 @@
 // can hold the answer is skipped.
 // Contract: boxes with finite or infinite bounds (never NaN). Complexity: construction
 // O(n log n); a search visits O(log n + k) nodes for k leaves within the bound.
-// Section: DESIGN.md 3 (filters prune, exact arithmetic decides).
+// Section: docs/design.md 3 (filters prune, exact arithmetic decides).
 #pragma once
 
 #include <array>

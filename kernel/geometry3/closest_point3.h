@@ -15,7 +15,7 @@
 // test has, so the exact computation takes the same branch, and every interval operation
 // encloses the exact operation on any points of its operands.
 // Contract: abc not collinear. Complexity: O(1) rational or interval operations.
-// Section: DESIGN.md 3 (interval filter, then exact); point location of point_location.h.
+// Section: docs/design.md 3 (interval filter, then exact); point location of point_location.h.
 #pragma once
 
 #include <gmpxx.h>

@@ -3,7 +3,7 @@
 // Computes: differences, dot and cross products, squared distances, and the three-valued
 // predicates the medial complex decides its combinatorics with: orientation of four
 // points, collinearity of three, lexicographic order. Everything is exact over Q (gmpxx),
-// as DESIGN.md 3 asks for topology decisions; no filter is needed at the sizes the
+// as docs/design.md 3 asks for topology decisions; no filter is needed at the sizes the
 // complex builds (one predicate per triangle or per edge-triangle pair).
 // Contract: none beyond finite rationals. Complexity: O(1) rational operations each.
 #pragma once

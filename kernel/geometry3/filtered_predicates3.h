@@ -12,10 +12,10 @@
 // static filter). Coordinates beyond 2^200 in magnitude (or not finite as doubles) skip the
 // filter: every degree-4 product below then stays far from overflow.
 // Counts: every predicate call counts as decided by the filter or by the exact stage
-// (DESIGN.md 3: count filter failures and exact fallbacks).
+// (docs/design.md 3: count filter failures and exact fallbacks).
 // Contract: the points outlive the object and do not change. Complexity: O(1) doubles per
 // predicate, O(1) rational operations when the filter fails; construction O(points).
-// Section: DESIGN.md 3 (interval filter, then exact), 5 (strata, angular order at edges).
+// Section: docs/design.md 3 (interval filter, then exact), 5 (strata, angular order at edges).
 #pragma once
 
 #include <array>

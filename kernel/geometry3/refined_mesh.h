@@ -1,4 +1,4 @@
-// refined_mesh.h -- closed test and benchmark meshes of 10^3 .. 10^5 faces (issue 8 item 7).
+// refined_mesh.h -- closed test and benchmark meshes of 10^3 .. 10^5 faces (docs/exact-engine.md).
 //
 // Computes: `smoothing` steps of Laplacian smoothing of a closed triangle mesh (each
 // vertex moves half way to the mean of its neighbours), then Loop subdivision (CGAL

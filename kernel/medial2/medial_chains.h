@@ -1,5 +1,5 @@
 // medial_chains.h -- the chains of a medial graph: maximal paths whose interior nodes
-// have degree 2 (DESIGN.md 4).
+// have degree 2 (docs/design.md 4).
 //
 // Computes: every path x_0, e_1, x_1, ..., e_k, x_k with x_1 .. x_{k-1} of degree 2 and
 // x_0, x_k of degree other than 2 (the stops: leaves, junctions, isolated nodes); x_0 =

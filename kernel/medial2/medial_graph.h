@@ -1,4 +1,4 @@
-// medial_graph.h -- the medial graph M of a planar shape (3.3.2; DESIGN.md 4).
+// medial_graph.h -- the medial graph M of a planar shape (3.3.2; docs/design.md 4).
 //
 // Computes nothing by itself: it is the data model every 2D algorithm reads. Nodes carry
 // a position and R (distance to the shape boundary); edges carry their kind (straight
@@ -150,7 +150,7 @@ class MedialGraph {
 };
 
 // The 2-core: nodes and edges left after repeatedly peeling leaves and isolated nodes
-// (DESIGN.md 4: the part with infinite EDF). O(n + m).
+// (docs/design.md 4: the part with infinite EDF). O(n + m).
 struct TwoCore {
   std::vector<bool> node_in_core;
   std::vector<bool> edge_in_core;

@@ -3,7 +3,7 @@
 // Computes: enclosures mid +- rad of real values; every operation returns a ball that
 // contains the exact result for all points of its operands (Arb's guarantee, including
 // sqrt and asinh). Used where a value is algebraic of higher degree or transcendental
-// (Voronoi vertices of segments, parabolic arc lengths: issue 4) and the double
+// (Voronoi vertices of segments, parabolic arc lengths: docs/exactness.md) and the double
 // Interval filter is too wide: the same formula is evaluated at more bits.
 // Contract: operands of sqrt are >= 0 somewhere in the ball (the result encloses the
 // root of the non-negative part, like Interval's sqrt); division by a ball containing

@@ -3,7 +3,7 @@
 // Computes: the ball enclosing an ExactSum without certified constants at the current
 // BallPrecision (rationals: ball_of(mpq_class) in number/ball.h). Used by the exact burning
 // engine (kernel/burn3/exact/) to re-evaluate an unfolding chain from its exact data at
-// rising precision (DESIGN.md 3).
+// rising precision (docs/design.md 3).
 // Contract: the sum carries no certified constants (std::invalid_argument).
 // Complexity: O(M(p)) per term at p bits.
 #pragma once

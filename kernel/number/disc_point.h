@@ -3,7 +3,7 @@
 //
 // Computes: enclosures of points (and unit directions) that are unfolded through long
 // chains of rigid motions, as the exact burning engine does when a window crosses the
-// edges of a curved sheet (kernel/burn3/exact/, DESIGN.md 5a).
+// edges of a curved sheet (kernel/burn3/exact/, docs/design.md 5a).
 // Why discs and not boxes: a rotation maps a disc onto a disc of the same radius, whereas
 // it maps an axis-aligned box onto a box up to sqrt(2) times wider (the wrapping effect);
 // after k unfoldings boxes grow like 2^(k/2), discs grow by the rounding errors only, i.e.

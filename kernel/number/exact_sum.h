@@ -3,13 +3,13 @@
 //
 // Computes: the exact sign of such a sum (hence exact comparison of burn times, which
 // are sums of a boundary distance and edge lengths along a path of the medial axis).
-// Method (DESIGN.md 3): a double interval filter, then MPFR enclosures at doubling
+// Method (docs/design.md 3): a double interval filter, then MPFR enclosures at doubling
 // precision; when those cannot separate the value from zero, an exact zero test.
 // Square roots of rationals in different square classes (r_i / r_j not the square of a
 // rational) are linearly independent over Q (Besicovitch 1940), so after grouping the
 // terms by square class the sum is zero iff every class coefficient is zero. A nonzero
 // sum is then separated from zero by raising the precision, which terminates.
-// Certified constants (transcendental values such as parabolic arc lengths, issue 4)
+// Certified constants (transcendental values such as parabolic arc lengths, docs/exactness.md)
 // cancel by identity, or, when no precision up to 512 bits separates the sum from zero,
 // by exact equality of pairs (CertifiedConstant::equals) among those whose enclosures
 // overlap. When the constants left are all square roots of constant-free sums (nested
@@ -107,7 +107,7 @@ class ExactSum {
   std::vector<ConstantTerm> constants_;
 };
 
-// How often each stage of the certified sign decided (DESIGN.md 3: count fallbacks).
+// How often each stage of the certified sign decided (docs/design.md 3: count fallbacks).
 struct NumberStats {
   std::uint64_t filter_decided = 0;    // decided by the double interval
   std::uint64_t extended_decided = 0;  // decided by x87 extended-precision enclosures

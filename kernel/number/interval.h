@@ -8,7 +8,7 @@
 // correctly rounded IEEE operation errs by at most half an ulp. No FPU mode is changed, so this
 // type mixes freely with code that relies on round-to-nearest.
 // Complexity: O(1) per operation.
-// Section: DESIGN.md 3 (the interval filter in front of every exact fallback).
+// Section: docs/design.md 3 (the interval filter in front of every exact fallback).
 #pragma once
 
 #include <algorithm>

@@ -1,5 +1,5 @@
 // parabolic_arc.h -- certified length of a parabolic arc (the focus-directrix bisector of
-// a point site and a segment site, issue 4), and a rigorous double asinh.
+// a point site and a segment site, docs/exactness.md), and a rigorous double asinh.
 //
 // Computes: for a parabola with focal parameter p > 0 (distance from the focus to the
 // directrix), parametrised by xi, the signed coordinate along the directrix measured

@@ -7,7 +7,7 @@
 // vertices, and the points where three of them meet (the medial axis inside the alpha
 // complex, Amenta-Kolluri 2001), have coordinates in such a field. A product of radicals
 // is kept symbolically as the set of its ids (sqrt(s_r)^2 = s_r), so radicands never grow.
-// Sign (DESIGN.md 3): a double interval filter, then the number layer's certified sign of
+// Sign (docs/design.md 3): a double interval filter, then the number layer's certified sign of
 // the equivalent ExactSum (MPFR enclosures, then the exact square-class zero test, which
 // also catches radicals that are dependent over Q).
 // Contract: every number of one expression uses the same RadicalTable; at most

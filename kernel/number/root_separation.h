@@ -1,5 +1,5 @@
 // root_separation.h -- the exact sign of a sum of square roots of sums of square roots,
-// by a root-separation bound (DESIGN.md 3: "then proof of equality").
+// by a root-separation bound (docs/design.md 3: "then proof of equality").
 //
 // Computes: the sign of x = q + sum_j c_j sqrt(s_j) + sum_i d_i sqrt(E_i), with rationals
 // q, c_j, d_i, s_j >= 0 and radicands E_i >= 0 that are themselves constant-free sums

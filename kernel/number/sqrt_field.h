@@ -3,7 +3,7 @@
 // Computes: exact products of ExactSums without constants (sqrt(a) sqrt(b) = sqrt(ab)),
 // and quotients by rationalising the denominator with conjugates (x / (a + b sqrt r) =
 // x (a - b sqrt r) / (a^2 - b^2 r)), which keeps Voronoi vertices of segment sites in the
-// form q + sum c_i sqrt(r_i) whenever they lie in a multiquadratic field (issue 4: exact
+// form q + sum c_i sqrt(r_i) whenever they lie in a multiquadratic field (docs/exactness.md: exact
 // R where the geometry allows). Also: the exact square root of a rational when it is
 // rational, and denesting sqrt(u + v sqrt m) when u^2 - v^2 m is a rational square.
 // Contract: no certified constants in the operands (checked: std::invalid_argument).

@@ -20,7 +20,7 @@
 // (std::invalid_argument for a bad method or spacing); nothing is returned then.
 // Complexity: that of the builder (for shapes), O(cells) per located point plus exact
 // evaluations (point_location.h), and the method's.
-// Section: ch. 4 (Definitions 9-10), DESIGN.md 5.
+// Section: ch. 4 (Definitions 9-10), docs/design.md 5.
 #pragma once
 
 #include <nlohmann/json.hpp>

@@ -1,5 +1,5 @@
 // burn3d_exact.cpp -- `burn3d --method exact`: the exact window-propagation engine
-// (kernel/burn3/exact/, issue 8).
+// (kernel/burn3/exact/, docs/exact-engine.md).
 //
 // The engine burns from the point sources and the border rules (Linear, DistanceToPoint,
 // Never; pipeline/burn3d.h turns them off for --no-border-ignition), then reads BT at the
@@ -7,11 +7,11 @@
 // returned as its midpoint with the half-width rounded up as bt_error, so that
 // |bt - BT| <= bt_error holds for every finite value. Complexes this part of the engine
 // Singular edges follow the junction rule of Definition 9 and singular points the link rule
-// (issue 9); --singular-walls asks for part 1's semantics instead (fronts stop at every
+// (docs/exact-engine.md); --singular-walls asks for the walls semantics instead (fronts stop at every
 // singular edge: an upper bound of BT off the curves; the report and the summary say so).
 // The report holds the propagation's counters, the events by type, one counter per
 // certification stage ("uncertified" counts the wedge decisions no stage certified, each
-// taken as collinear and reported, DESIGN.md 3), and the kinks, merges and quench points of
+// taken as collinear and reported, docs/design.md 3), and the kinks, merges and quench points of
 // the junction rule (junction_points.h), each a point of a singular edge with BT there:
 // {"x","y","z","bt","error"}, |coordinate or bt - exact| <= error (exact parameters are
 // enclosed from their closed form), with the count of switch points left unclassified.
@@ -48,7 +48,7 @@ nlohmann::json propagation_report(const PropagationStats& s) {
           {"uncertified_breaks", s.uncertified_breaks}};
 }
 
-// Events by type (issue 9): windows reaching a vertex or a singular edge, the switch
+// Events by type (docs/exact-engine.md): windows reaching a vertex or a singular edge, the switch
 // points of the singular edges' (k-1)-th arrival by type (kinks, merges, quenches, tangent
 // handovers, unclassified; junction_points.h), vertices burned by the link rule (singular points and
 // curve vertices included), ends of burned stretches; then the engine's own counters:

@@ -11,7 +11,7 @@
 // |bt - BT| (+infinity when the method certifies no two-sided bound: the discrete
 // baseline is an upper bound only); vertex_bt_error likewise per vertex. report holds the method's own counters (timings,
 // event counts, certification counts); summary is one line for stdout.
-// Complexity: that of the method. Section: ch. 4 (Definitions 9-10), DESIGN.md 5.
+// Complexity: that of the method. Section: ch. 4 (Definitions 9-10), docs/design.md 5.
 #pragma once
 
 #include <nlohmann/json.hpp>
@@ -37,8 +37,8 @@ struct BurnRequest {
   std::function<void(const std::string&, double)> progress;
   std::string input;               // names the input in a method's messages
   // exact: burn a complex with singular edges or singular points anyway, with every
-  // singular edge a wall (fire stops there; issue 8, part 1). That is not Definition 9's
-  // BT (which needs the junction rule, issue 9): the report says so.
+  // singular edge a wall (fire stops there; docs/exact-engine.md). That is not Definition 9's
+  // BT (which needs the junction rule, docs/exact-engine.md): the report says so.
   bool singular_walls = false;
 };
 
@@ -59,7 +59,7 @@ struct BurnOutcome {
 
 // Dijkstra over vertices and Steiner points (burn3/discrete/discrete_burning.h, discrete_query.h).
 BurnOutcome burn_by_discrete(const BurnRequest& request);
-// The exact window-propagation engine (issue 8); pipeline/burn3d_exact.cpp.
+// The exact window-propagation engine (docs/exact-engine.md); pipeline/burn3d_exact.cpp.
 BurnOutcome burn_by_exact(const BurnRequest& request);
 
 using BurnMethod = BurnOutcome (*)(const BurnRequest&);

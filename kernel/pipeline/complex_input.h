@@ -8,7 +8,7 @@
 // balls). Errors name the input; nothing is written. `grassfire burn3d`, `grassfire complex`
 // and the Python module's grassfire.burn3d read their INPUT through it.
 // Complexity: that of the reader or builder the input selects.
-// Section: DESIGN.md 5 (the complexes of ch. 4).
+// Section: docs/design.md 5 (the complexes of ch. 4).
 #pragma once
 
 #include <string>

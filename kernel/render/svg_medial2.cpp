@@ -181,7 +181,7 @@ Medial2Field parse_medial2_field(const std::string& name) {
   throw std::invalid_argument("field must be edf, et, st or r, got '" + name + "'");
 }
 
-// The quench point lies at (w + Tv - Tu) / 2 from u (DESIGN.md 4).
+// The quench point lies at (w + Tv - Tu) / 2 from u (docs/design.md 4).
 std::vector<double> field_breakpoints(const MedialGraph& g, const GrassfireResult& r, std::uint32_t e) {
   const double w = g.edge(e).length.mid();
   std::vector<double> s{0.0};

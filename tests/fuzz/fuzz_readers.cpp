@@ -1,4 +1,4 @@
-// fuzz_readers.cpp -- mutation fuzzing of every input reader (issue 10, item 6).
+// fuzz_readers.cpp -- mutation fuzzing of every input reader (docs/formats.md).
 //
 // Usage: fuzz_readers [--inputs N] [--seed S] [--reader NAME]... [--timeout SECONDS]
 //                     [--memory-mb M] [--findings DIR] [--deep] [--print-rejections]

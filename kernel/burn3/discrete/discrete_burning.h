@@ -1,4 +1,4 @@
-// discrete_burning.h -- the discrete burning baseline on a medial complex (DESIGN.md 5).
+// discrete_burning.h -- the discrete burning baseline on a medial complex (docs/design.md 5).
 //
 // Computes: an approximation of the burning time BT (Definitions 9-10, 4.2.3) at every
 // vertex of a MedialComplex and at Steiner points placed on every edge at spacing <= h,
@@ -6,7 +6,7 @@
 // of the authors' later erosion-thickness code (Yan et al. 2016): Dijkstra over vertices
 // plus Steiner points, with sector bookkeeping at junctions.
 //
-// The rule (our discretisation of Definition 9; DESIGN.md 5 gives the operational form):
+// The rule (our discretisation of Definition 9; docs/design.md 5 gives the operational form):
 //  * Graph: vertices, and n_e = ceil(|e| / h) - 1 equally spaced Steiner points inside
 //    each edge e. Moves are straight segments: between consecutive points of one edge, and
 //    across a triangle between a point of one of its edges and a point of another edge

@@ -1,7 +1,7 @@
 // discrete_query.h -- the discrete baseline's burning time at any point of the complex.
 //
 // Computes: an upper bound on BT at a point x of the complex from a finished
-// DiscreteBurning (DESIGN.md 5), by one more step of the baseline's own rule at x, as if x
+// DiscreteBurning (docs/design.md 5), by one more step of the baseline's own rule at x, as if x
 // were a graph point joined to the graph points of its closed triangles:
 //  - x at a vertex, or exactly at a Steiner point: that point's discrete BT;
 //  - x inside a triangle t: the first arrival, min over the graph points y on t's boundary

@@ -1,4 +1,4 @@
-// steiner_graph.h -- the graph of the discrete burning baseline (DESIGN.md 5).
+// steiner_graph.h -- the graph of the discrete burning baseline (docs/design.md 5).
 //
 // Computes: the graph points of a medial complex at Steiner spacing h (its vertices, and
 // n_e = ceil(|e| / h) - 1 equally spaced points inside each edge e, at parameters

@@ -1,6 +1,6 @@
 // boost_filter_robust_fpt.h -- Boost.Polygon's robust_fpt (a value with its relative error
 // in ulps) on FilterFloat enclosures (number/filter_float.h), for the filter stage of the
-// mp traits (boost_mp_traits.h; 2.1.1, DESIGN.md 3). Included by boost_mp_traits.h only.
+// mp traits (boost_mp_traits.h; 2.1.1, docs/design.md 3). Included by boost_mp_traits.h only.
 //
 // Computes: what Boost's generic robust_fpt computes, operation for operation, except the
 // relative error of a sum of opposite signs, |(a re_a -+ b re_b) / (a +- b)|, when the

@@ -1,6 +1,6 @@
 // boost_mp_traits.h -- coordinate type traits that run Boost.Polygon's Voronoi builder on
 // integer coordinates of any size (the mp binary policy of polygon_axis.h: every finite
-// double polygon; 2.1.1, DESIGN.md 3). Included by segment_voronoi_boost_mp.cpp only.
+// double polygon; 2.1.1, docs/design.md 3). Included by segment_voronoi_boost_mp.cpp only.
 //
 // Boost's predicates rest on three assumptions about the traits (see boost_wide_traits.h):
 // (a) input coordinates convert to fpt_type exactly; (b) orientation tests and the integer

@@ -1,6 +1,6 @@
 // boost_wide_traits.h -- coordinate type traits that run Boost.Polygon's Voronoi builder on
 // integer coordinates of up to 62 bits (the wide binary policy of polygon_axis.h; 2.1.1,
-// DESIGN.md 3). Included by segment_voronoi_boost.cpp only.
+// docs/design.md 3). Included by segment_voronoi_boost.cpp only.
 //
 // Boost's predicates are built on three assumptions about the traits (its "Voronoi
 // Predicates" and "advanced tutorial" pages): (a) input coordinates convert to fpt_type

@@ -1,5 +1,5 @@
-// polygon_axis.h -- the exact medial axis of a polygon with holes (2.1.1; DESIGN.md 4;
-// issue 4).
+// polygon_axis.h -- the exact medial axis of a polygon with holes (2.1.1; docs/design.md 4;
+// docs/exactness.md).
 //
 // Computes: the medial graph M of a polygon: the interior part of the segment Voronoi
 // diagram of its vertices (point sites) and edges (open segment sites), without the

@@ -1,5 +1,5 @@
 // polygon_axis_validate.h -- the definition-level check of an exact polygon axis
-// (2.1.1: a medial point has two or more closest boundary points; issue 4).
+// (2.1.1: a medial point has two or more closest boundary points; docs/exactness.md).
 //
 // Checks, by brute force over every boundary segment of the polygon:
 //  1. every node is equidistant to each of its defining sites: an exact zero when the

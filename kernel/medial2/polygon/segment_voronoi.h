@@ -1,12 +1,12 @@
 // segment_voronoi.h -- the interior segment Voronoi diagram of a polygon with holes, as
-// exact topology over named sites (2.1.1; issue 4).
+// exact topology over named sites (2.1.1; docs/exactness.md).
 //
 // Computes: the Voronoi vertices and edges of the sites of a polygon (each polygon
 // vertex is a point site, each polygon edge an open segment site) that lie inside the
 // polygon, without the edges that separate a segment from its own endpoint (their
 // points have a single closest boundary point, so they are not medial). Every vertex
 // lists its defining sites in counter-clockwise order around it; convex polygon vertices
-// are apex vertices (R = 0, leaves of the medial axis, DESIGN.md 4).
+// are apex vertices (R = 0, leaves of the medial axis, docs/design.md 4).
 // Two constructions with exact topology: Boost.Polygon's voronoi builder (integer input
 // up to int32 with its default traits, or within 2^62 of the frame's centre with the wide
 // traits of boost_wide_traits.h, or any finite doubles with the mp traits of

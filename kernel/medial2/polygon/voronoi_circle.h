@@ -1,5 +1,5 @@
 // voronoi_circle.h -- the empty circle at a Voronoi vertex of point and segment sites:
-// centre and radius R, from the defining sites (2.1.1; issue 4).
+// centre and radius R, from the defining sites (2.1.1; docs/exactness.md).
 //
 // Computes, for three sites given counter-clockwise around the vertex, the circle
 // tangent to the three (through a point site, touching a segment's line on the

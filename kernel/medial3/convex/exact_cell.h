@@ -10,7 +10,7 @@
 // created it, and every later plane that evaluated to exactly zero at it). Builders turn
 // supports into global keys, so that the same point computed in different cells is
 // recognised without comparing coordinates.
-// Decisions (DESIGN.md 3): side of a vertex = the support test, then a double interval
+// Decisions (docs/design.md 3): side of a vertex = the support test, then a double interval
 // filter, then a caller-supplied structural zero (a plane known to contain the point:
 // the filter can never certify a nonzero sign there, so asking it first changes no
 // decision and spares the oracle on most tests), then the exact sign of  a X + b Y + c Z + d W  over the field (X, Y, Z, W homogeneous

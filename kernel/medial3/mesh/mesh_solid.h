@@ -23,7 +23,7 @@
 // Complexity: a uniform grid over the (y, z) projection of the triangles' bounding boxes;
 // a query visits the triangles of one grid cell, O(1) expected for well-shaped meshes.
 // solid_topology is O(F log F + s^2 q) for s shells and q the cost of a query.
-// Section: 2.1 (the shape whose medial axis is built), DESIGN.md 3 (certified decisions).
+// Section: 2.1 (the shape whose medial axis is built), docs/design.md 3 (certified decisions).
 #pragma once
 
 #include <array>
