@@ -18,7 +18,7 @@ namespace {
 constexpr double kLength = 4, kHalfThickness = 0.01, kTooth = 0.1, kPeriod = 0.1;
 
 // Coordinates in thousandths, written as the doubles nearest to those decimals, so that
-// the exact polygon axis runs on the decimal grid (Boost.Polygon; README).
+// the exact polygon axis runs on the decimal grid (Boost.Polygon; docs/exactness.md).
 Point2 thousandths(long x, long y) { return {x / 1000.0, y / 1000.0}; }
 
 Shape2 strip(bool teeth) {

@@ -44,7 +44,7 @@
 // overlapping bounding boxes; rational arithmetic only for the decisions the filter leaves
 // (exact coplanarity in planar sheets, degenerate configurations); validate() the same
 // without the embedding; a frame O(1) rationals; accessors O(1).
-// Measured (bench_complex_build, Loop-refined closed meshes): see README.
+// Measured (bench_complex_build, Loop-refined closed meshes): see docs/benchmarks.md.
 #pragma once
 
 #include <gmpxx.h>

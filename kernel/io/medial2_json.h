@@ -1,6 +1,6 @@
 // medial2_json.h -- the JSON output of `grassfire edf2d` (format "grassfire-medial2d").
 //
-// Format, version 1 (documented in README.md; later versions add members, never remove
+// Format, version 1 (documented in docs/formats.md; later versions add members, never remove
 // or change one):
 //   {"format": "grassfire-medial2d", "version": 1,
 //    "shape": NAME, "variant": "exact"|"dissertation", "samples": N,

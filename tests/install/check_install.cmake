@@ -1,5 +1,5 @@
 # check_install.cmake -- installs the built grassfire into a fresh temporary prefix, then
-# configures, builds and runs the consumer project against it (README: "Using grassfire as
+# configures, builds and runs the consumer project against it (docs/library.md: "Using grassfire as
 # a library"). Nothing is rebuilt: `cmake --install` copies what the build made.
 # Run as: cmake -DBUILD_DIR=... -DCONSUMER=... -DCXX=... [-DLAUNCHER=...] -P check_install.cmake
 set(tmp_root "$ENV{TMPDIR}")
