@@ -37,6 +37,7 @@
 #include "shapes/resample.h"
 #include "shard.h"
 #include "cli.h"
+#include "support/cpu_clock.h"
 
 using namespace grassfire;
 
@@ -56,10 +57,6 @@ struct Row {
   std::string error;
 };
 
-double seconds_since(std::chrono::steady_clock::time_point t0) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-}
-
 std::vector<Row> run_shape(const std::string& arg, const std::string& label, const std::vector<std::size_t>& levels) {
   std::vector<Row> rows;
   try {
@@ -77,7 +74,7 @@ std::vector<Row> run_shape(const std::string& arg, const std::string& label, con
         Edf2dOptions opt;
         opt.samples = n;
         const Edf2dResult sampled = compute_edf2d(shape, opt);
-        r.seconds = seconds_since(t0);
+        r.seconds = wall_seconds_since(t0);
         r.nodes = sampled.graph->node_count();
         // Junction-tolerant error: any point of the exact axis within three sample spacings
         // more than the nearest one (axis_correspondence.h); a sampled junction sits up to

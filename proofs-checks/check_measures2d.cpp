@@ -41,13 +41,13 @@
 #include "shapes/builtin_shapes.h"
 #include "io/disk_list.h"
 #include "io/load_shape.h"
+#include "support/cpu_clock.h"
 
 namespace grassfire::checks {
 
 namespace {
 
 using Clock = std::chrono::steady_clock;
-double seconds_since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
 
 struct TimedTally : Tally {
   double seconds = 0;
@@ -123,7 +123,7 @@ bool ema_matches(const MedialGraph& g, const GrassfireResult& burn, const RatePr
 void check_rate_pruning(const MedialGraph& g, const GrassfireResult& burn, TimedTally& identity, Tally& maximum) {
   const auto t0 = Clock::now();
   const RatePruning rp = rate_pruning(g);
-  identity.seconds += seconds_since(t0);
+  identity.seconds += wall_seconds_since(t0);
   check_identity(g, burn, rp, identity);
   ++maximum.instances;
   const std::vector<std::uint32_t> comp = g.component_of_nodes();
@@ -183,7 +183,7 @@ struct ResidueTallies {
 void check_residue(const CheckContext& ctx, const MedialGraph& g, const ClosestPoints& cp, ResidueTallies& t) {
   const auto t0 = Clock::now();
   PotentialResidue pr = potential_residue(g, cp);
-  t.unique.seconds += seconds_since(t0);
+  t.unique.seconds += wall_seconds_since(t0);
   mutate_residue(ctx, g, pr);
   const ResidueMonotonicity m = residue_monotonicity(g, pr);
   const double scale = pr.maximum.value.value.mid();

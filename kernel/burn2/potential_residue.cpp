@@ -11,14 +11,6 @@ namespace grassfire {
 
 namespace {
 
-Interval abs_of(const Interval& a) {
-  if (a.lo >= 0) return a;
-  if (a.hi <= 0) return -a;
-  return {0.0, std::fmax(-a.lo, a.hi)};
-}
-
-Interval min_of(const Interval& a, const Interval& b) { return {std::fmin(a.lo, b.lo), std::fmin(a.hi, b.hi)}; }
-
 Point2 mid(const IntervalPoint2& p) { return {p.x.mid(), p.y.mid()}; }
 
 class Residues {

@@ -95,6 +95,13 @@ inline Interval hull(const Interval& a, const Interval& b) {
 // Certified sign of an interval: +1 / -1 when the interval excludes zero, 0 when it is
 // the point zero, and `undecided` (2) otherwise.
 constexpr int kUndecided = 2;
+// |a| and min(a, b) as intervals: exact on the end points (no rounding needed).
+inline Interval abs_of(const Interval& a) {
+  if (a.lo >= 0) return a;
+  if (a.hi <= 0) return -a;
+  return {0.0, std::fmax(-a.lo, a.hi)};
+}
+inline Interval min_of(const Interval& a, const Interval& b) { return {std::fmin(a.lo, b.lo), std::fmin(a.hi, b.hi)}; }
 inline int certified_sign(const Interval& a) {
   if (a.lo > 0) return 1;
   if (a.hi < 0) return -1;

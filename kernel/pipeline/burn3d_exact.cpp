@@ -25,6 +25,7 @@
 #include "burn3/exact/exact_burning.h"
 #include "burn3/exact/junction_points.h"
 #include "pipeline/burn3d_methods.h"
+#include "support/cpu_clock.h"
 
 namespace grassfire {
 
@@ -90,10 +91,6 @@ nlohmann::json certification_report(const CertificationCounts& c) {
           {"max_bits", c.max_bits}};
 }
 
-double seconds_since(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
-
 }  // namespace
 
 BurnOutcome burn_by_exact(const BurnRequest& request) {
@@ -136,7 +133,7 @@ BurnOutcome burn_by_exact(const BurnRequest& request) {
   const JunctionPoints junction = junction_points(eb);
   const CertificationCounts& c = eb.certification();
   const QueryCounts& q = eb.query_counts();
-  out.report = {{"seconds", seconds_since(start)},
+  out.report = {{"seconds", wall_seconds_since(start)},
                 {"propagation_seconds", propagation_seconds},
                 {"propagation", propagation_report(eb.propagation().stats())},
                 {"certification", certification_report(c)},

@@ -13,13 +13,13 @@
 #include "medial2/disks/disk_union_triangulations.h"
 #include "support/union_find.h"
 #include "number/sqrt_field.h"
+#include "support/cpu_clock.h"
 
 namespace grassfire {
 
 namespace {
 
 using Clock = std::chrono::steady_clock;
-double seconds_since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
 
 // pi_d(x, y) = |(x, y) - c|^2 - r^2, the power of a point with respect to a disk.
 mpq_class power(const Disk& d, const mpq_class& x, const mpq_class& y) {
@@ -62,15 +62,15 @@ class DiskUnionBuilder {
     auto t = Clock::now();
     build_dual();
     build_arcs();
-    report_.dual_seconds = seconds_since(t);
+    report_.dual_seconds = wall_seconds_since(t);
     t = Clock::now();
     build_voronoi();
-    report_.voronoi_seconds = seconds_since(t);
+    report_.voronoi_seconds = wall_seconds_since(t);
     t = Clock::now();
     seed_centers();
     propagate();
     MedialGraph g = assemble();
-    report_.axis_seconds = seconds_since(t);
+    report_.axis_seconds = wall_seconds_since(t);
     report_.predicates = predicates_.stats();
     report_.predicates.merge(stats_);
     return g;

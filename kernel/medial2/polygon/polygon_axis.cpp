@@ -26,7 +26,6 @@ namespace {
 // An enclosure is re-evaluated in Arb when it has fewer than this many relative bits.
 constexpr int kTightBits = 40;
 
-double seconds_since(double t0) { return thread_seconds() - t0; }
 
 bool is_tight(const Interval& a) {
   const double m = std::fmax(std::fabs(a.lo), std::fabs(a.hi));
@@ -418,11 +417,11 @@ MedialGraph exact_polygon_axis(const Shape2& shape, const PolygonAxisOptions& op
   rep.frame_scale = 1 / frame.to_input.get_d();
   rep.polygon_vertices = frame.sites.vertex_count();
   rep.voronoi_vertices = topo.vertices.size();
-  rep.voronoi_seconds = seconds_since(t0);
+  rep.voronoi_seconds = thread_seconds_since(t0);
   const double t1 = thread_seconds();
   MedialGraph g = Builder(frame, std::move(topo), rep).run();
-  rep.values_seconds = seconds_since(t1);
-  rep.total_seconds = seconds_since(t0);
+  rep.values_seconds = thread_seconds_since(t1);
+  rep.total_seconds = thread_seconds_since(t0);
   return g;
 }
 

@@ -14,11 +14,6 @@ namespace grassfire {
 
 namespace {
 
-Interval abs_of(const Interval& a) {
-  if (a.lo >= 0) return a;
-  if (a.hi <= 0) return -a;
-  return {0.0, std::fmax(-a.lo, a.hi)};
-}
 Ball abs_of(const Ball& a) {
   Ball r;
   arb_abs(r.get(), a.get());

@@ -20,7 +20,6 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-double seconds_since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
 
 // An output value from a certified enclosure: a simple rational inside it when `is_value`
 // confirms it exactly, else the midpoint with its error; `precise` when the enclosure is
@@ -342,7 +341,7 @@ UnionOfBallsAxis union_of_balls_axis(const BallSet& balls, const UnionOfBallsOpt
   };
   out.complex.source = balls.source + " (union-of-balls medial axis)";
   const RegularTriangulation rt = regular_triangulation(balls);
-  out.triangulation_seconds = seconds_since(start);
+  out.triangulation_seconds = wall_seconds_since(start);
   stage("regular triangulation");
   const AlphaComplex k(balls, rt);
   stage("alpha complex (classification)");
@@ -371,7 +370,7 @@ UnionOfBallsAxis union_of_balls_axis(const BallSet& balls, const UnionOfBallsOpt
   stage("assembly");
   a.finish();
   stage("output values and border rules");
-  out.total_seconds = seconds_since(start);
+  out.total_seconds = wall_seconds_since(start);
   return out;
 }
 

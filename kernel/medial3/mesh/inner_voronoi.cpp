@@ -27,7 +27,6 @@ using P3 = std::array<double, 3>;
 
 constexpr std::uint32_t kNone = UINT32_MAX;
 
-double seconds_since(double t) { return cpu_seconds() - t; }
 
 std::uint64_t pair_key(std::uint32_t a, std::uint32_t b) {
   if (a > b) std::swap(a, b);
@@ -48,18 +47,18 @@ class Extractor {
   void run() {
     double t = cpu_seconds();
     triangulate();
-    out_->delaunay_seconds = seconds_since(t);
+    out_->delaunay_seconds = cpu_seconds_since(t);
     t = cpu_seconds();
     number_cells();
     merge_cospherical();
     classify();
     estimate_feature_size();
-    out_->classify_seconds = seconds_since(t);
+    out_->classify_seconds = cpu_seconds_since(t);
     t = cpu_seconds();
     extract_polygons();
     extract_segments();
     collapse_sample_cells();
-    out_->extract_seconds = seconds_since(t);
+    out_->extract_seconds = cpu_seconds_since(t);
   }
 
  private:

@@ -18,7 +18,6 @@ namespace grassfire {
 namespace {
 
 
-double seconds_since(double t) { return cpu_seconds() - t; }
 
 // The angle test of a Voronoi vertex x against two samples u, v on its empty sphere:
 // |u - v|^2 >= kappa R(x)^2. In lattice units R(x) = |N| / |D| (the centre is
@@ -421,7 +420,7 @@ MeshAxis mesh_medial_axis(const TriangleMesh3& mesh, const MeshAxisOptions& opti
   MeshAxis out;
   out.solid = solid_topology(mesh);
   const SolidLocator solid(mesh);
-  out.check_seconds = seconds_since(start);
+  out.check_seconds = cpu_seconds_since(start);
   std::vector<double> spacing(mesh.triangles.size(), mean_edge_length(mesh) / options.samples_per_edge);
   std::optional<AcceptedAxis> accepted;
   for (int round = 0;; ++round) {
@@ -436,7 +435,7 @@ MeshAxis mesh_medial_axis(const TriangleMesh3& mesh, const MeshAxisOptions& opti
       throw MeshAxisTopologyError(mesh.source + ": " + std::to_string(r.samples) + " samples would exceed the limit of " +
                                   std::to_string(options.max_samples));
     }
-    r.sample_seconds = seconds_since(t);
+    r.sample_seconds = cpu_seconds_since(t);
     // A thickness round that adds under min_thickness_growth samples refines a handful of triangles (at
     // the ends of sheets) for the cost of a whole round: the accepted axis stands.
     if (accepted && out.rounds.back().betti == out.solid.betti &&
@@ -460,16 +459,16 @@ MeshAxis mesh_medial_axis(const TriangleMesh3& mesh, const MeshAxisOptions& opti
     AxisCells cells = axis_cells(vor, pruned);
     r.kept_polygons = cells.polygons.size();
     r.kept_segments = cells.segments.size();
-    r.prune_seconds = seconds_since(t);
+    r.prune_seconds = cpu_seconds_since(t);
     t = cpu_seconds();
     r.betti = polygonal_betti_numbers(cells.voronoi_vertex.size(), cells.segments, cells.rings);
-    r.betti_seconds = seconds_since(t);
+    r.betti_seconds = cpu_seconds_since(t);
     const bool right = r.betti == out.solid.betti;
     if (right) {
       t = cpu_seconds();
       std::vector<double> next = spacing;
       r.coarse_triangles = refine_thin(vor, keep, options, &next);
-      r.refine_seconds = seconds_since(t);
+      r.refine_seconds = cpu_seconds_since(t);
       out.rounds.push_back(r);
       accepted = AcceptedAxis{out.rounds.size() - 1, std::move(vor), std::move(cells)};
       if (r.coarse_triangles == 0 || round >= options.max_refinements) break;
@@ -489,7 +488,7 @@ MeshAxis mesh_medial_axis(const TriangleMesh3& mesh, const MeshAxisOptions& opti
     }
     t = cpu_seconds();
     refine(vor, options, &spacing);
-    out.rounds.back().refine_seconds = seconds_since(t);
+    out.rounds.back().refine_seconds = cpu_seconds_since(t);
   }
   const double t = cpu_seconds();
   out.axis_round = accepted->round;
@@ -497,8 +496,8 @@ MeshAxis mesh_medial_axis(const TriangleMesh3& mesh, const MeshAxisOptions& opti
   out.samples = std::move(accepted->vor.samples);
   out.axis_betti = out.rounds[out.axis_round].betti;
   out.exact_locator_tests = solid.stats().exact_tests;
-  out.assemble_seconds = seconds_since(t);
-  out.total_seconds = seconds_since(start);
+  out.assemble_seconds = cpu_seconds_since(t);
+  out.total_seconds = cpu_seconds_since(start);
   return out;
 }
 
