@@ -11,7 +11,9 @@
 # f, or a is on a lower line than f. Every other include is a violation unless the line
 # "<file> -> <included path>" is in ALLOW (with its reason after a '#'). A folder of kernel/
 # holding .h or .cpp files but missing from the order, and an include of a folder that is
-# not in it, are violations too. Exits with an error listing every violation.
+# not in it, are violations too, and so is an installed header including a header that is not
+# installed (*_detail.h, boost_*.h: see install() in CMakeLists.txt). Exits with an error
+# listing every violation.
 cmake_policy(VERSION 3.18)
 foreach(var KERNEL ORDER ALLOW)
   if(NOT DEFINED ${var})
@@ -83,6 +85,13 @@ foreach(src IN LISTS sources)
       continue()  # a file of the same folder, or kernel/grassfire_version.h
     endif()
     string(REGEX REPLACE "/.*" "" to "${path}")
+    # A header that is installed must not include one that is not (CMakeLists.txt, install).
+    get_filename_component(target_name "${path}" NAME)
+    get_filename_component(src_name "${src}" NAME)
+    if(src MATCHES "\\.h$" AND NOT src_name MATCHES "(_detail\\.h|^boost_.*\\.h)$"
+       AND target_name MATCHES "(_detail\\.h|^boost_.*\\.h)$")
+      list(APPEND violations "${src} -> ${path}: an installed header includes one that is not installed")
+    endif()
     if(to STREQUAL from)
       continue()
     endif()
