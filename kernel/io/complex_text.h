@@ -18,15 +18,16 @@
 #include <string>
 #include <vector>
 
+#include "support/format_error.h"
 #include "support/number_text.h"  // shortest_double, which the 3D writers use
 
 namespace grassfire {
 
 // A file that cannot be read or parsed. what() is "<path>:<line>: <problem>" (or
 // "<path>: <problem>" when no line applies).
-class ComplexFormatError : public std::runtime_error {
+class ComplexFormatError : public FormatError {  // support/format_error.h: the contract of what()
  public:
-  using std::runtime_error::runtime_error;
+  using FormatError::FormatError;
 };
 
 [[noreturn]] void format_error(const std::string& source, std::size_t line, const std::string& problem);

@@ -20,12 +20,13 @@
 #include <vector>
 
 #include "shapes/gray_alpha_image.h"
+#include "support/format_error.h"
 
 namespace grassfire {
 
-class ImageFormatError : public std::runtime_error {
+class ImageFormatError : public FormatError {  // support/format_error.h: the contract of what()
  public:
-  using std::runtime_error::runtime_error;
+  using FormatError::FormatError;
 };
 
 // By extension: .png or .gif (case-insensitive).

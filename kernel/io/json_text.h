@@ -18,11 +18,13 @@
 #include <stdexcept>
 #include <string>
 
+#include "support/format_error.h"
+
 namespace grassfire {
 
-class JsonSyntaxError : public std::runtime_error {
+class JsonSyntaxError : public FormatError {  // support/format_error.h: the contract of what()
  public:
-  using std::runtime_error::runtime_error;
+  using FormatError::FormatError;
 };
 
 struct JsonReadOptions {

@@ -5,6 +5,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "support/format_error.h"
 #include "support/number_text.h"  // shortest_double: coordinates that read back exactly
 
 namespace grassfire {
@@ -12,9 +13,9 @@ namespace grassfire {
 // A file that cannot be read or parsed as a shape. what() starts with the file path (or
 // the source name given to a parse_* function) and says where: line and column, or the
 // element index.
-class ShapeFormatError : public std::runtime_error {
+class ShapeFormatError : public FormatError {  // support/format_error.h: the contract of what()
  public:
-  using std::runtime_error::runtime_error;
+  using FormatError::FormatError;
 };
 
 // The whole content of a file; throws ShapeFormatError naming the path when it cannot be read.

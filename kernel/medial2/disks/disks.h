@@ -14,6 +14,8 @@
 #include <string>
 #include <vector>
 
+#include "support/format_error.h"
+
 namespace grassfire {
 
 struct Disk {
@@ -26,9 +28,9 @@ struct DiskList {
   std::vector<Disk> disks;
 };
 
-class DiskListError : public std::runtime_error {
+class DiskListError : public FormatError {  // support/format_error.h: the contract of what()
  public:
-  using std::runtime_error::runtime_error;
+  using FormatError::FormatError;
 };
 
 }  // namespace grassfire
