@@ -40,4 +40,5 @@ PYBIND11_MODULE(grassfire, m) {
       "progress lines) or 'auto' (progress when stderr is a terminal; the default).");
   grassfire::python::bind_2d(m);
   grassfire::python::bind_3d(m);
+  grassfire::python::bind_3d_analysis(m);
 }
