@@ -7,7 +7,9 @@
 // describe it on every sheet: the values are read per cell.
 //  - On a triangle t of M: BT_t, the linear interpolation of t's side times at its corners
 //    (burning_field.h: the limit of BT from inside t, the time t's own fire reached the
-//    corner), and R, the linear interpolation of the corners' radii.
+//    corner; at a corner inside one sheet, an interior or border vertex, it equals the point
+//    time, BT being continuous within a sheet, Prop. 4), and R, the linear interpolation of
+//    the corners' radii.
 //  - On an edge of M (border, manifold, singular or dangling) and at a vertex of M: BT, the
 //    linear interpolation of the point times at the edge's ends (the link rule applied),
 //    and R likewise.
@@ -68,7 +70,7 @@ namespace grassfire {
 
 struct AxisValues3 {
   std::vector<double> vertex_bt;                  // per vertex of M: BT of the point
-  std::vector<std::array<double, 3>> corner_bt;   // per triangle: BT_t at t.v[0..2]
+  std::vector<std::array<double, 3>> corner_bt;   // per triangle: BT_t at t.v[0..2] (side times)
   std::vector<double> vertex_bt_error;            // per vertex, or empty: none certified
 };
 

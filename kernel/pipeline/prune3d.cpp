@@ -19,9 +19,18 @@ AxisValues3 axis_values(const FieldRun& run) {
   const MedialComplex& mc = *run.complex;
   AxisValues3 v;
   for (std::uint32_t i = 0; i < mc.vertex_count(); ++i) v.vertex_bt.push_back(run.field->vertex_burn_time(i));
+  // Inside one sheet (interior and border vertices) BT is continuous (Prop. 4), so t's side
+  // time at a corner is the point time, which is used there: the two are the same number,
+  // though the exact engine encloses them separately. At singular vertices they differ.
   for (std::uint32_t t = 0; t < mc.triangle_count(); ++t) {
     std::array<double, 3> corner{};
-    for (int i = 0; i < 3; ++i) corner[i] = run.field->sample_in_triangle(t, mc.vertex(mc.triangle(t).v[i]).approx).bt;
+    for (int i = 0; i < 3; ++i) {
+      const std::uint32_t c = mc.triangle(t).v[i];
+      const VertexKind kind = mc.vertex(c).kind;
+      corner[i] = kind == VertexKind::Interior || kind == VertexKind::Border
+                      ? v.vertex_bt[c]
+                      : run.field->sample_in_triangle(t, mc.vertex(c).approx).bt;
+    }
     v.corner_bt.push_back(corner);
   }
   v.vertex_bt_error = run.vertex_bt_error;

@@ -136,7 +136,12 @@ image    options for image files: {"connectivity": 4 | 8, "contour": "pixel" |
 
 Returns the members of the grassfire-medial2d JSON (README): "nodes" and "edges" as dicts
 of numpy columns (x, y, R, edf, et, st, pr; u, v, length, kind), inf where the JSON has
-"inf". Errors raise ValueError or RuntimeError with the program's message.)doc");
+"inf". Errors raise ValueError or RuntimeError with the program's message.
+
+>>> import grassfire
+>>> r = grassfire.edf2d("rectangle", samples=200)
+>>> r["format"], r["ema"]["kind"]
+('grassfire-medial2d', 'point'))doc");
   m.def("prune2d", &prune2d, py::arg("shape"), py::arg("et") = 0.0, py::arg("st") = 0.0, py::arg("relative") = false,
         py::arg("topology") = false, py::arg("samples") = kDefaultSamples, py::arg("exact") = false,
         py::arg("name") = "array", py::arg("image") = py::dict(),

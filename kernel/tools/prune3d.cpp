@@ -59,7 +59,6 @@ int run_prune3d(int argc, char** argv) {
   if (opt.has("st")) setup.tubularity = threshold(opt, "st");
   setup.relative = opt.has("relative");
   if (setup.relative && !opt.has("et")) throw std::invalid_argument("--relative needs --et");
-  if (!setup.erosion && !setup.tubularity) throw std::invalid_argument("give --et T, --st S or both");
   setup.field = field_setup(opt, input, "prune3d");
   Progress progress("prune3d " + input, 2);
   progress.stage("burning");
