@@ -114,7 +114,7 @@ TEST_CASE("prune3d: a box's axis with a fin loses the fin above its ET and keeps
     const Prune3dRun above = prune(path, method, mpq_class(6, 5));
     const Areas a = kept_areas(*above.pruned_complex);
     CHECK(a.fin == 0);
-    CHECK(a.rectangle == Approx(32).epsilon(1e-12));
+    CHECK(a.rectangle == ::Approx(32).epsilon(1e-12));
     CHECK(above.pruned.betti_pruned.b0 == 1);
     CHECK(above.pruned.betti_pruned.b1 == 0);
     CHECK(above.pruned.stats.kept_failing_triangles == 0);
@@ -122,8 +122,8 @@ TEST_CASE("prune3d: a box's axis with a fin loses the fin above its ET and keeps
     // within the discrete baseline's error).
     const Prune3dRun below = prune(path, method, mpq_class(1, 2));
     const Areas b = kept_areas(*below.pruned_complex);
-    CHECK(b.fin == Approx(2).margin(method == "exact" ? 1e-9 : 0.25));
-    CHECK(b.rectangle == Approx(32).epsilon(1e-12));
+    CHECK(b.fin == ::Approx(2).margin(method == "exact" ? 1e-9 : 0.25));
+    CHECK(b.rectangle == ::Approx(32).epsilon(1e-12));
   }
   std::remove(path.c_str());
 }
@@ -163,7 +163,7 @@ TEST_CASE("prune3d: the kept area equals the closed-form area of the threshold h
             triangle_area(mc.vertex(tr.v[0]).approx, mc.vertex(tr.v[1]).approx, mc.vertex(tr.v[2]).approx), f);
       }
       CHECK(run.pruned.stats.kept_failing_triangles == 0);
-      CHECK(kept_areas(*run.pruned_complex).total == Approx(expected).epsilon(1e-9));
+      CHECK(kept_areas(*run.pruned_complex).total == ::Approx(expected).epsilon(1e-9));
     }
   }
 }

@@ -114,7 +114,8 @@ class Subdivision {
   }
 
   // Sutherland-Hodgman by one linear function: the pieces where it is >= 0 and <= 0,
-  // each dropped when degenerate (fewer than 3 corners, or no corner strictly inside).
+  // each dropped when degenerate (fewer than 3 corners, or no corner strictly on its side;
+  // a polygon on which the function is 0 everywhere is the >= 0 piece).
   static void split(const Polygon& poly, const std::array<Value, 3>& at, std::vector<Polygon>& out) {
     std::vector<mpq_class> f;
     for (const Weights& w : poly) f.push_back(combine(at.data(), w.data(), 3).v);
@@ -135,7 +136,7 @@ class Subdivision {
         neg.push_back(x);
       }
     }
-    if (pos.size() >= 3 && strict_pos) out.push_back(std::move(pos));
+    if (pos.size() >= 3 && (strict_pos || !strict_neg)) out.push_back(std::move(pos));  // f = 0 throughout: kept
     if (neg.size() >= 3 && strict_neg) out.push_back(std::move(neg));
   }
 
