@@ -53,7 +53,7 @@ def assert_columns_equal(test, columns, objects, keys):
 class DocumentedExamples(unittest.TestCase):
     def test_every_documented_example_runs(self):
         suite = doctest.DocTestSuite(grassfire)
-        names = {t.name.split(".")[-1] for t in suite}
+        names = {t.id().split(".")[-1] for t in suite}
         for f in ("prune2d", "match2d", "medial3d", "burn3d", "complex", "curves3d", "paths3d", "prune3d"):
             self.assertIn(f, names)
         result = unittest.TextTestRunner(verbosity=0).run(suite)
