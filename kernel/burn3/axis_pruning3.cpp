@@ -25,7 +25,11 @@ using Polygon = std::vector<Weights>;
 struct Value {
   bool infinite = false;
   mpq_class v;
-  bool fails() const { return !infinite && sgn(v) < 0; }
+  // ST at a point where BT = 0 (a border igniting at R = 0): G = 0 there, but ST = 1 - R/BT
+  // is undefined; such points fail a positive ST threshold, so that the collapse can start
+  // from that border (keeping them would block every collapse of a failing sheet).
+  bool undefined_st = false;
+  bool fails() const { return !infinite && (sgn(v) < 0 || (sgn(v) == 0 && undefined_st)); }
 };
 
 }  // namespace
@@ -60,7 +64,7 @@ class Subdivision {
     if (!std::isfinite(bt)) return {true, 0};
     const mpq_class b(bt), rr(r);
     if (erosion) return {false, b - rr - *t_.erosion};
-    return {false, (1 - *t_.tubularity) * b - rr};
+    return {false, (1 - *t_.tubularity) * b - rr, bt == 0 && sgn(*t_.tubularity) > 0};
   }
   std::array<double, 2> edge_bt(std::uint32_t e) const {
     const ComplexEdge& ed = mc_.edge(e);
@@ -80,10 +84,12 @@ class Subdivision {
   }
   static Value combine(const Value* at, const mpq_class* w, int n) {
     Value out;
+    out.undefined_st = true;
     for (int i = 0; i < n; ++i) {
       if (sgn(w[i]) == 0) continue;
       if (at[i].infinite) return {true, 0};
       out.v += w[i] * at[i].v;
+      out.undefined_st &= at[i].undefined_st;  // BT >= 0: BT = 0 at a point iff at its corners
     }
     return out;
   }

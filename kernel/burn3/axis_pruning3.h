@@ -14,8 +14,9 @@
 //    linear interpolation of the point times at the edge's ends (the link rule applied),
 //    and R likewise.
 // With these piecewise-linear fields, ET >= T is the half-plane E = BT - R - T >= 0 of each
-// cell and ST >= S is the half-plane G = (1 - S) BT - R >= 0 (R <= (1 - S) BT; where BT = 0
-// and R = 0, on a border igniting at 0, G = 0 and the point is kept). The threshold lines
+// cell and ST >= S is the half-plane G = (1 - S) BT - R >= 0 (R <= (1 - S) BT). Where
+// BT = 0 (then R = 0: a border igniting at 0) ST is undefined and G = 0; such points fail
+// a threshold S > 0, so that failing sheets can collapse from that border. The threshold lines
 // E = 0 and G = 0 cut every triangle into convex pieces; their points on the edges of M
 // (and the edges' own crossings) split the edges, so the pieces, fanned into triangles
 // (from an added centroid where a side carries split points of a neighbour), form a
