@@ -176,18 +176,19 @@ TEST_CASE("prune3d keeps the Betti numbers on every synthetic complex and the sm
                                            data + "/3d/hinge.json", project + "/meshes/cube.off",
                                            project + "/meshes/tripod.off"};
   for (const std::string& input : inputs)
-    for (const mpq_class& t : {mpq_class(1, 10), mpq_class(1, 2), mpq_class(2)}) {
-      INFO(input << " T = " << t.get_d() << " x max R");
-      Prune3dSetup s = default_prune3d_setup();
-      s.field.input = input;
-      s.field.method = "discrete";
-      s.erosion = t;
-      s.relative = true;
-      if (t == 2) s.tubularity = mpq_class(1, 2);
-      const Prune3dRun run = prune3d(s);  // throws when b0, b1, b2 of axis, K and result differ
-      CHECK(run.pruned.betti_pruned == run.pruned.betti_axis);
-      CHECK(run.report["pruned"]["betti"] == run.report["axis"]["betti"]);
-    }
+    for (const mpq_class& t : {mpq_class(1, 10), mpq_class(1, 2), mpq_class(2)})
+      for (const bool relative : {true, false}) {  // absolute too: R = 0 on the synthetic complexes
+        INFO(input << " T = " << t.get_d() << (relative ? " x max R" : ""));
+        Prune3dSetup s = default_prune3d_setup();
+        s.field.input = input;
+        s.field.method = "discrete";
+        s.erosion = t;
+        s.relative = relative;
+        if (t == 2) s.tubularity = mpq_class(1, 2);
+        const Prune3dRun run = prune3d(s);  // throws when b0, b1, b2 of axis, K and result differ
+        CHECK(run.pruned.betti_pruned == run.pruned.betti_axis);
+        CHECK(run.report["pruned"]["betti"] == run.report["axis"]["betti"]);
+      }
 }
 
 TEST_CASE("prune3d: above the largest ET everything fails and the collapse keeps a cycle", "[prune3d]") {

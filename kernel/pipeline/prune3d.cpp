@@ -18,7 +18,11 @@ double seconds_since(std::chrono::steady_clock::time_point start) {
 AxisValues3 axis_values(const FieldRun& run) {
   const MedialComplex& mc = *run.complex;
   AxisValues3 v;
-  for (std::uint32_t i = 0; i < mc.vertex_count(); ++i) v.vertex_bt.push_back(run.field->vertex_burn_time(i));
+  // BT >= 0 (every ignition time is >= 0): a midpoint of an enclosure below 0 is raised to
+  // 0, which stays within its error bound and keeps a border igniting at 0 exactly at 0.
+  auto at_least_zero = [](double bt) { return bt < 0 ? 0.0 : bt; };
+  for (std::uint32_t i = 0; i < mc.vertex_count(); ++i)
+    v.vertex_bt.push_back(at_least_zero(run.field->vertex_burn_time(i)));
   // Inside one sheet (interior and border vertices) BT is continuous (Prop. 4), so t's side
   // time at a corner is the point time, which is used there: the two are the same number,
   // though the exact engine encloses them separately. At singular vertices they differ.
@@ -29,7 +33,7 @@ AxisValues3 axis_values(const FieldRun& run) {
       const VertexKind kind = mc.vertex(c).kind;
       corner[i] = kind == VertexKind::Interior || kind == VertexKind::Border
                       ? v.vertex_bt[c]
-                      : run.field->sample_in_triangle(t, mc.vertex(c).approx).bt;
+                      : at_least_zero(run.field->sample_in_triangle(t, mc.vertex(c).approx).bt);
     }
     v.corner_bt.push_back(corner);
   }
