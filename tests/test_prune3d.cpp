@@ -199,7 +199,7 @@ TEST_CASE("prune3d: above the largest ET everything fails and the collapse keeps
   CHECK(run.pruned.stats.kept_failing_edges > 0);  // the cycle the collapse could not remove
 }
 
-TEST_CASE("grassfire prune3d writes JSON, complex, .ma and PLY; bad input writes nothing", "[prune3d][cli_prune3d]") {
+TEST_CASE("grassfire prune3d writes JSON, complex, .ma and PLY, and nothing on bad input", "[prune3d][cli_prune3d]") {
   const std::string json = temp_path("tube_pruned.json"), cx = temp_path("tube_pruned_complex.json"),
                     ma = temp_path("tube_pruned.ma"), ply = temp_path("tube_pruned.ply");
   auto r = run_cli("prune3d tube --et 0.5 --relative --spacing 0.5 --json " + json + " --complex " + cx + " --ma " + ma +
