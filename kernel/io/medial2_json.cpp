@@ -7,16 +7,17 @@
 
 namespace grassfire {
 
-namespace {
-
-using Json = nlohmann::ordered_json;
-
-// A certified value as JSON: its midpoint, or "inf"; `bound` collects the error bound.
-Json value(const Interval& x, double& bound) {
+nlohmann::ordered_json certified_json(const Interval& x, double& bound) {
   if (x.is_infinite()) return "inf";
   bound = std::max(bound, x.radius());
   return x.mid();
 }
+
+namespace {
+
+using Json = nlohmann::ordered_json;
+
+Json value(const Interval& x, double& bound) { return certified_json(x, bound); }
 
 Json ema_json(const MedialGraph& g, const ExtendedMedialAxis& ema, double& bound) {
   Json j;

@@ -21,6 +21,8 @@
 // the EMA's edf and offset; the EMA's x, y inside an edge are interpolated for display).
 #pragma once
 
+#include <nlohmann/json.hpp>
+
 #include <string>
 
 #include "burn2/extended_grassfire.h"
@@ -39,5 +41,9 @@ struct Medial2dJsonInput {
 };
 
 std::string medial2d_json(const Medial2dJsonInput& in);
+
+// A certified value as JSON: its midpoint, or "inf"; `bound` collects its error bound
+// (radius). The 2D documents (grassfire-medial2d, grassfire-pruned2d) write values so.
+nlohmann::ordered_json certified_json(const Interval& x, double& bound);
 
 }  // namespace grassfire

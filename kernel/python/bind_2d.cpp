@@ -1,21 +1,27 @@
-// bind_2d.cpp -- grassfire.edf2d: the 2D pipeline (pipeline/edf2d.h) from Python.
+// bind_2d.cpp -- grassfire.edf2d, prune2d and match2d: the 2D pipelines (pipeline/edf2d.h,
+// prune2d.h, match2d.h) from Python.
 //
-// The shape is a file path or built-in name (as the program's SHAPE argument, images
-// included), an (n, 2) array of floats (one ring) or a list of such arrays (the outer ring,
-// then holes). Arrays are validated and normalized exactly as files are
-// (shapes/validate_shape.h). The result is the "grassfire-medial2d" document that
-// `grassfire edf2d --json` writes (pipeline/edf2d_json.h), as Python values
-// (python_values.h), so the two are equal member by member.
+// A shape is a file path or built-in name (as the program's SHAPE argument, images
+// included), an (n, 2) array of floats (one ring), a list of such arrays (the outer ring,
+// then holes), a shapely polygon or a 2D boolean array (python_inputs.h). Arrays are
+// validated and normalized exactly as files are (shapes/validate_shape.h). Each result is
+// the document the program's --json writes (grassfire-medial2d, -pruned2d, -match2d), as
+// Python values (python_values.h), so the two are equal member by member.
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
+#include <cmath>
 #include <optional>
 #include <string>
 
 #include "bindings.h"
+#include "io/disk_list.h"
 #include "pipeline/edf2d.h"
 #include "pipeline/edf2d_json.h"
+#include "pipeline/match2d.h"
+#include "pipeline/prune2d.h"
+#include "python_inputs.h"
 #include "python_values.h"
 #include "shapes/image_shape.h"
 #include "io/load_shape.h"
@@ -26,40 +32,9 @@ namespace grassfire::python {
 
 namespace {
 
-Ring ring_of(const py::handle& points, const std::string& name, std::size_t index) {
-  const auto a = py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(points);
-  if (!a || a.ndim() != 2 || a.shape(1) != 2)
-    throw std::invalid_argument(name + ": ring " + std::to_string(index) +
-                                " is not an (n, 2) array of coordinates");
-  Ring r;
-  const auto m = a.unchecked<2>();
-  for (py::ssize_t i = 0; i < a.shape(0); ++i) r.points.push_back({m(i, 0), m(i, 1)});
-  return r;
-}
-
-// A str or os.PathLike goes to load_shape; an array is one ring; a list or tuple of
-// arrays is the rings.
-Shape2 shape_of(const py::object& shape, const std::string& name, const ImageShapeOptions& image) {
-  const py::object fspath = py::module_::import("os").attr("fspath");
-  if (py::isinstance<py::str>(shape) || py::hasattr(shape, "__fspath__"))
-    return load_shape(fspath(shape).cast<std::string>(), image);
-  Shape2 s;
-  s.name = name;
-  const bool one_ring = py::isinstance<py::array>(shape) && shape.cast<py::array>().ndim() == 2;
-  if (one_ring) {
-    s.rings.push_back(ring_of(shape, name, 0));
-  } else if (py::isinstance<py::list>(shape) || py::isinstance<py::tuple>(shape)) {
-    std::size_t i = 0;
-    for (const py::handle ring : shape) s.rings.push_back(ring_of(ring, name, i++));
-  } else {
-    throw std::invalid_argument(name + ": a shape is a file path, a built-in name, an (n, 2) array or a list of them");
-  }
-  validate_shape(s, name);
-  return s;
-}
-
 py::dict edf2d(const py::object& shape, std::size_t samples, bool exact, const std::string& variant,
-               std::optional<double> spacing, const std::string& name, const ImageShapeOptions& image) {
+               std::optional<double> spacing, const std::string& name, const ImageShapeOptions& image,
+               bool image_given) {
   Edf2dOptions options;
   if (exact) options.axis = AxisMethod::ExactPolygon;
   if (samples < 8) throw std::invalid_argument("samples must be at least 8, got " + std::to_string(samples));
@@ -72,12 +47,64 @@ py::dict edf2d(const py::object& shape, std::size_t samples, bool exact, const s
     options.variant = GrassfireVariant::Dissertation;
   else if (variant != "exact")
     throw std::invalid_argument("variant must be 'exact' or 'dissertation', got '" + variant + "'");
-  const Shape2 s = shape_of(shape, name, image);
+  const Shape2 s = shape_of(shape, name, image, image_given);
   std::string json;
   {
     py::gil_scoped_release release;
     const Edf2dResult r = compute_edf2d(s, options);
     json = edf2d_json(s, options, r);
+  }
+  return to_python(nlohmann::json::parse(json)).cast<py::dict>();
+}
+
+// A threshold as the program reads it (a decimal string, exactly) or a float at its exact
+// binary value.
+mpq_class threshold_of(const py::object& x, const char* name) {
+  mpq_class v;
+  if (py::isinstance<py::str>(x)) {
+    if (!parse_exact_decimal(x.cast<std::string>(), v))
+      throw std::invalid_argument(std::string(name) + " must be a non-negative decimal number, got '" +
+                                  x.cast<std::string>() + "'");
+  } else {
+    const double d = x.cast<double>();
+    if (!std::isfinite(d)) throw std::invalid_argument(std::string(name) + " must be a finite number");
+    v = d;
+  }
+  if (sgn(v) < 0) throw std::invalid_argument(std::string(name) + " must be non-negative");
+  return v;
+}
+
+py::dict prune2d(const py::object& shape, const py::object& et, const py::object& st, bool relative, bool topology,
+                 std::size_t samples, bool exact, const std::string& name, const py::dict& image) {
+  Prune2dSetup setup;
+  setup.erosion = threshold_of(et, "et");
+  setup.tubularity = threshold_of(st, "st");
+  setup.relative = relative;
+  setup.topology = topology;
+  if (samples < 8) throw std::invalid_argument("samples must be at least 8, got " + std::to_string(samples));
+  setup.options.samples = samples;
+  if (exact) setup.options.axis = AxisMethod::ExactPolygon;
+  const Shape2 s = shape_of(shape, name, image_options(image), !image.empty());
+  std::string json;
+  {
+    py::gil_scoped_release release;
+    json = prune2d(s, setup).json;
+  }
+  return to_python(nlohmann::json::parse(json)).cast<py::dict>();
+}
+
+py::dict match2d(const py::object& a, const py::object& b, const std::string& signature, std::size_t samples,
+                 double stretch, const py::dict& image) {
+  Match2dSetup setup;
+  setup.signature = signature;
+  setup.samples = samples;
+  setup.stretch = stretch;
+  const ImageShapeOptions o = image_options(image);
+  const Shape2 sa = shape_of(a, "a", o, !image.empty()), sb = shape_of(b, "b", o, !image.empty());
+  std::string json;
+  {
+    py::gil_scoped_release release;
+    json = match2d(sa, sb, setup).json;
   }
   return to_python(nlohmann::json::parse(json)).cast<py::dict>();
 }
@@ -89,7 +116,7 @@ void bind_2d(py::module_& m) {
       "edf2d",
       [](const py::object& shape, std::size_t samples, bool exact, const std::string& variant,
          std::optional<double> spacing, const std::string& name, const py::dict& image) {
-        return edf2d(shape, samples, exact, variant, spacing, name, image_options(image));
+        return edf2d(shape, samples, exact, variant, spacing, name, image_options(image), !image.empty());
       },
       py::arg("shape"), py::arg("samples") = kDefaultSamples, py::arg("exact") = false,
       py::arg("variant") = "exact", py::arg("spacing") = py::none(), py::arg("name") = "array",
@@ -109,7 +136,50 @@ image    options for image files: {"connectivity": 4 | 8, "contour": "pixel" |
 
 Returns the members of the grassfire-medial2d JSON (README): "nodes" and "edges" as dicts
 of numpy columns (x, y, R, edf, et, st, pr; u, v, length, kind), inf where the JSON has
-"inf". Errors raise ValueError or RuntimeError with the program's message.)doc");
+"inf". Errors raise ValueError or RuntimeError with the program's message.
+
+>>> import grassfire
+>>> r = grassfire.edf2d("rectangle", samples=200)
+>>> r["format"], r["ema"]["kind"]
+('grassfire-medial2d', 'point'))doc");
+  m.def("prune2d", &prune2d, py::arg("shape"), py::arg("et") = 0.0, py::arg("st") = 0.0, py::arg("relative") = false,
+        py::arg("topology") = false, py::arg("samples") = kDefaultSamples, py::arg("exact") = false,
+        py::arg("name") = "array", py::arg("image") = py::dict(),
+        R"doc(The medial axis pruned by ET and ST thresholds (grassfire prune2d --json).
+
+shape     as edf2d's (a path, a built-in name, (n, 2) arrays, a shapely polygon, a 2D
+          boolean array)
+et        ET threshold T (shape units; a fraction of the shape's size with relative): a
+          float (its exact binary value) or a decimal string (read exactly, as --et)
+st        ST threshold S in [0, 1], likewise
+relative  T is a fraction of the shape's size (the larger side of its bounding box)
+topology  peel failing leaves only (the thinning of 3.3.2): keeps the homotopy type
+samples   boundary samples of the sampled axis; exact: the exact polygon axis
+image     image options, as edf2d's
+
+Returns the members of the grassfire-pruned2d JSON (kernel/pipeline/prune2d.h): "nodes"
+and "edges" as dicts of numpy columns, "thresholds", "error_bound".
+
+>>> import grassfire
+>>> r = grassfire.prune2d("blunt-sharp", et=0.05, relative=True, st=0.3, topology=True)
+>>> r["format"], len(r["nodes"]["x"]) > 0
+('grassfire-pruned2d', True))doc");
+  m.def("match2d", &match2d, py::arg("a"), py::arg("b"), py::arg("signature") = "be", py::arg("samples") = 200,
+        py::arg("stretch") = 0.05, py::arg("image") = py::dict(),
+        R"doc(Boundary correspondence of two planar shapes guided by a signature (grassfire match2d --json).
+
+a, b       shapes, as edf2d's
+signature  "be" (boundary eccentricity), "lfs" (local feature size) or "curvature"
+samples    boundary samples per shape, in [8, 2000] (the DP costs O(N^3))
+stretch    cost of a step where only one curve advances (normalised units)
+
+Returns the members of the grassfire-match2d JSON (kernel/pipeline/match2d.h): "cost",
+"offset", "path" (k, 2), "correspondence" (N,), "a_samples"/"b_samples" columns x, y, value.
+
+>>> import grassfire
+>>> m = grassfire.match2d("rectangle", "rectangle-bump", samples=40)
+>>> m["correspondence"].shape
+(40,))doc");
 }
 
 }  // namespace grassfire::python

@@ -4,9 +4,11 @@
 //   r = grassfire.edf2d("data/shapes2d/Bone-1.json", exact=True)   # the grassfire-medial2d JSON
 //   a = grassfire.medial3d("data/balls/caffeine.cin")                # the axis as numpy arrays
 //   b = grassfire.burn3d("board-fin", spacing=0.1)                   # BT, ET per vertex
-// Every function runs the same kernel code as the program's command of the same name and
-// returns what its --json writes, with numpy arrays (bind_2d.cpp, bind_3d.cpp). The GIL is
-// released while the kernel computes.
+//   p = grassfire.prune3d((V, F), et=0.2, relative=True)              # a mesh's axis, pruned
+// Every function (edf2d, prune2d, match2d, medial3d, burn3d, complex, curves3d, paths3d,
+// prune3d) runs the same kernel code as the program's command of the same name and returns
+// what its --json writes, with numpy arrays (bind_2d.cpp, bind_3d.cpp, bind_3d_analysis.cpp;
+// inputs: python_inputs.h). The GIL is released while the kernel computes.
 #include <pybind11/pybind11.h>
 
 #include <map>
@@ -40,4 +42,5 @@ PYBIND11_MODULE(grassfire, m) {
       "progress lines) or 'auto' (progress when stderr is a terminal; the default).");
   grassfire::python::bind_2d(m);
   grassfire::python::bind_3d(m);
+  grassfire::python::bind_3d_analysis(m);
 }

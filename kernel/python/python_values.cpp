@@ -1,6 +1,8 @@
 // python_values.cpp -- see python_values.h.
 #include "python_values.h"
 
+#include "complex3/medial_complex.h"
+
 #include <cmath>
 #include <limits>
 #include <string>
@@ -128,5 +130,26 @@ py::array_t<double> float_array(const std::vector<double>& values) {
   for (std::size_t i = 0; i < values.size(); ++i) m(i) = values[i];
   return a;
 }
+
+void add_complex(py::dict& out, const MedialComplex& mc) {
+  std::vector<std::array<double, 3>> vertices;
+  std::vector<double> radius;
+  for (const ComplexVertex& v : mc.vertices()) vertices.push_back(v.approx), radius.push_back(v.radius);
+  std::vector<std::array<std::int64_t, 3>> triangles;
+  for (const ComplexTriangle& t : mc.triangles()) triangles.push_back({t.v[0], t.v[1], t.v[2]});
+  std::vector<std::array<std::int64_t, 2>> segments;
+  for (const ComplexEdge& e : mc.edges())
+    if (e.stratum == EdgeStratum::Dangling) segments.push_back({e.v[0], e.v[1]});
+  out["vertices"] = row_array(vertices);
+  out["triangles"] = row_array(triangles);
+  out["segments"] = row_array(segments);
+  out["R"] = float_array(radius);
+}
+
+void add_report(py::dict& out, const nlohmann::json& report, const char* skip) {
+  for (const auto& item : report.items())
+    if (!skip || item.key() != skip) out[py::str(item.key())] = to_python(item.value());
+}
+
 
 }  // namespace grassfire::python

@@ -22,11 +22,21 @@
 #include <cstdint>
 #include <vector>
 
+namespace grassfire {
+class MedialComplex;
+}
+
 namespace grassfire::python {
 
 pybind11::object to_python(const nlohmann::json& j);
 
 pybind11::array_t<double> float_array(const std::vector<double>& values);
+
+// A complex as numpy arrays: "vertices" (n, 3) nearest doubles, "triangles" (m, 3),
+// "segments" (k, 2) (dangling edges), "R" (n,).
+void add_complex(pybind11::dict& out, const MedialComplex& mc);
+// Every member of a report (but `skip`) as out[key] = to_python(value).
+void add_report(pybind11::dict& out, const nlohmann::json& report, const char* skip = nullptr);
 // Rows of equal length: an (n, K) array.
 template <class T, std::size_t K>
 pybind11::array_t<T> row_array(const std::vector<std::array<T, K>>& rows) {

@@ -1,24 +1,21 @@
 // curves3d.cpp -- `grassfire curves3d`: medial curves of a 3D medial axis (5.1.2).
 //
-// Builds the complex and its burning field (tools/field_input.h), the medial curve graph
-// (curves3/medial_curves.h), validates it (1-dimensional, in the axis, the axis' b0 and b1),
-// splits the axis into planar and tubular parts (curves3/shape_analysis.h, 5.3) and only then
-// writes the outputs, each whole or not at all: --json (format grassfire-curves3d with the
+// Runs pipeline/curves3d.h (the complex, its burning field, the medial curve graph validated
+// with the axis' b0 and b1, the planar / tubular split of 5.3) and only then writes the outputs, each whole or not at all: --json (format grassfire-curves3d with the
 // analysis, io/curves_export.h), --ply and --vtk (polylines with R, BT, ET), and for a mesh
 // input --surface-ply / --surface-vtk: the mesh with BT, ET, R of the medial ball touching
 // each vertex (Fig. 5.5).
 #include <iostream>
 
-#include "curves3/medial_curves.h"
-#include "curves3/shape_analysis.h"
 #include "complex3/medial_complex.h"
 #include "io/complex_export.h"
 #include "io/complex_text.h"
 #include "io/mesh_io.h"
 #include "support/atomic_file.h"
 #include "io/curves_export.h"
-#include "tools/commands.h"
 #include "pipeline/complex_input.h"
+#include "pipeline/curves3d.h"
+#include "tools/commands.h"
 #include "tools/field_input.h"
 #include "tools/options.h"
 
@@ -57,30 +54,26 @@ int run_curves3d(int argc, char** argv) {
               "Example: grassfire curves3d board-fin --spacing 0.1 --json board_fin_curves.json");
   if (!opt.parse(argc, argv)) return opt.exit_code();
   const std::string input = opt.arg("INPUT");
-  const FieldInput in = load_field(opt, input, "curves3d");
-  MedialCurveOptions o;
+  Curves3dSetup setup;
+  MedialCurveOptions& o = setup.curves;
   o.arrive_cosine = opt.get_double("arrive-cosine");
   o.depart_cosine = opt.get_double("depart-cosine");
-  if (opt.has("time-margin")) o.time_margin = opt.get_double("time-margin");
+  if (opt.has("time-margin")) {
+    o.time_margin = opt.get_double("time-margin");
+    if (!(o.time_margin >= 0)) throw std::runtime_error("--time-margin must be >= 0");
+  }
   o.min_et_fraction = opt.get_double("min-et");
-  if (!(o.min_et_fraction >= 0 && o.min_et_fraction <= 1)) throw std::runtime_error("--min-et must be in [0, 1]");
-  if (!(o.arrive_cosine >= 0 && o.arrive_cosine < 1) || !(o.depart_cosine >= 0 && o.depart_cosine < 1))
-    throw std::runtime_error("--arrive-cosine and --depart-cosine must be in [0, 1)");
-  if (opt.has("time-margin") && !(o.time_margin >= 0)) throw std::runtime_error("--time-margin must be >= 0");
-  const double split = opt.get_double("planar-tubularity");
-  if (!(split >= 0 && split <= 1)) throw std::runtime_error("--planar-tubularity must be in [0, 1]");
+  setup.planar_tubularity = opt.get_double("planar-tubularity");
   const bool surface = opt.has("surface-ply") || opt.has("surface-vtk");
   const std::string ext = file_extension(input);
   if (surface && ext != "off" && ext != "ply" && ext != "obj")
     throw std::runtime_error("--surface-ply / --surface-vtk need a mesh input (.off, .ply, .obj)");
-  const AxisRefinement k = AxisRefinement::build(*in.field);
-  const MedialCurves curves = medial_curves(k, *in.field, o);
-  curves.validate(*in.complex);
-  const ShapeAnalysis analysis = analyze_shape(k, curves, {split});
-  if (surface) write_surface(read_triangle_mesh(input), k, opt);
-  nlohmann::json j = medial_curves_json(curves, input);
-  j["analysis"] = shape_analysis_json(analysis, split);
-  if (opt.has("json")) write_file_atomically(opt.get("json"), j.dump(1) + "\n");
+  setup.field = field_setup(opt, input, "curves3d");
+  const Curves3dRun run = curves3d(setup);
+  const MedialCurves& curves = run.curves;
+  const ShapeAnalysis& analysis = run.analysis;
+  if (surface) write_surface(read_triangle_mesh(input), *run.refinement, opt);
+  if (opt.has("json")) write_file_atomically(opt.get("json"), run.json.dump(1) + "\n");
   const PolylineSet lines = medial_curves_polylines(curves);
   if (opt.has("ply")) write_polylines_ply(lines, "grassfire medial curves of " + input, opt.get("ply"));
   if (opt.has("vtk")) write_polylines_vtk(lines, "grassfire medial curves of " + input, opt.get("vtk"));

@@ -1,6 +1,6 @@
 // paths3d.cpp -- `grassfire paths3d`: burning paths on a 3D medial axis (5.1.2, Fig. 5.2).
 //
-// Builds the complex and its burning field (tools/field_input.h), then the burning paths
+// Runs pipeline/paths3d.h: the complex and its burning field, then the burning paths
 // of the chosen points (curves3/burning_paths.h): every vertex, every node of the medial
 // curves (curves3/medial_curves.h; the curves are validated first), the paths that end on
 // the curves (one per arriving side at a node on an edge), or the points of a CSV file
@@ -12,7 +12,7 @@
 #include <iostream>
 #include <sstream>
 
-#include "curves3/burning_paths.h"
+#include "pipeline/paths3d.h"
 #include "support/atomic_file.h"
 #include "io/complex_text.h"
 #include "io/curves_export.h"
@@ -44,35 +44,24 @@ int run_paths3d(int argc, char** argv) {
   if (from != "vertices" && from != "curves" && from != "ends" && from != "points")
     throw std::runtime_error("--from must be vertices, curves, ends or points");
   if ((from == "points") != opt.has("points")) throw std::runtime_error("--points FILE goes with --from points");
-  const std::vector<CsvPoint> queries = from == "points" ? read_point_csv(opt.get("points"), false) : std::vector<CsvPoint>{};
-  if (from == "points" && queries.empty()) throw std::runtime_error(opt.get("points") + ": no points");
-  const FieldInput in = load_field(opt, input, "paths3d");
-  std::vector<BurningPath> paths;
-  double farthest = 0;
-  if (from == "vertices") {
-    paths = paths_from_vertices(*in.field);
-  } else if (from == "curves" || from == "ends") {
-    const MedialCurves curves = medial_curves(*in.field);
-    curves.validate(*in.complex);
-    paths = from == "curves" ? paths_from_curve_nodes(*in.field, curves) : paths_ending_on_curves(*in.field, curves);
-  } else {
-    const ComplexLocator locator(*in.complex);
-    std::vector<CellPoint> located;
-    for (const CsvPoint& q : queries) {
-      const ComplexPoint x = locator.locate(q.point);
-      located.push_back(cell_point(*in.field, x));
-      farthest = std::max(farthest, x.snap());
-    }
-    paths = paths_from_points(*in.field, located);
+  Paths3dSetup setup;
+  setup.from = from;
+  if (from == "points") {
+    setup.points_name = opt.get("points");
+    setup.points = read_point_csv(setup.points_name, false);
+    if (setup.points.empty()) throw std::runtime_error(setup.points_name + ": no points");
   }
-  if (opt.has("json"))
-    write_file_atomically(opt.get("json"), burning_paths_json(paths, input, in.field->method(), from).dump(1) + "\n");
+  setup.field = field_setup(opt, input, "paths3d");
+  const Paths3dRun run = paths3d(setup);
+  const std::vector<BurningPath>& paths = run.paths;
+  const double farthest = run.farthest;
+  if (opt.has("json")) write_file_atomically(opt.get("json"), run.json.dump(1) + "\n");
   const PolylineSet lines = burning_paths_polylines(paths);
   if (opt.has("ply")) write_polylines_ply(lines, "grassfire burning paths of " + input, opt.get("ply"));
   if (opt.has("vtk")) write_polylines_vtk(lines, "grassfire burning paths of " + input, opt.get("vtk"));
   double total = 0;
   for (const BurningPath& p : paths) total += p.length;
-  std::cout << "paths3d " << input << " (" << in.field->method() << "): " << paths.size() << " paths from " << from
+  std::cout << "paths3d " << input << " (" << run.field.field->method() << "): " << paths.size() << " paths from " << from
             << ", total length " << total;
   if (from == "points") std::cout << "; farthest point from the axis " << farthest;
   std::cout << '\n';

@@ -1,0 +1,59 @@
+// burn3d_field.cpp -- see burn3d_field.h.
+#include "pipeline/burn3d_field.h"
+
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+
+#include "burn3/discrete/discrete_burning_field.h"
+#include "burn3/exact/burn_outputs.h"
+#include "burn3/exact/exact_burning_field.h"
+#include "pipeline/burn3d.h"
+#include "pipeline/complex_input.h"
+
+namespace grassfire {
+namespace {
+
+// The exact engine from the border ignition (the same refusal as burn3d --method exact).
+void load_exact_field(FieldRun& in, const FieldSetup& setup) {
+  const std::optional<std::string> why = exact_engine_unsupported(*in.complex);
+  if (why && !setup.singular_walls)
+    throw std::runtime_error(setup.input + ": method 'exact' cannot burn this complex: it has " + *why +
+                             "; use --method discrete");
+  ExactBurningOptions options;
+  options.singular_walls = setup.singular_walls;  // else Definition 9 (the junction rule)
+  in.exact = std::make_unique<ExactBurning>(*in.complex, options);
+  in.exact->add_border_ignition();
+  in.exact->run();
+  in.field = std::make_unique<ExactBurningField>(*in.exact, in.spacing);
+  for (const CertifiedValue& v : vertex_values(*in.exact).bt)
+    in.vertex_bt_error.push_back(std::isfinite(v.value) ? v.error : std::numeric_limits<double>::infinity());
+}
+
+}  // namespace
+
+FieldRun load_burning_field(const FieldSetup& setup) {
+  if (setup.method != "discrete" && setup.method != "exact")
+    throw std::invalid_argument("unknown method '" + setup.method + "' (discrete or exact)");
+  if (setup.singular_walls && setup.method != "exact") throw std::invalid_argument("--singular-walls needs --method exact");
+  if (setup.max_points < 1 || setup.max_points > 2'000'000'000ULL)
+    throw std::invalid_argument("--max-points must be in [1, 2000000000]");
+  FieldRun in;
+  in.complex = std::make_unique<MedialComplex>(load_complex(setup.input, setup.mesh_is_complex, setup.command));
+  in.complex->validate();
+  if (in.complex->vertex_count() == 0) throw std::runtime_error(setup.input + ": the complex is empty");
+  in.spacing = setup.spacing ? *setup.spacing : default_burn_spacing(*in.complex);
+  if (!(in.spacing > 0) || !std::isfinite(in.spacing)) throw std::invalid_argument("--spacing must be a positive number");
+  if (setup.method == "exact") {
+    load_exact_field(in, setup);
+    return in;
+  }
+  DiscreteBurningOptions o;
+  o.spacing = in.spacing;
+  o.max_points = setup.max_points;
+  in.burning = std::make_unique<DiscreteBurning>(burn_discrete(*in.complex, o));
+  in.field = std::make_unique<DiscreteBurningField>(*in.complex, *in.burning);
+  return in;
+}
+
+}  // namespace grassfire
