@@ -20,6 +20,7 @@
 
 #include "burn2/axis_pruning.h"
 #include "io/atomic_file.h"
+#include "io/decimal_text.h"
 #include "io/disk_list.h"
 #include "medial2/union_find.h"
 #include "pipeline/edf2d.h"
@@ -34,19 +35,10 @@ namespace {
 
 using Json = nlohmann::ordered_json;
 
-// The double nearest to q (mpq_get_d truncates).
-double nearest(const mpq_class& q) {
-  mpfr_t x;
-  mpfr_init2(x, 53);
-  mpfr_set_q(x, q.get_mpq_t(), MPFR_RNDN);
-  const double d = mpfr_get_d(x, MPFR_RNDN);
-  mpfr_clear(x);
-  return d;
-}
-
 mpq_class threshold(const Options& opt, const std::string& name) {
-  mpq_class v;
-  if (!parse_exact_decimal(opt.get(name), v) || sgn(v) < 0)
+  const std::optional<mpq_class> q = parse_exact_decimal(opt.get(name));
+  const mpq_class v = q ? *q : mpq_class(-1);
+  if (!q || sgn(v) < 0)
     throw std::invalid_argument("option --" + name + " must be a non-negative decimal number, got '" + opt.get(name) +
                                 "'");
   return v;
@@ -66,7 +58,7 @@ std::string pruned_json(const std::string& shape, const char* axis, const Prunin
   j["version"] = 1;
   j["shape"] = shape;
   j["axis"] = axis;
-  j["thresholds"] = {{"et", nearest(t.erosion)}, {"st", nearest(t.tubularity)}, {"relative", relative},
+  j["thresholds"] = {{"et", nearest_double(t.erosion)}, {"st", nearest_double(t.tubularity)}, {"relative", relative},
                      {"size", size},                {"topology", t.topology}};
   Json nodes = Json::array();
   for (const PrunedNode& n : p.nodes) {
@@ -148,7 +140,7 @@ int prune2d_main(int argc, char** argv) {
     const std::uint64_t components = component_count(p);
     std::cout << "shape      " << shape.name << "\n"
               << "axis       " << r.graph->node_count() << " nodes, " << r.graph->edge_count() << " edges\n"
-              << "thresholds ET >= " << nearest(t.erosion) << ", ST >= " << nearest(t.tubularity)
+              << "thresholds ET >= " << nearest_double(t.erosion) << ", ST >= " << nearest_double(t.tubularity)
               << (t.topology ? ", topology-preserving" : "") << "\n"
               << "pruned     " << p.nodes.size() << " nodes (" << p.cut_points << " cut points), " << p.edges.size()
               << " edges, " << components << " components, " << p.edges.size() + components - p.nodes.size()
