@@ -2,7 +2,7 @@
 // runs, counting internal messages (DESIGN.md 3: valid input never gets an internal
 // invariant message; bad input gets a clear one).
 //
-// Usage: study_adversarial_inputs [--inputs N] [--seconds S] [--kind K]... [--out FILE]
+// Usage: study_adversarial_inputs [--inputs N] [--seconds S] [--kind K]... [--out FILE] [--append]
 // Kinds (each input i is a pure function of the kind and i):
 //  - polygon:<kind> for every kind of shapes/adversarial_polygons.h: the polygon, validated
 //    (invalid ones are generator misses, counted apart), then `edf2d --exact`'s pipeline
@@ -26,7 +26,8 @@
 // std::...). Each kind runs until N inputs or S seconds (thread CPU) are spent.
 // Writes one CSV row per kind: kind,inputs,generator_misses,accepted,refused,internal,
 // definition_failures,fallbacks,seconds (default experiments/results/adversarial_inputs.csv)
-// and prints every internal message (first 20 per kind) on stderr.
+// (--append: adds the rows to an existing FILE, so kinds can be run apart) and prints every
+// internal message (first 20 per kind) on stderr.
 #include <unistd.h>
 
 #include <cmath>
@@ -59,7 +60,7 @@ using namespace grassfire;
 namespace {
 
 constexpr const char* kUsage =
-    "study_adversarial_inputs [--inputs N] [--seconds S] [--kind K]... [--out FILE]\n"
+    "study_adversarial_inputs [--inputs N] [--seconds S] [--kind K]... [--out FILE] [--append]\n"
     "adversarial polygons, meshes and complexes through the edf2d / burn3d pipelines;\n"
     "CSV of outcome counts per kind (default experiments/results/adversarial_inputs.csv)\n";
 
@@ -246,8 +247,13 @@ int run(int argc, char** argv) {
   double seconds = 60;
   std::vector<std::string> kinds;
   std::string out = std::string(GF_PROJECT_DATA) + "/../experiments/results/adversarial_inputs.csv";
+  bool append = false;
   for (int a = 1; a < argc; ++a) {
     const std::string arg = argv[a];
+    if (arg == "--append") {
+      append = true;
+      continue;
+    }
     if (a + 1 >= argc) throw std::invalid_argument("missing value after " + arg);
     if (arg == "--inputs") inputs = std::stoull(argv[++a]);
     else if (arg == "--seconds") seconds = std::stod(argv[++a]);
@@ -261,7 +267,13 @@ int run(int argc, char** argv) {
   }
   const std::string tmp = std::filesystem::temp_directory_path().string() + "/gf_adversarial_" + std::to_string(::getpid());
   std::ostringstream csv;
-  csv << "kind,inputs,generator_misses,accepted,refused,internal,definition_failures,fallbacks,seconds\n";
+  if (append) {
+    std::ifstream old(out);
+    if (!old) throw std::invalid_argument("--append: cannot read " + out);
+    csv << old.rdbuf();
+  } else {
+    csv << "kind,inputs,generator_misses,accepted,refused,internal,definition_failures,fallbacks,seconds\n";
+  }
   for (const std::string& kind : kinds) {
     Tally t;
     std::vector<std::string> findings;

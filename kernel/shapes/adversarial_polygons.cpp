@@ -104,12 +104,10 @@ Shape2 spikes(Rng& rng) {
     const double a = 2 * kPi * i / n, b = a + kPi / n;
     p.push_back({std::round(inner * std::cos(a)), std::round(inner * std::sin(a))});
     const double tx = std::round(outer * std::cos(b)), ty = std::round(outer * std::sin(b));
-    if (uniform(rng, 0, 2) == 0) {
-      p.push_back({tx, ty});  // a sharp tip
-    } else {
-      p.push_back({tx, ty});
-      p.push_back({tx + (std::fabs(std::sin(b)) > 0.5 ? 1 : 0), ty + (std::fabs(std::sin(b)) > 0.5 ? 0 : 1)});
-    }
+    p.push_back({tx, ty});
+    // Two thirds of the tips are one unit wide: the second corner one step further
+    // counter-clockwise (along the circle's tangent, rounded to the integer grid).
+    if (uniform(rng, 0, 2) != 0) p.push_back({tx + std::round(-std::sin(b)), ty + std::round(std::cos(b))});
   }
   return {"", {Ring{p}}};
 }
