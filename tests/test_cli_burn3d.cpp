@@ -318,3 +318,96 @@ TEST_CASE("grassfire burn3d --method exact: a hinge with a hair, and clean refus
   check_fails(hinge + " --sources " + sources, "hinge.json: source 1: a point source inside a segment (edge 5)");
   for (const std::string& p : {sources, at}) std::remove(p.c_str());
 }
+
+namespace {
+
+// An octahedron whose coordinates are written as a mesh file writes them (7 significant
+// digits, none a double exactly), in each text format; vertices 0..5 = c +- d e_i.
+const char* const kOctaVertices[6][3] = {{"0.0265006", "0.00349105", "0.0598442"},
+                                         {"0.0065004", "0.00349105", "0.0598442"},
+                                         {"0.0165005", "0.01349115", "0.0598442"},
+                                         {"0.0165005", "-0.00650905", "0.0598442"},
+                                         {"0.0165005", "0.00349105", "0.0698443"},
+                                         {"0.0165005", "0.00349105", "0.0498441"}};
+const int kOctaFaces[8][3] = {{0, 2, 4}, {2, 1, 4}, {1, 3, 4}, {3, 0, 4}, {2, 0, 5}, {1, 2, 5}, {3, 1, 5}, {0, 3, 5}};
+
+std::string octahedron_text(const std::string& format) {
+  std::ostringstream o;
+  auto xyz = [&](int v, const char* sep) {
+    o << kOctaVertices[v][0] << sep << kOctaVertices[v][1] << sep << kOctaVertices[v][2];
+  };
+  if (format == "off") o << "OFF\n6 8 0\n";
+  if (format == "ply")
+    o << "ply\nformat ascii 1.0\nelement vertex 6\nproperty double x\nproperty double y\nproperty double z\n"
+         "element face 8\nproperty list uchar int vertex_indices\nend_header\n";
+  if (format == "json") o << "{\"format\": \"grassfire-complex\", \"version\": 1, \"vertices\": [";
+  if (format == "stl") {
+    o << "solid octa\n";
+    for (const auto& f : kOctaFaces) {
+      o << "facet normal 0 0 0\nouter loop\n";
+      for (int v : f) o << "vertex ", xyz(v, " "), o << "\n";
+      o << "endloop\nendfacet\n";
+    }
+    o << "endsolid octa\n";
+    return o.str();
+  }
+  for (int v = 0; v < 6; ++v) {
+    if (format == "obj") o << "v ";
+    if (format == "json") o << (v ? ", [" : "[");
+    xyz(v, format == "json" ? ", " : " ");
+    o << (format == "json" ? "]" : "\n");
+  }
+  if (format == "json") o << "], \"triangles\": [";
+  for (int f = 0; f < 8; ++f) {
+    const auto& t = kOctaFaces[f];
+    if (format == "json") o << (f ? ", " : "") << "[" << t[0] << ", " << t[1] << ", " << t[2] << "]";
+    else if (format == "obj") o << "f " << t[0] + 1 << " " << t[1] + 1 << " " << t[2] + 1 << "\n";
+    else o << "3 " << t[0] << " " << t[1] << " " << t[2] << "\n";
+  }
+  if (format == "json") o << "]}\n";
+  return o.str();
+}
+
+}  // namespace
+
+TEST_CASE("a mesh's own vertex coordinates are sources and queries on it, in every text format", "[cli][exact3][decimals]") {
+  const std::string sources = temp_path("gf_octa_sources.csv"), at = temp_path("gf_octa_at.csv"),
+                    csv = temp_path("gf_octa_bt.csv");
+  write_text(sources, std::string("x,y,z,t0\n") + kOctaVertices[0][0] + "," + kOctaVertices[0][1] + "," +
+                          kOctaVertices[0][2] + ",0\n");
+  std::string queries = "x,y,z\n";
+  for (const auto& v : kOctaVertices) queries += std::string(v[0]) + "," + v[1] + "," + v[2] + "\n";
+  write_text(at, queries);
+  for (const std::string format : {"off", "obj", "ply", "stl", "json"}) {
+    const std::string mesh = temp_path("gf_octa." + format);
+    write_text(mesh, octahedron_text(format));
+    std::remove(csv.c_str());
+    const testing::CliRun r = run_cli("burn3d " + mesh + " --mesh-is-complex --method exact --sources " + sources +
+                                      " --at " + at + " --csv " + csv + " --no-border-ignition");
+    INFO(format << ": " << r.output);
+    REQUIRE(r.code == 0);
+    CHECK(r.output.find("within the rounding") == std::string::npos);  // located exactly
+    const auto rows = csv_rows(slurp(csv));
+    REQUIRE(rows.size() == 7);
+    // BT at the source vertex is its t0; at the opposite vertex the straight path across two
+    // faces (unfolded, the long diagonal of a rhombus of side d sqrt(2)): d sqrt(6).
+    CHECK(std::fabs(std::stod(rows[1][3])) <= std::stod(rows[1][4]));
+    CHECK(std::fabs(std::stod(rows[2][3]) - 0.0100001 * std::sqrt(6.0)) <= std::stod(rows[2][4]) + 1e-15);
+    std::remove(mesh.c_str());
+  }
+  // A source off the mesh by its coordinates' rounding is moved to the mesh, with a note;
+  // one farther off is refused.
+  const std::string off = temp_path("gf_octa.off");
+  write_text(off, octahedron_text("off"));
+  write_text(sources, "x,y,z,t0\n0.026500600000000000001,0.00349105,0.0598442,0\n");
+  testing::CliRun r = run_cli("burn3d " + off + " --mesh-is-complex --method exact --sources " + sources + " --at " + at +
+                              " --csv " + csv + " --no-border-ignition");
+  INFO(r.output);
+  CHECK(r.code == 0);
+  CHECK_THAT(r.output, Catch::Contains("located at its nearest point of the complex, at distance 1"));
+  write_text(sources, "x,y,z,t0\n0.0265006000001,0.00349105,0.0598442,0\n");
+  r = run_cli("burn3d " + off + " --mesh-is-complex --method exact --sources " + sources + " --at " + at + " --csv " + csv);
+  CHECK(r.code == 1);
+  CHECK_THAT(r.output, Catch::Contains("does not lie on the complex (its nearest point is at distance "));
+  for (const std::string& p : {sources, at, csv, off}) std::remove(p.c_str());
+}

@@ -78,8 +78,7 @@ TEST_CASE("regression: a number of 10^5 digits is refused at once instead of slo
   const std::string text = "3 0 1\nv 0 0 0 1\nv 1 0 0 1\nv 0 " + std::string(150000, '9') + " 0 1\nf 0 1 2\n";
   CHECK(error_of([&] { MedialComplex mc(parse_ma(text, "long.ma")); }) ==
         "long.ma:4: '9999999999999999999999999999999999999999...' (150000 characters) is not a finite decimal number");
-  mpq_class q;
-  CHECK_FALSE(parse_exact_decimal(std::string(1001, '1'), q));
+  CHECK_FALSE(parse_exact_decimal(std::string(1001, '1')).has_value());
   CHECK(error_of([&] { parse_disk_list("0 0 " + std::string(1001, '1') + "\n", "in.txt"); }) ==
         "in.txt:1: r = '1111111111111111111111111111111111111111...' (1001 characters) is not a decimal number (at "
         "most 1000 digits, an optional point and an exponent of at most 300)");

@@ -41,7 +41,8 @@ struct MeshPoint {
 
 // The point of p.face at p's weights, exactly (every double is a rational; with dyadic
 // weights such as k/8 this is the point CGAL is given), to locate on the mesh's complex
-// (mesh_as_complex reads the coordinates exactly too).
+// (mesh_as_complex takes the same doubles exactly for meshes built in code, e.g. refined
+// meshes; for a mesh read from text it takes the decimals written, io/decimal_text.h).
 ExactPoint3 exact_mesh_point(const TriangleMesh3& mesh, const MeshPoint& p);
 
 class SmspGeodesics {

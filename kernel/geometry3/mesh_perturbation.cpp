@@ -17,6 +17,7 @@ TriangleMesh3 perturb_mesh(const TriangleMesh3& mesh, double amplitude, std::uin
   }
   TriangleMesh3 out = mesh;
   out.source = mesh.source + " (perturbed)";
+  out.exact_vertices.clear();  // the moved doubles are the coordinates now
   std::mt19937_64 rng(seed);
   std::uniform_real_distribution<double> u(-1, 1);
   for (std::size_t v = 0; v < mesh.vertices.size(); ++v)

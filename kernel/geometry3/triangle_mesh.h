@@ -8,6 +8,8 @@
 // so that messages name the elements a user can find in the file.
 #pragma once
 
+#include <gmpxx.h>
+
 #include <array>
 #include <cstddef>
 #include <cstdint>
@@ -30,6 +32,10 @@ struct MeshCleanup {
 struct TriangleMesh3 {
   std::string source;  // file name or generator, for messages
   std::vector<std::array<double, 3>> vertices;
+  // The coordinates the file wrote, exactly (io/decimal_text.h: a decimal is the rational it
+  // writes; `vertices` holds their nearest doubles), one per vertex; empty when the doubles
+  // are the exact coordinates (binary files, meshes built in code).
+  std::vector<std::array<mpq_class, 3>> exact_vertices;
   std::vector<std::array<std::uint32_t, 3>> triangles;
   // The file's 0-based index of each vertex (the first of its welded copies; STL numbers the
   // corners of facet f as 3 f, 3 f + 1, 3 f + 2) and of the face each triangle comes from.

@@ -44,46 +44,6 @@ std::vector<TextLine> tokenize_lines(const std::string& text, char comment) {
   return lines;
 }
 
-std::optional<mpq_class> parse_exact_decimal(const std::string& s) {
-  std::size_t i = 0;
-  bool negative = false;
-  if (i < s.size() && (s[i] == '+' || s[i] == '-')) negative = s[i++] == '-';
-  std::string digits;
-  long fraction_digits = 0;
-  bool any = false;
-  for (; i < s.size() && std::isdigit(static_cast<unsigned char>(s[i])); ++i) digits += s[i], any = true;
-  if (i < s.size() && s[i] == '.') {
-    for (++i; i < s.size() && std::isdigit(static_cast<unsigned char>(s[i])); ++i)
-      digits += s[i], ++fraction_digits, any = true;
-  }
-  if (!any || digits.size() > kMaxDecimalDigits) return std::nullopt;
-  long exponent = 0;
-  if (i < s.size() && (s[i] == 'e' || s[i] == 'E')) {
-    ++i;
-    bool eneg = false;
-    if (i < s.size() && (s[i] == '+' || s[i] == '-')) eneg = s[i++] == '-';
-    std::string e;
-    for (; i < s.size() && std::isdigit(static_cast<unsigned char>(s[i])); ++i) e += s[i];
-    if (e.empty() || e.size() > 6) return std::nullopt;
-    exponent = std::stol(e) * (eneg ? -1 : 1);
-  }
-  if (i != s.size()) return std::nullopt;
-  const long power = exponent - fraction_digits;
-  if (power > 4000 || power < -4000) return std::nullopt;
-  mpz_class num(digits, 10), scale;
-  mpz_ui_pow_ui(scale.get_mpz_t(), 10, static_cast<unsigned long>(std::labs(power)));
-  mpq_class q = power >= 0 ? mpq_class(num * scale) : mpq_class(num, scale);
-  q.canonicalize();
-  return negative ? mpq_class(-q) : q;
-}
-
-std::optional<double> parse_finite_double(const std::string& s) {
-  if (!parse_exact_decimal(s)) return std::nullopt;  // the same syntax, no nan/inf/hex
-  const double d = std::strtod(s.c_str(), nullptr);
-  if (!std::isfinite(d)) return std::nullopt;
-  return d;
-}
-
 std::optional<std::uint64_t> parse_index(const std::string& s) {
   if (s.empty() || s.size() > 18) return std::nullopt;
   for (char c : s)

@@ -2,12 +2,7 @@
 // the error type, line-by-line tokenising with line numbers, exact decimal parsing, and
 // printing rationals exactly when they are decimals.
 //
-// Numbers: parse_exact_decimal reads [+-]digits[.digits][(e|E)[+-]digits] (also ".5",
-// "5.") into the rational it denotes, exactly; "nan", "inf" and anything else are
-// rejected, and so are numbers of more than kMaxDecimalDigits digits or whose value needs a
-// power of ten beyond 10^+-4000: every double is written exactly in 767 significant digits,
-// and exact arithmetic on longer numbers would make a damaged file take minutes.
-// parse_finite_double reads the same syntax into the nearest double.
+// Numbers: decimals are read by io/decimal_text.h (the one reading of decimal text).
 #pragma once
 
 #include <gmpxx.h>
@@ -20,6 +15,7 @@
 
 #include "support/format_error.h"
 #include "support/number_text.h"  // shortest_double, which the 3D writers use
+#include "io/decimal_text.h"
 
 namespace grassfire {
 
@@ -42,9 +38,6 @@ struct TextLine {
 // line is dropped (comment = 0: none).
 std::vector<TextLine> tokenize_lines(const std::string& text, char comment = '#');
 
-constexpr std::size_t kMaxDecimalDigits = 1000;
-std::optional<mpq_class> parse_exact_decimal(const std::string& token);
-std::optional<double> parse_finite_double(const std::string& token);
 std::optional<std::uint64_t> parse_index(const std::string& token);  // decimal digits only
 
 // Exact decimal text of q when its denominator is 2^a 5^b, else nothing.

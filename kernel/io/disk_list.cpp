@@ -6,6 +6,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "io/decimal_text.h"
 #include "support/quoted.h"
 #include "number/exact_sum.h"
 
@@ -13,14 +14,7 @@ namespace grassfire {
 
 namespace {
 
-constexpr long kMaxExponent = 300;
-constexpr std::size_t kMaxDigits = 1000;  // as the 3D readers (io/complex_text.h): exact arithmetic stays fast
-
-bool all_digits(const std::string& s) {
-  for (char c : s)
-    if (!std::isdigit(static_cast<unsigned char>(c))) return false;
-  return true;
-}
+constexpr long kMaxExponent = 300;  // a written exponent beyond: refused (every disk has a double)
 
 // Splits a line (comment removed) into fields separated by blanks or commas.
 std::vector<std::string> fields_of(const std::string& line) {
@@ -39,39 +33,6 @@ std::vector<std::string> fields_of(const std::string& line) {
 }
 
 }  // namespace
-
-bool parse_exact_decimal(const std::string& token, mpq_class& value) {
-  std::size_t i = 0;
-  bool negative = false;
-  if (i < token.size() && (token[i] == '+' || token[i] == '-')) negative = token[i++] == '-';
-  const std::size_t e = token.find_first_of("eE", i);
-  const std::string mantissa = token.substr(i, e == std::string::npos ? std::string::npos : e - i);
-  const std::size_t dot = mantissa.find('.');
-  const std::string whole = mantissa.substr(0, dot);
-  const std::string fraction = dot == std::string::npos ? "" : mantissa.substr(dot + 1);
-  if (whole.empty() && fraction.empty()) return false;
-  if (whole.size() + fraction.size() > kMaxDigits) return false;
-  if (!all_digits(whole) || !all_digits(fraction)) return false;
-  long exponent = 0;
-  if (e != std::string::npos) {
-    std::string digits = token.substr(e + 1);
-    bool exp_negative = false;
-    if (!digits.empty() && (digits[0] == '+' || digits[0] == '-')) {
-      exp_negative = digits[0] == '-';
-      digits.erase(0, 1);
-    }
-    if (digits.empty() || !all_digits(digits) || digits.size() > 6) return false;
-    exponent = std::stol(digits) * (exp_negative ? -1 : 1);
-    if (exponent > kMaxExponent || exponent < -kMaxExponent) return false;
-  }
-  exponent -= static_cast<long>(fraction.size());
-  mpz_class n(whole + fraction, 10);
-  mpz_class scale;
-  mpz_ui_pow_ui(scale.get_mpz_t(), 10, static_cast<unsigned long>(exponent < 0 ? -exponent : exponent));
-  value = exponent < 0 ? make_rational(n, scale) : mpq_class(n * scale);
-  if (negative) value = -value;
-  return true;
-}
 
 DiskList parse_disk_list(const std::string& text, const std::string& source) {
   DiskList list;
@@ -93,10 +54,13 @@ DiskList parse_disk_list(const std::string& text, const std::string& source) {
     d.line = number;
     const char* names[3] = {"x", "y", "r"};
     mpq_class* targets[3] = {&d.x, &d.y, &d.r};
-    for (int k = 0; k < 3; ++k)
-      if (!parse_exact_decimal(f[k], *targets[k]))
+    for (int k = 0; k < 3; ++k) {
+      const std::optional<mpq_class> q = parse_exact_decimal(f[k], kMaxExponent);
+      if (!q)
         fail(std::string(names[k]) + " = " + quote_token(f[k]) +
              " is not a decimal number (at most 1000 digits, an optional point and an exponent of at most 300)");
+      *targets[k] = *q;
+    }
     if (sgn(d.r) <= 0) fail("radius r = " + shorten_token(f[2]) + " must be positive");
     list.disks.push_back(std::move(d));
   }

@@ -33,7 +33,5 @@ namespace grassfire {
 DiskList parse_disk_list(const std::string& text, const std::string& source);
 // Reads and parses a file; an unreadable file is a DiskListError naming the path.
 DiskList read_disk_list(const std::string& path);
-// An exact decimal number ("-1.25e-3") as a rational, or false when `token` is not one.
-bool parse_exact_decimal(const std::string& token, mpq_class& value);
 
 }  // namespace grassfire

@@ -102,7 +102,8 @@ std::string medial2d_json(const Medial2dJsonInput& in) {
                         {"multiprecision_decided", st.mpfr_decided},
                         {"exact_zero", st.exact_zero},
                         {"uncertified_ties", st.uncertified_zero},
-                        {"queue_ties", r.queue_ties}};
+                        {"queue_ties", r.queue_ties},
+                        {"voronoi_fallbacks", in.voronoi_fallbacks}};
   return j.dump(1) + "\n";
 }
 

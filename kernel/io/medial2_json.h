@@ -21,6 +21,7 @@
 // the EMA's edf and offset; the EMA's x, y inside an edge are interpolated for display).
 #pragma once
 
+#include <cstdint>
 #include <nlohmann/json.hpp>
 
 #include <string>
@@ -38,6 +39,7 @@ struct Medial2dJsonInput {
   const GrassfireResult* burning = nullptr;
   const NodeMeasures* measures = nullptr;
   const PotentialResidue* residue = nullptr;  // optional
+  std::uint64_t voronoi_fallbacks = 0;        // exact polygon axis: diagrams rebuilt (polygon_axis.h)
 };
 
 std::string medial2d_json(const Medial2dJsonInput& in);

@@ -15,15 +15,20 @@
 namespace grassfire {
 namespace {
 
-std::array<double, 3> xyz(const TextLine& l, std::size_t first, const std::string& source) {
+// A vertex line's three coordinates from token `first`: the exact decimals and their
+// nearest doubles (io/decimal_text.h).
+void add_vertex(TriangleMesh3& m, const TextLine& l, std::size_t first, const std::string& source) {
   std::array<double, 3> p{};
+  std::array<mpq_class, 3> q;
   for (std::size_t i = 0; i < 3; ++i) {
     if (first + i >= l.tokens.size()) format_error(source, l.number, "a vertex needs three coordinates");
-    const auto d = parse_finite_double(l.tokens[first + i]);
+    auto d = parse_decimal_value(l.tokens[first + i]);
     if (!d) format_error(source, l.number, quote_token(l.tokens[first + i]) + " is not a finite number");
-    p[i] = *d;
+    p[i] = d->nearest;
+    q[i] = std::move(d->exact);
   }
-  return p;
+  m.vertices.push_back(p);
+  m.exact_vertices.push_back(std::move(q));
 }
 
 // Geomview's OFF family: [ST][C][N][4][n]OFF. The prefixes add per-vertex numbers (texture
@@ -106,7 +111,7 @@ TriangleMesh3 parse_off(const std::string& text, const std::string& source) {
     format_error(source, lines.back().number, "file ends early: the counts announce " + std::to_string(nv) + " vertices and " +
                                                   std::to_string(nf) + " faces");
   if (lines.size() - next > nv + nf) format_error(source, lines[next + nv + nf].number, "content after the last face");
-  for (std::uint64_t i = 0; i < nv; ++i) m.vertices.push_back(xyz(lines[next + i], 0, source));
+  for (std::uint64_t i = 0; i < nv; ++i) add_vertex(m, lines[next + i], 0, source);
   for (std::uint64_t i = 0; i < nf; ++i) {
     const TextLine& l = lines[next + nv + i];
     const auto n = parse_index(l.tokens[0]);
@@ -139,7 +144,7 @@ TriangleMesh3 parse_obj(const std::string& text, const std::string& source) {
   for (const TextLine& l : tokenize_lines(text)) {
     if (l.tokens[0] == "v") {
       if (l.tokens.size() < 4 || l.tokens.size() > 5) format_error(source, l.number, "vertex must be 'v x y z [w]'");
-      m.vertices.push_back(xyz(l, 1, source));
+      add_vertex(m, l, 1, source);
     } else if (l.tokens[0] == "f") {
       if (l.tokens.size() < 4)
         format_error(source, l.number, "face with " + std::to_string(l.tokens.size() - 1) + " vertices; at least 3 are required");
@@ -241,8 +246,15 @@ BallSet read_ball_list(const std::string& path) { return parse_ball_list(read_te
 RawComplex mesh_as_complex(const TriangleMesh3& mesh) {
   RawComplex r;
   r.source = mesh.source;
-  for (const auto& p : mesh.vertices) {
-    r.vertices.push_back({mpq_class(p[0]), mpq_class(p[1]), mpq_class(p[2])});
+  // The coordinates as written (io/decimal_text.h), where the doubles are still theirs.
+  const bool exact = mesh.exact_vertices.size() == mesh.vertices.size();
+  for (std::size_t v = 0; v < mesh.vertices.size(); ++v) {
+    const auto& p = mesh.vertices[v];
+    const auto* q = exact ? &mesh.exact_vertices[v] : nullptr;
+    if (q && nearest_double((*q)[0]) == p[0] && nearest_double((*q)[1]) == p[1] && nearest_double((*q)[2]) == p[2])
+      r.vertices.push_back({(*q)[0], (*q)[1], (*q)[2]});
+    else
+      r.vertices.push_back({mpq_class(p[0]), mpq_class(p[1]), mpq_class(p[2])});
     r.radius_squared.push_back(0);
   }
   r.triangles = mesh.triangles;

@@ -34,8 +34,10 @@
 // Then every reader repairs what is safe to repair, and counts it (io/mesh_weld.h): exactly
 // repeated vertices are welded, faces left with fewer than 3 distinct vertices and
 // repeated faces are dropped, unused vertices are dropped.
+// Coordinates (io/decimal_text.h): text formats keep the decimals as written, exactly
+// (TriangleMesh3::exact_vertices), beside their nearest doubles (TriangleMesh3::vertices).
 // Writing: OFF, OBJ and ASCII PLY with the shortest round-tripping decimals, so a mesh
-// written and read back is identical.
+// written and read back has the same doubles.
 #pragma once
 
 #include <string>
@@ -64,8 +66,9 @@ void write_ply(const TriangleMesh3& mesh, const std::string& path);
 BallSet parse_ball_list(const std::string& text, const std::string& source);
 BallSet read_ball_list(const std::string& path);
 
-// The mesh itself as a complex: vertex coordinates are the doubles read (exactly, as
-// rationals), R = 0 and Linear ignition; for burning on a given surface or 2-complex.
+// The mesh itself as a complex: vertex coordinates are the decimals the file wrote
+// (exact_vertices, where their nearest doubles are still the mesh's), else the doubles,
+// exactly; R = 0 and Linear ignition; for burning on a given surface or 2-complex.
 RawComplex mesh_as_complex(const TriangleMesh3& mesh);
 
 // Appends a polygonal face (v_0, ..., v_{k-1}) of the file as the fan of triangles

@@ -121,6 +121,7 @@ class PlyReader {
     where_ = shorten_token(e.name) + " " + std::to_string(index);
     if (!h_.binary) start_line();
     std::vector<std::vector<double>> values;
+    text_.assign(e.properties.size(), std::string());
     for (const PlyProperty& p : e.properties) {
       std::vector<double> v;
       if (p.is_list) {
@@ -129,12 +130,15 @@ class PlyReader {
         for (std::uint64_t i = 0; i < static_cast<std::uint64_t>(n); ++i) v.push_back(scalar(p.type));
       } else {
         v.push_back(scalar(p.type));
+        if (!h_.binary) text_[values.size()] = tokens_[token_ - 1];
       }
       values.push_back(std::move(v));
     }
     if (!h_.binary && token_ < tokens_.size()) fail("more values than the element's properties");
     return values;
   }
+  // ASCII: the text of scalar property k of the element last read ("" when binary).
+  const std::string& text(int k) const { return text_[static_cast<std::size_t>(k)]; }
   void finish() {
     if (h_.binary) return;
     while (pos_ < bytes_.size()) {
@@ -199,6 +203,7 @@ class PlyReader {
   const std::string& source_;
   std::size_t pos_, line_;
   std::vector<std::string> tokens_;
+  std::vector<std::string> text_;
   std::size_t token_ = 0;
   std::string where_;
 };
@@ -235,6 +240,9 @@ TriangleMesh3 parse_ply(const std::string& bytes, const std::string& source) {
         for (double c : m.vertices.back())
           if (!std::isfinite(c))
             throw ComplexFormatError(source + ": vertex " + std::to_string(i) + ": coordinate is NaN or infinite");
+        if (!h.binary)  // the decimals as written (io/decimal_text.h); finite, so they parse
+          m.exact_vertices.push_back({*parse_exact_decimal(reader.text(ix)), *parse_exact_decimal(reader.text(iy)),
+                                      *parse_exact_decimal(reader.text(iz))});
       } else if (e.name == "face") {
         const auto& idx = values[list];
         const std::string where = source + ": face " + std::to_string(i) + ": ";

@@ -98,12 +98,15 @@ class AsciiStl {
     std::array<std::array<double, 3>, 3> corners;
     for (auto& p : corners) {
       expect("vertex");
-      for (double& x : p) {
+      std::array<mpq_class, 3> exact;
+      for (int k = 0; k < 3; ++k) {
         const std::string w = word("a coordinate");
-        const auto d = parse_finite_double(w);
+        auto d = parse_decimal_value(w);
         if (!d) fail(quote_token(w) + " is not a finite number", true);
-        x = *d;
+        p[k] = d->nearest;
+        exact[k] = std::move(d->exact);
       }
+      m.exact_vertices.push_back(std::move(exact));
     }
     expect("endloop");
     expect("endfacet");

@@ -55,7 +55,9 @@ void weld_and_drop(TriangleMesh3& mesh) {
   std::vector<std::uint32_t> renumber(mesh.vertices.size(), none);
   for (const auto& tri : kept)
     for (std::uint32_t v : tri) renumber[v] = 0;
+  const bool exact = mesh.exact_vertices.size() == mesh.vertices.size();
   std::vector<std::array<double, 3>> vertices;
+  std::vector<std::array<mpq_class, 3>> exact_vertices;
   std::vector<std::uint32_t> origin;
   for (std::uint32_t v = 0; v < renumber.size(); ++v) {
     if (first[v] != v) continue;
@@ -65,11 +67,13 @@ void weld_and_drop(TriangleMesh3& mesh) {
     }
     renumber[v] = static_cast<std::uint32_t>(vertices.size());
     vertices.push_back(mesh.vertices[v]);
+    if (exact) exact_vertices.push_back(std::move(mesh.exact_vertices[v]));
     origin.push_back(v < mesh.vertex_origin.size() ? mesh.vertex_origin[v] : v);
   }
   for (auto& tri : kept)
     for (std::uint32_t& v : tri) v = renumber[v];
   mesh.vertices = std::move(vertices);
+  mesh.exact_vertices = std::move(exact_vertices);
   mesh.vertex_origin = std::move(origin);
   mesh.triangles = std::move(kept);
   mesh.triangle_origin = std::move(kept_origin);

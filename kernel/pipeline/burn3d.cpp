@@ -23,14 +23,34 @@ std::vector<CsvPoint> rows_of(const BurnPoints& points, bool with_t0) {
   return points.file ? read_point_csv(*points.file, with_t0) : points.rows;
 }
 
-std::vector<PointSource> locate_sources(const ComplexLocator& locator, const BurnPoints& points) {
+// The rounding of a point's coordinates to doubles, squared: 3 (2^-52 M)^2 for the largest
+// magnitude M among them and those of its nearest point (one rounding on either side).
+mpq_class rounding_squared(const ExactPoint3& a, const ExactPoint3& b) {
+  mpq_class m = 0;
+  for (const ExactPoint3* p : {&a, &b})
+    for (const mpq_class* c : {&p->x, &p->y, &p->z}) m = std::max(m, mpq_class(abs(*c)));
+  const mpq_class ulp = m / mpq_class(mpz_class(1) << 52);
+  return 3 * ulp * ulp;
+}
+
+// A source on the complex is located exactly; one within the rounding of its coordinates
+// (a point of a mesh written as doubles elsewhere) at its nearest point, with a note of the
+// distance; any other is an error naming the line and the distance.
+std::vector<PointSource> locate_sources(const ComplexLocator& locator, const BurnPoints& points,
+                                        std::size_t* rounded) {
   const std::string& name = points.file ? *points.file : points.name;
   std::vector<PointSource> sources;
   for (const CsvPoint& row : rows_of(points, true)) {
     ComplexPoint x = locator.locate(row.point);
-    if (sgn(x.snap_squared) != 0)
-      format_error(name, row.line, "source " + point_text(row.point) + " does not lie on the complex (its nearest "
-                                   "point is at distance " + shortest_double(x.snap()) + ")");
+    if (sgn(x.snap_squared) != 0) {
+      if (x.snap_squared > rounding_squared(row.point, x.point))
+        format_error(name, row.line, "source " + point_text(row.point) + " does not lie on the complex (its nearest "
+                                     "point is at distance " + shortest_double(x.snap()) + ")");
+      note(name + ":" + std::to_string(row.line) + ": source " + point_text(row.point) +
+           " located at its nearest point of the complex, at distance " + shortest_double(x.snap()) +
+           " (within the rounding of its coordinates)");
+      ++*rounded;
+    }
     sources.push_back({std::move(x), row.t0});
   }
   return sources;
@@ -58,6 +78,7 @@ nlohmann::json report(const Burn3dSetup& setup, const Burn3dRun& run) {
                   {"singular_points", mc.count(VertexKind::SingularPoint)},
                   {"sheets", mc.sheets().size()}};
   j["sources"] = run.sources.size();
+  j["sources_within_rounding"] = run.rounded_sources;
   j["queries"] = run.queries.size();
   j["stats"] = run.outcome.report;
   std::size_t unburned = 0;
@@ -108,7 +129,7 @@ Burn3dRun burn3d(const Burn3dSetup& setup) {
   const bool has_queries = setup.queries.file || !setup.queries.rows.empty();
   if (setup.sources.file || !setup.sources.rows.empty() || has_queries) {
     const ComplexLocator locator(mc);
-    run.sources = locate_sources(locator, setup.sources);
+    run.sources = locate_sources(locator, setup.sources, &run.rounded_sources);
     run.query_rows = rows_of(setup.queries, false);
     for (std::size_t i = 0; i < run.query_rows.size(); ++i) {
       run.queries.push_back(locator.locate(run.query_rows[i].point));

@@ -5,12 +5,15 @@
 // returns (both call burn3d() below, so the two agree): the complex an input names
 // (pipeline/complex_input.h), optionally without border ignition; the point sources
 // (x,y,z,t0), each located exactly on the complex (complex3/point_location.h; a source
-// off the complex is an error); the queries (x,y,z), each located at its nearest point of
+// off the complex by at most the rounding of its coordinates to doubles, sqrt(3) 2^-52 times
+// the largest magnitude among them and its nearest point's, is moved to that nearest point
+// with a note giving the distance, counted in "sources_within_rounding"; one farther off is
+// an error); the queries (x,y,z), each located at its nearest point of
 // the complex; the burning time by a method of the table (pipeline/burn3d_methods.h) at
 // the spacing `grassfire burn3d` chooses; and the report `burn3d --json` writes:
 //   {"input", "method", "spacing" (discrete only), "complex": {vertices, edges, triangles,
-//    segments, border_edges, singular_edges, singular_points, sheets}, "sources", "queries"
-//    (counts), "stats": {the method's counters}, "summary": {burned_vertices,
+//    segments, border_edges, singular_edges, singular_points, sheets}, "sources",
+//    "sources_within_rounding", "queries" (counts), "stats": {the method's counters}, "summary": {burned_vertices,
 //    unburned_vertices, max_bt, max_et}, "vertex_values": {"x", "y", "z", "R", "BT", "ET",
 //    "BT_error" (methods with a certified two-sided bound: exact)}}
 // with null for BT, ET and BT_error where nothing burns.
@@ -60,6 +63,7 @@ struct Burn3dSetup {
 struct Burn3dRun {
   std::unique_ptr<MedialComplex> mc;  // validated
   std::vector<PointSource> sources;
+  std::size_t rounded_sources = 0;    // sources off the complex by no more than their rounding, moved onto it
   std::vector<CsvPoint> query_rows;   // as given or read (the program echoes their text)
   std::vector<ComplexPoint> queries;  // located, in query order
   double spacing = 0.0;

@@ -15,7 +15,8 @@ std::string edf2d_json(const Shape2& shape, const Edf2dOptions& options, const E
   std::optional<PotentialResidue> pr;  // PR needs arc lengths along the boundary
   if (options.axis != AxisMethod::DiskUnion)
     pr = potential_residue(*r.graph, closest_points(*r.graph, &shape, &r.samples));
-  return medial2d_json({shape.name, samples, r.graph.get(), r.burning.get(), &r.measures, pr ? &*pr : nullptr});
+  return medial2d_json({shape.name, samples, r.graph.get(), r.burning.get(), &r.measures, pr ? &*pr : nullptr,
+                        r.polygon_report.voronoi_fallbacks});
 }
 
 }  // namespace grassfire

@@ -4,7 +4,6 @@
 #include <algorithm>
 #include <stdexcept>
 
-#include <mpfr.h>
 #include <nlohmann/json.hpp>
 
 #include "io/medial2_json.h"
@@ -67,15 +66,6 @@ std::uint64_t component_count(const PrunedAxis& p) {
 }
 
 }  // namespace
-
-double nearest_double(const mpq_class& q) {
-  mpfr_t x;
-  mpfr_init2(x, 53);
-  mpfr_set_q(x, q.get_mpq_t(), MPFR_RNDN);
-  const double d = mpfr_get_d(x, MPFR_RNDN);
-  mpfr_clear(x);
-  return d;
-}
 
 Prune2dRun prune2d(const Shape2& shape, const Prune2dSetup& setup) {
   if (sgn(setup.erosion) < 0 || sgn(setup.tubularity) < 0)

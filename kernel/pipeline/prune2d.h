@@ -26,6 +26,7 @@
 #include <string>
 
 #include "burn2/axis_pruning.h"
+#include "io/decimal_text.h"  // nearest_double
 #include "pipeline/edf2d.h"
 
 namespace grassfire {
@@ -47,7 +48,5 @@ struct Prune2dRun {
 };
 
 Prune2dRun prune2d(const Shape2& shape, const Prune2dSetup& setup);
-// The double nearest to q (mpq_get_d truncates).
-double nearest_double(const mpq_class& q);
 
 }  // namespace grassfire

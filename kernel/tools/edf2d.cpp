@@ -40,9 +40,14 @@ void print_summary(std::ostream& os, const Shape2& shape, const Edf2dOptions& op
   os << "shape      " << shape.name;
   if (opt.axis != AxisMethod::DiskUnion) os << " (" << shape.rings.size() << " rings)";
   os << "\n";
-  if (opt.axis == AxisMethod::ExactPolygon)
-    os << "axis       exact polygon axis (" << to_string(r.polygon_report.construction) << ")\n";
-  else if (opt.axis == AxisMethod::DiskUnion)
+  if (opt.axis == AxisMethod::ExactPolygon) {
+    const PolygonAxisReport& pr = r.polygon_report;
+    os << "axis       exact polygon axis (" << to_string(pr.construction);
+    if (pr.voronoi_fallbacks > 0)
+      os << "; fallbacks " << pr.voronoi_fallbacks << ": " << to_string(pr.rejected_construction)
+         << " gave a wrong diagram (" << pr.fallback_reason << ")";
+    os << ")\n";
+  } else if (opt.axis == AxisMethod::DiskUnion)
     os << "axis       exact axis of a union of " << r.disk_report.disks << " disks (" << r.disk_report.covered_disks
        << " covered, " << r.disk_report.corners << " boundary corners)\n";
   else

@@ -16,8 +16,9 @@ namespace grassfire::cli {
 namespace {
 
 mpq_class threshold(const Options& opt, const std::string& name) {
-  mpq_class v;
-  if (!parse_exact_decimal(opt.get(name), v) || sgn(v) < 0)
+  const std::optional<mpq_class> q = parse_exact_decimal(opt.get(name));
+  const mpq_class v = q ? *q : mpq_class(-1);
+  if (!q || sgn(v) < 0)
     throw std::invalid_argument("option --" + name + " must be a non-negative decimal number, got '" + opt.get(name) +
                                 "'");
   return v;

@@ -5,6 +5,7 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <functional>
 #include <limits>
 #include <numeric>
 #include <optional>
@@ -18,6 +19,7 @@
 #include "medial2/polygon/segment_voronoi.h"
 #include "support/union_find.h"
 #include "medial2/polygon/voronoi_circle.h"
+#include "medial2/polygon/segment_voronoi_check.h"
 
 namespace grassfire {
 
@@ -123,7 +125,7 @@ Frame choose_frame(const Shape2& shape, const PolygonAxisOptions& options) {
 // The frame's Voronoi topology by its construction; the wide traits' overflow of their
 // 4096-bit exact integers (never observed) falls back to the mp traits on the same frame
 // (exact integers of any size: its integer parts cannot overflow).
-VoronoiTopology voronoi_of(Frame& frame, MpTier* tier) {
+VoronoiTopology boost_voronoi_of(Frame& frame, MpTier* tier) {
   if (frame.construction == AxisConstruction::BoostPolygon) return boost_segment_voronoi(frame.sites);
   if (frame.construction == AxisConstruction::BoostPolygonWide) {
     try {
@@ -132,8 +134,41 @@ VoronoiTopology voronoi_of(Frame& frame, MpTier* tier) {
       frame.construction = AxisConstruction::BoostPolygonMp;
     }
   }
-  if (frame.construction == AxisConstruction::BoostPolygonMp) return boost_segment_voronoi_mp(frame.sites, tier);
-  return cgal_segment_voronoi(frame.sites);
+  return boost_segment_voronoi_mp(frame.sites, tier);
+}
+
+// A construction's topology and the first defect segment_voronoi_check.h finds in it (an
+// extraction that stops on an impossible diagram is a defect too).
+std::optional<std::string> checked_run(VoronoiTopology& topo, std::uint32_t holes, const PolygonSites& sites,
+                                       const std::function<VoronoiTopology()>& build) {
+  try {
+    topo = build();
+  } catch (const std::logic_error& e) {
+    return std::string(e.what());
+  }
+  return voronoi_topology_defect(sites, topo, holes);
+}
+
+// The checked Voronoi topology of the frame: Boost's diagram when it passes the check,
+// else CGAL's segment Delaunay graph (exact predicates on the same frame), counted as a
+// fallback. A diagram no construction gets right is an error naming the shape.
+VoronoiTopology voronoi_of(Frame& frame, MpTier* tier, const Shape2& shape, PolygonAxisReport& rep) {
+  const std::uint32_t holes = static_cast<std::uint32_t>(shape.rings.size() - 1);
+  VoronoiTopology topo;
+  std::string tried;
+  if (frame.construction != AxisConstruction::CgalSdg) {
+    const auto defect = checked_run(topo, holes, frame.sites, [&] { return boost_voronoi_of(frame, tier); });
+    if (!defect) return topo;
+    ++rep.voronoi_fallbacks;
+    rep.rejected_construction = frame.construction;
+    rep.fallback_reason = *defect;
+    tried = std::string(to_string(frame.construction)) + " gave a wrong diagram (" + *defect + "), and ";
+    frame.construction = AxisConstruction::CgalSdg;
+  }
+  const auto defect = checked_run(topo, holes, frame.sites, [&] { return cgal_segment_voronoi(frame.sites); });
+  if (!defect) return topo;
+  throw std::runtime_error(shape.name + ": the exact polygon axis cannot be constructed: " + tried +
+                           "CGAL's segment Delaunay graph gave a wrong diagram (" + *defect + ")");
 }
 
 class Builder {
@@ -406,7 +441,7 @@ MedialGraph exact_polygon_axis(const Shape2& shape, const PolygonAxisOptions& op
     if (r.points.size() < 3) throw std::invalid_argument(shape.name + ": a ring has fewer than 3 vertices");
   Frame frame = choose_frame(shape, options);
   MpTier tier;
-  VoronoiTopology topo = voronoi_of(frame, &tier);
+  VoronoiTopology topo = voronoi_of(frame, &tier, shape, rep);
   rep.construction = frame.construction;
   rep.mp_input_bits = tier.input_bits;
   rep.mp_float_bits = tier.float_bits;

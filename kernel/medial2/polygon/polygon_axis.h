@@ -46,6 +46,13 @@
 // exact double values only when asked for (PolygonAxisOptions::construction).
 // Every policy gives the axis of the exact input polygon (the decimal one for the first),
 // and every combinatorial decision is exact.
+// Checked diagrams: Boost's builder has known wrong outputs on valid polygons (a missing
+// Voronoi vertex at a reflex corner, an interior edge to infinity); every diagram it
+// returns is checked (segment_voronoi_check.h) and one that fails is rebuilt by CGAL's SDG
+// on the same exact frame, counted in PolygonAxisReport::voronoi_fallbacks. Its hang on
+// vertices merged in a cycle cannot occur: the merging post-pass is switched off
+// (boost_voronoi_extract.h). When CGAL's diagram fails too, the error names the shape and
+// both defects (std::runtime_error); no valid polygon ends in an internal message.
 // Contract: a validated Shape2 (shapes/validate_shape.h). Throws std::invalid_argument
 // for an empty shape.
 // Complexity: O(n log n) (Boost, every traits) plus O(n) circle work; CGAL SDG is superlinear on dense
@@ -84,6 +91,12 @@ struct PolygonAxisReport {
   int mp_input_bits = 0, mp_float_bits = 0;
   bool mp_filtered = false;
   std::uint64_t mp_fallbacks = 0;
+  // Diagrams a Boost construction gave that failed the topology check
+  // (segment_voronoi_check.h) and were rebuilt by CGAL's segment Delaunay graph (then
+  // `construction` is CgalSdg): the construction rejected and the defect found.
+  std::uint64_t voronoi_fallbacks = 0;
+  AxisConstruction rejected_construction = AxisConstruction::Auto;
+  std::string fallback_reason;
   double frame_scale = 1;   // frame coordinates = input coordinates x frame_scale
   std::uint64_t polygon_vertices = 0;
   std::uint64_t voronoi_vertices = 0;   // interior Voronoi vertices before contraction
