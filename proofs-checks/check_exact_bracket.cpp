@@ -67,18 +67,6 @@ std::vector<ComplexPoint> probe_points(const CheckContext& ctx, const MedialComp
   return r;
 }
 
-// The engine's enclosures with the context's output mutant applied (shifting the enclosure).
-void mutate(const CheckContext& ctx, std::vector<Interval>& bt) {
-  std::vector<double> mid(bt.size());
-  for (std::size_t i = 0; i < bt.size(); ++i) mid[i] = bt[i].mid();
-  std::vector<double> m = mid;
-  mutate_burning_times(ctx, m, [](std::size_t) { return true; }, [](std::size_t) { return false; });
-  for (std::size_t i = 0; i < bt.size(); ++i) {
-    if (m[i] == mid[i]) continue;
-    bt[i] = std::isinf(m[i]) ? Interval::infinity() : Interval(bt[i].lo + m[i] - mid[i], bt[i].hi + m[i] - mid[i]);
-  }
-}
-
 double slack(double v) { return 1e-9 * (1 + std::abs(v)); }
 
 // The spacing: the instance's, coarsened until the singular set has at most kMaxCells / 2 cells.
@@ -116,7 +104,7 @@ void run(const CheckContext& ctx, const MedialComplex& mc, double h, const std::
   r.uncertified += eb.certification().uncertified;
   std::vector<Interval> engine;
   for (const ComplexPoint& x : points) engine.push_back(eb.burn_time(x));
-  mutate(ctx, engine);
+  mutate_enclosures(ctx, engine, [](std::size_t) { return true; }, [](std::size_t) { return false; });
   ++r.t.instances;
   r.spacing = std::max(r.spacing, h);
   for (int k = 0; k < 2; ++k) {

@@ -93,15 +93,7 @@ RawComplex random_planar_sheet(std::uint32_t seed) {
 // (mutants3d.h; every sample point lies in a sheet, none in a closed subcomplex that the
 // mutants could pick).
 void mutate(const CheckContext& ctx, std::vector<Interval>& bt) {
-  std::vector<double> mid(bt.size());
-  for (std::size_t i = 0; i < bt.size(); ++i) mid[i] = bt[i].mid();
-  std::vector<double> mutated = mid;
-  mutate_burning_times(ctx, mutated, [](std::size_t) { return true; }, [](std::size_t) { return false; });
-  for (std::size_t i = 0; i < bt.size(); ++i) {
-    if (mutated[i] == mid[i]) continue;
-    const double shift = mutated[i] - mid[i];
-    bt[i] = std::isinf(mutated[i]) ? Interval::infinity() : Interval(bt[i].lo + shift, bt[i].hi + shift);
-  }
+  mutate_enclosures(ctx, bt, [](std::size_t) { return true; }, [](std::size_t) { return false; });
 }
 
 struct ExactTallies {

@@ -93,4 +93,16 @@ void mutate_burning_times(const CheckContext& ctx, std::vector<double>& bt, cons
   if (ctx.mutated("bt-infinite")) x = DiscreteBurning::kInfinity;
 }
 
+void mutate_enclosures(const CheckContext& ctx, std::vector<Interval>& bt, const std::function<bool(std::size_t)>& in_sheet,
+                       const std::function<bool(std::size_t)>& closed) {
+  std::vector<double> mid(bt.size());
+  for (std::size_t i = 0; i < bt.size(); ++i) mid[i] = bt[i].mid();
+  std::vector<double> m = mid;
+  mutate_burning_times(ctx, m, in_sheet, closed);
+  for (std::size_t i = 0; i < bt.size(); ++i) {
+    if (m[i] == mid[i]) continue;
+    bt[i] = std::isinf(m[i]) ? Interval::infinity() : Interval(bt[i].lo + m[i] - mid[i], bt[i].hi + m[i] - mid[i]);
+  }
+}
+
 }  // namespace grassfire::checks

@@ -23,6 +23,7 @@
 
 #include "burn3/discrete_burning.h"
 #include "check_registry.h"
+#include "number/interval.h"
 
 namespace grassfire::checks {
 
@@ -37,5 +38,9 @@ std::unique_ptr<BurnRuleOverride> definition_rule(const CheckContext& ctx);
 // M2; closed(i): point i lies in the maximal closed subcomplex.
 void mutate_burning_times(const CheckContext& ctx, std::vector<double>& bt, const std::function<bool(std::size_t)>& in_sheet,
                           const std::function<bool(std::size_t)>& closed);
+// The same on certified enclosures (an exact engine's): the mutated value's shift moves the
+// whole enclosure (an infinite value makes it infinite).
+void mutate_enclosures(const CheckContext& ctx, std::vector<Interval>& bt, const std::function<bool(std::size_t)>& in_sheet,
+                       const std::function<bool(std::size_t)>& closed);
 
 }  // namespace grassfire::checks
