@@ -32,10 +32,20 @@
 //    so BT_N(0.3) = 0.5; the dip where a(x) < H is |x - 0.3| < sqrt(0.0015^2 - 0.001^2);
 //    in C at (0.3, -0.01, 0) BT = 0.5 + 0.01 = 0.51 (every phi_j >= 0.5, and the foot
 //    x' = 0.3 attains it). A rule taking the first arrival gives 0.4995 and 0.5095.
+// Bent spine (bend > 0): N runs from (0, 0, 0) to (1/2, 0, 0) to (1, -bend, 0), two singular
+// edges meeting at the angle pi - 2 atan(2 bend); A and C stay in z = 0 (above and below N,
+// each in two pieces), B stands vertically on both pieces. B unfolds to a flat rectangle
+// (distances there are those of the unfolding), C is convex, and A has one reflex corner at
+// (1/2, 0, 0), so a shortest path in A is straight when the segment stays above N and goes
+// via the corner otherwise. Page C arrives at N(x) at W + y(x) (straight down to y = -W);
+// the formulas above hold with these distances, W replaced by W + y(x), and |x - x'| along
+// N by arclength (each phi_j is then convex on each of the two pieces; for points of A the
+// inner minimum is found by a scan of 4001 points refined by golden section).
 // The families (junction_books): the docs' book; a front dipping under B's for a stretch
 // 3d/2 long (source depth d from 1e-6 to 1e-2, start H - 5d/4, so a(x) = H at x_i +- 3d/4);
 // several sources; two crossings 6e-7 apart; a tangent front (start H - d: a(x) >= H with
 // equality at x_i only); pages at near-degenerate dihedral angles (about 2e-3 rad); a
+// spine bent by 2e-3 rad with a dip at the corner;
 // source on N and one 1e-6 next to it. Check points sit in the dips, just outside them, on
 // the crossings, and in the pages near and away from N.
 // Contract: as built here (0 <= x <= 1 for check points, H <= W). Complexity: a check
@@ -65,6 +75,7 @@ struct JunctionBook {
   std::string name;
   mpq_class height_b = mpq_class(1, 2), width_c = mpq_class(3, 5);
   ExactPoint3 b{0, 0, 1}, c{0, -1, 0};  // rational unit directions of B and C
+  mpq_class bend = 0;  // > 0: N bent at (1/2, 0, 0) towards (1, -bend, 0) (then b, c as default)
   std::vector<JunctionBookSource> sources;
   std::vector<JunctionBookPoint> checks;
 };
