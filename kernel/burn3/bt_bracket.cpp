@@ -65,6 +65,23 @@ double convex_min(const std::function<double(double)>& f) {
   return std::min({f(0.0), f(1.0), f1, f2});
 }
 
+// The first time at which vertex v's link rule holds when link element i arrives at t[i]
+// (MedialComplex::link_burns; a border point, whose rule holds with nothing arrived, at its
+// first arrival).
+double link_time(const MedialComplex& mc, std::uint32_t v, const std::vector<double>& t) {
+  std::vector<std::size_t> order(t.size());
+  for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return t[a] < t[b]; });
+  std::vector<bool> arrived(t.size(), false);
+  const bool border = mc.link_burns(v, arrived);
+  for (std::size_t i : order) {
+    if (!std::isfinite(t[i])) break;
+    arrived[i] = true;
+    if (border || mc.link_burns(v, arrived)) return t[i];
+  }
+  return kInf;
+}
+
 double kth(std::vector<double> v, std::uint32_t k) {
   if (v.size() < k || k == 0) return kInf;
   std::nth_element(v.begin(), v.begin() + (k - 1), v.end());
@@ -103,14 +120,11 @@ void BtLowerBound::build_cells() {
     c.a = c.b = mc_.vertex(v).approx;
     c.vertex = v;
     c.floor = mc_.is_border_point(v) ? mc_.ignition_at_vertex(v) : kInf;
-    if (mc_.vertex(v).kind == VertexKind::SingularCurve) {
-      for (const LinkElement& el : mc_.link_elements(v))
-        if (!el.is_pole) c.side_sheet.push_back(mc_.sectors()[el.id].sheet);
-      c.need = static_cast<std::uint32_t>(c.side_sheet.size()) - 1;
-    } else {
-      for (std::uint32_t t : mc_.vertex_triangles(v)) c.side_sheet.push_back(mc_.triangle(t).sheet);
-      c.need = 1;
-    }
+    // one side per link element: a sector (its sheet) or a pole (never a non-local arrival:
+    // fire along an edge of Sigma is the envelope's)
+    for (const LinkElement& el : mc_.link_elements(v))
+      c.side_sheet.push_back(el.is_pole ? kNoIndex : mc_.sectors()[el.id].sheet);
+    c.need = 0;  // the link rule
     vertex_cell_[v] = static_cast<std::uint32_t>(cells_.size());
     cells_.push_back(c);
   }
@@ -230,14 +244,16 @@ void BtLowerBound::solve() {
   // side values n_t(c), initialised with the ignitions of each side's sheet
   std::vector<std::vector<double>> side(n);
   for (std::size_t c = 0; c < n; ++c)
-    for (std::uint32_t s : cells_[c].side_sheet) side[c].push_back(ignition_bound(s, cells_[c].a, cells_[c].b));
+    for (std::uint32_t s : cells_[c].side_sheet)
+      side[c].push_back(s == kNoIndex ? kInf : ignition_bound(s, cells_[c].a, cells_[c].b));
   n_value_.assign(n, kInf);
   l_value_.assign(n, kInf);
   std::vector<char> n_done(n, 0), l_done(n, 0);
   using Item = std::pair<double, std::uint64_t>;  // value, 2 * cell + (0: N, 1: L)
   std::priority_queue<Item, std::vector<Item>, std::greater<Item>> queue;
   auto settle_n = [&](std::size_t c) {
-    const double v = std::min(cells_[c].floor, kth(side[c], cells_[c].need));
+    const double v = std::min(cells_[c].floor, cells_[c].need == 0 ? link_time(mc_, cells_[c].vertex, side[c])
+                                                                   : kth(side[c], cells_[c].need));
     if (v < n_value_[c]) {
       n_value_[c] = v;
       queue.push({v, 2 * c});

@@ -21,10 +21,12 @@
 //      for every y in the cell c (I_S(c): a lower bound of I_S over c: exact segment
 //      distances for constant f, else the value at c's midpoint minus half c's length).
 //      N(c) = the (k-1)-th smallest n_t(c) over the k triangles of a singular edge (the
-//      junction rule of Definition 9); over the sectors of a vertex on a singular curve
-//      likewise; the smallest over the triangles of any other vertex of Sigma (it needs at
-//      least one arrival); min with f at a border vertex and t0 of a source in c; +infinity
-//      on segments except at sources. N(c) <= the (k-1)-th non-local arrival at every y of c.
+//      junction rule of Definition 9); at a vertex of Sigma, the first time at which its link
+//      rule holds (MedialComplex::link_burns) when each sector arrives at n of its sheet and
+//      no pole arrives (fire along an edge of Sigma is local: the envelope's), or at its
+//      first such arrival at a border point; min with f at a border vertex and t0 of a
+//      source in c; +infinity on segments except at sources. So N(c) is at most the time
+//      at which y would burn from non-local arrivals alone, for every y of c.
 //  (c) Local arrivals (from Sigma within r, along the curve or through a sheet) are the
 //      envelope: Lemma. BT(y) >= G(y) := min over cells c of N(c) + dist(y, c) on Sigma.
 //      Proof, by induction on the burning time (Definition 9 is causal: an arrival at y at
@@ -87,8 +89,8 @@ class BtLowerBound {
   struct Cell {
     Vec3d a{}, b{};  // ends (a == b for a vertex)
     std::uint32_t edge = kNoIndex, vertex = kNoIndex;
-    std::vector<std::uint32_t> side_sheet;  // per side (triangle or sector)
-    std::uint32_t need = 1;                 // which order statistic of the sides burns it
+    std::vector<std::uint32_t> side_sheet;  // per side (triangle; at a vertex, link element)
+    std::uint32_t need = 1;                 // which order statistic burns it (0: the link rule)
     double floor = 0;                       // min of f at a border vertex and sources in it
   };
   void build_cells();
