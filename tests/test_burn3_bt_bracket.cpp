@@ -169,3 +169,42 @@ TEST_CASE("bt bracket: the exact engine on the junction books, from both sides",
     }
   }
 }
+
+TEST_CASE("bt bracket: the exact engine inside it on seeded books with point sources near the spine", "[exact3][bracket]") {
+  // Books of 3 or 4 pages (widths 1..4, every border igniting at 0) with one to three point
+  // sources in the pages, at distances 1/2^k (k = 2..12) from the spine: fronts that reach
+  // the spine in short dips under the pages' plane waves.
+  std::mt19937 rng(22);
+  for (int i = 0; i < 12; ++i) {
+    BookOptions o;
+    o.pages = 3 + i % 2;
+    for (int j = 0; j < o.pages; ++j) o.widths.push_back(std::uniform_int_distribution<long>(1, 4)(rng));
+    o.cells_per_unit = 1;
+    const MedialComplex mc = built(book(o));
+    const ComplexLocator locator(mc);
+    const int height = book_height(o);
+    std::vector<PointSource> sources;
+    const int n = std::uniform_int_distribution<int>(1, 3)(rng);
+    for (int k = 0; k < n; ++k) {
+      const int page = std::uniform_int_distribution<int>(0, o.pages - 1)(rng);
+      const auto dir = rational_unit_direction(2 * M_PI * page / o.pages);
+      const mpq_class u(1, 1L << std::uniform_int_distribution<int>(2, 12)(rng));
+      const mpq_class z(std::uniform_int_distribution<int>(8, 8 * height - 8)(rng), 8);
+      const mpq_class t0(std::uniform_int_distribution<int>(0, 8 * height)(rng), 16);
+      const ComplexPoint x = locator.locate({u * dir[0], u * dir[1], z});
+      REQUIRE(x.snap_squared == 0);
+      sources.push_back({x, t0});
+    }
+    ExactBurning eb(mc);
+    for (const PointSource& s : sources) eb.add_point_source(s.location, s.t0);
+    eb.add_border_ignition();
+    eb.run();
+    const BtBracket bracket(mc, 0.125, sources);
+    for (const ComplexPoint& x : probes(mc, locator)) {
+      const Interval e = eb.burn_time(x), br = bracket.at(x);
+      CAPTURE(i, x.approx()[0], x.approx()[1], x.approx()[2], e.lo, e.hi, br.lo, br.hi);
+      CHECK(br.lo <= e.hi + kRounding);
+      CHECK(e.lo <= br.hi + kRounding);
+    }
+  }
+}
