@@ -335,12 +335,13 @@ BtBracket::BtBracket(const MedialComplex& mc, double spacing, const std::vector<
     : mc_(mc),
       sources_(sources),
       lower_(mc, lower_options(spacing, sources)),
-      upper_(burn_discrete(mc, upper_options(spacing, sources))) {}
+      upper_(burn_discrete(mc, upper_options(spacing, sources))),
+      chords_(mc, spacing, sources) {}
 
 Interval BtBracket::at(const ComplexPoint& x) const {
   Interval r;
   r.lo = lower_.at(x);
-  r.hi = discrete_burning_time_at(mc_, upper_, sources_, x);
+  r.hi = std::min(discrete_burning_time_at(mc_, upper_, sources_, x), chords_.at(x));
   return r;
 }
 

@@ -2,9 +2,12 @@
 // exact engine (4.2.3, Definitions 9-10; DESIGN.md 5): a lower bound derived below and the
 // discrete baseline as the upper bound.
 //
-// Upper bound: the discrete baseline at spacing h (discrete_burning.h), read at any point by
-// discrete_query.h: every value is the time of polygonal non-crossing paths from burned
-// points, so it is >= BT (up to double rounding), and it converges as h shrinks.
+// Upper bound: the smaller of two, each the time of a burning process Definition 9 allows,
+// so >= BT (up to double rounding), and each converging as h shrinks: the discrete baseline
+// at spacing h (discrete_burning.h), read at any point by discrete_query.h (polygonal
+// non-crossing paths between graph points, on every complex); and fire that crosses the
+// singular set only at samples at spacing h, with exact (straight) distances inside the
+// convex planar sheets (bt_bracket_upper.h; +infinity where it needs another sheet).
 //
 // Lower bound (BtLowerBound). Let Sigma be the singular set: the singular edges, the dangling
 // segments and the vertices on them or on two or more sheets. Cut each edge of Sigma into
@@ -62,6 +65,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "burn3/bt_bracket_upper.h"
 #include "burn3/discrete_burning.h"
 #include "burn3/point_sources.h"
 #include "complex3/medial_complex.h"
@@ -112,8 +116,9 @@ class BtLowerBound {
   double seconds_ = 0;
 };
 
-// The bracket at one spacing h: [BtLowerBound, the discrete baseline read by
-// discrete_query.h] (both with the same sources; the border ignites as the complex says).
+// The bracket at one spacing h: [BtLowerBound, min(the discrete baseline read by
+// discrete_query.h, ChordUpperBound)] (all with the same sources; the border ignites as the
+// complex says).
 class BtBracket {
  public:
   BtBracket(const MedialComplex& mc, double spacing, const std::vector<PointSource>& sources = {});
@@ -127,6 +132,7 @@ class BtBracket {
   std::vector<PointSource> sources_;
   BtLowerBound lower_;
   DiscreteBurning upper_;
+  ChordUpperBound chords_;
 };
 
 }  // namespace grassfire
