@@ -10,6 +10,7 @@
 #include <queue>
 #include <stdexcept>
 
+#include "burn3/bracket_support.h"
 #include "burn3/discrete_query.h"
 
 namespace grassfire {
@@ -49,20 +50,6 @@ double segment_segment(const Vec3d& p1, const Vec3d& q1, const Vec3d& p2, const 
 
 double cell_distance(const Vec3d& a, const Vec3d& b, const Vec3d& c, const Vec3d& d) {
   return segment_segment(a, b, c, d);
-}
-
-// min over s in [0, 1] of a convex function (golden section, to 1e-12 in s).
-double convex_min(const std::function<double(double)>& f) {
-  const double g = (std::sqrt(5.0) - 1.0) / 2.0;
-  double lo = 0, hi = 1, m1 = hi - g, m2 = g, f1 = f(m1), f2 = f(m2);
-  for (int i = 0; i < 80 && hi - lo > 1e-12; ++i) {
-    if (f1 <= f2) {
-      hi = m2, m2 = m1, f2 = f1, m1 = hi - g * (hi - lo), f1 = f(m1);
-    } else {
-      lo = m1, m1 = m2, f1 = f2, m2 = lo + g * (hi - lo), f2 = f(m2);
-    }
-  }
-  return std::min({f(0.0), f(1.0), f1, f2});
 }
 
 // The first time at which vertex v's link rule holds when link element i arrives at t[i]
@@ -106,16 +93,9 @@ void BtLowerBound::build_cells() {
   sheet_cells_.assign(ns, {});
   sheet_border_.assign(ns, {});
   sheet_sources_.assign(ns, {});
-  auto sigma_edge = [&](std::uint32_t e) {
-    return mc_.edge(e).stratum == EdgeStratum::Singular || mc_.edge(e).stratum == EdgeStratum::Dangling;
-  };
   // Vertex cells: on an edge of Sigma, or on triangles of two or more sheets, or isolated.
   for (std::uint32_t v = 0; v < nv; ++v) {
-    bool sigma = mc_.vertex_triangles(v).empty();
-    for (std::uint32_t e : mc_.vertex_edges(v)) sigma = sigma || sigma_edge(e);
-    for (std::uint32_t t : mc_.vertex_triangles(v))
-      sigma = sigma || mc_.triangle(t).sheet != mc_.triangle(mc_.vertex_triangles(v).front()).sheet;
-    if (!sigma) continue;
+    if (!on_sigma_vertex(mc_, v)) continue;
     Cell c;
     c.a = c.b = mc_.vertex(v).approx;
     c.vertex = v;
@@ -129,7 +109,7 @@ void BtLowerBound::build_cells() {
     cells_.push_back(c);
   }
   for (std::uint32_t e = 0; e < mc_.edge_count(); ++e) {
-    if (!sigma_edge(e)) continue;
+    if (!on_sigma_edge(mc_, e)) continue;
     const ComplexEdge& ed = mc_.edge(e);
     const auto n = static_cast<std::uint32_t>(std::max(1.0, std::ceil(ed.length / o_.spacing)));
     if (cells_.size() + n > o_.max_cells)
@@ -222,15 +202,15 @@ double BtLowerBound::ignition_bound(std::uint32_t s, const Vec3d& a, const Vec3d
         continue;
       }
       const double ra = va.radius, rb = vb.radius;
-      best = std::min(best, convex_min([&](double t) {
+      best = std::min(best, golden_section_minimum([&](double t) {
                         return (1 - t) * ra + t * rb + norm(sub(mid, lerp(p, q, t)));
-                      }) - half);
+                      }, 0.0, 1.0) - half);
     } else {
       const Vec3d& o = ed.rule_point_approx;
-      best = std::min(best, convex_min([&](double t) {
+      best = std::min(best, golden_section_minimum([&](double t) {
                         const Vec3d y = lerp(p, q, t);
                         return norm(sub(y, o)) + norm(sub(mid, y));
-                      }) - half);
+                      }, 0.0, 1.0) - half);
     }
   }
   for (std::uint32_t i : sheet_sources_[s])

@@ -9,12 +9,16 @@
 #include <numeric>
 #include <queue>
 
+#include "burn3/bracket_support.h"
 #include "complex3/exact_predicates3.h"
 
 namespace grassfire {
 namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
+// Feet of border ignitions stay inside their edge (any point gives a valid path; an end
+// could lie on the supporting line of the point it feeds).
+constexpr double kInside = 0x1p-20;
 
 double dist(const Vec3d& a, const Vec3d& b) { return std::hypot(a[0] - b[0], a[1] - b[1], a[2] - b[2]); }
 Vec3d lerp(const Vec3d& a, const Vec3d& b, double s) {
@@ -46,21 +50,6 @@ mpq_class hull_area2(std::vector<Uv> p) {
   return abs(a);
 }
 
-// min over s in [2^-20, 1 - 2^-20] of a convex function (golden section); the argument
-// stays inside the edge, so the value is the time of a path through an interior point.
-double edge_minimum(const std::function<double(double)>& f) {
-  const double g = (std::sqrt(5.0) - 1.0) / 2.0, lo0 = 0x1p-20, hi0 = 1 - 0x1p-20;
-  double lo = lo0, hi = hi0, m1 = hi - g * (hi - lo), m2 = lo + g * (hi - lo), f1 = f(m1), f2 = f(m2);
-  for (int i = 0; i < 80 && hi - lo > 1e-12; ++i) {
-    if (f1 <= f2) {
-      hi = m2, m2 = m1, f2 = f1, m1 = hi - g * (hi - lo), f1 = f(m1);
-    } else {
-      lo = m1, m1 = m2, f1 = f2, m2 = lo + g * (hi - lo), f2 = f(m2);
-    }
-  }
-  return std::min({f(lo0), f(hi0), f1, f2});
-}
-
 double kth(std::vector<double> v, std::size_t k) {
   if (k == 0 || v.size() < k) return kInf;
   std::nth_element(v.begin(), v.begin() + static_cast<std::ptrdiff_t>(k - 1), v.end());
@@ -84,13 +73,6 @@ void ChordUpperBound::classify_sheets() {
   const std::size_t ns = mc_.sheets().size();
   convex_.assign(ns, 0);
   line_.assign(ns, {});
-  auto sigma_vertex = [&](std::uint32_t v) {
-    for (std::uint32_t e : mc_.vertex_edges(v))
-      if (mc_.edge(e).stratum == EdgeStratum::Singular || mc_.edge(e).stratum == EdgeStratum::Dangling) return true;
-    for (std::uint32_t t : mc_.vertex_triangles(v))
-      if (mc_.triangle(t).sheet != mc_.triangle(mc_.vertex_triangles(v).front()).sheet) return true;
-    return false;
-  };
   for (std::uint32_t s = 0; s < ns; ++s) {
     const Sheet& sh = mc_.sheets()[s];
     if (!sh.planar || sh.triangles.empty()) continue;
@@ -114,7 +96,7 @@ void ChordUpperBound::classify_sheets() {
       for (int i = 0; i < 3; ++i) {
         c[i] = frame.local(mc_.vertex(v[i]).exact);
         uv.push_back(c[i]);
-        if (!on_boundary[v[i]] && sigma_vertex(v[i])) ok = false;  // a pinch inside S
+        if (!on_boundary[v[i]] && on_sigma_vertex(mc_, v[i])) ok = false;  // a pinch inside S
       }
       area += abs(cross2(c[0], c[1], c[2]));
     }
@@ -141,21 +123,14 @@ void ChordUpperBound::place_samples() {
   vertex_sample_.assign(nv, kNoIndex);
   edge_samples_.assign(mc_.edge_count(), {});
   sheet_samples_.assign(mc_.sheets().size(), {});
-  auto sigma_edge = [&](std::uint32_t e) {
-    return mc_.edge(e).stratum == EdgeStratum::Singular || mc_.edge(e).stratum == EdgeStratum::Dangling;
-  };
   for (std::uint32_t v = 0; v < nv; ++v) {
-    bool sigma = mc_.vertex_triangles(v).empty();
-    for (std::uint32_t e : mc_.vertex_edges(v)) sigma = sigma || sigma_edge(e);
-    for (std::uint32_t t : mc_.vertex_triangles(v))
-      sigma = sigma || mc_.triangle(t).sheet != mc_.triangle(mc_.vertex_triangles(v).front()).sheet;
-    if (!sigma) continue;
+    if (!on_sigma_vertex(mc_, v)) continue;
     vertex_sample_[v] = static_cast<std::uint32_t>(samples_.size());
     samples_.push_back({mc_.vertex(v).approx, kNoIndex, v});
     floor_.push_back(mc_.is_border_point(v) ? mc_.ignition_at_vertex(v) : kInf);
   }
   for (std::uint32_t e = 0; e < mc_.edge_count(); ++e) {
-    if (!sigma_edge(e)) continue;
+    if (!on_sigma_edge(mc_, e)) continue;
     const ComplexEdge& ed = mc_.edge(e);
     const auto n = static_cast<std::uint32_t>(std::max(1.0, std::ceil(ed.length / spacing_)));
     for (std::uint32_t i = 1; i < n; ++i) {
@@ -168,7 +143,7 @@ void ChordUpperBound::place_samples() {
     const ComplexPoint& x = s.location;
     if (x.kind == ComplexPoint::Kind::Vertex && vertex_sample_[x.id] != kNoIndex)
       floor_[vertex_sample_[x.id]] = std::min(floor_[vertex_sample_[x.id]], s.t0.get_d());
-    if (x.kind == ComplexPoint::Kind::Edge && sigma_edge(x.id)) {  // a sample of its own
+    if (x.kind == ComplexPoint::Kind::Edge && on_sigma_edge(mc_, x.id)) {  // a sample of its own
       edge_samples_[x.id].push_back(static_cast<std::uint32_t>(samples_.size()));
       samples_.push_back({x.approx(), x.id, kNoIndex});
       floor_.push_back(s.t0.get_d());
@@ -224,12 +199,15 @@ double ChordUpperBound::ignition(std::uint32_t s, const Vec3d& p, const std::vec
     const Vec3d &a = mc_.vertex(ed.v[0]).approx, &b = mc_.vertex(ed.v[1]).approx;
     if (ed.rule == IgnitionRule::Linear) {
       const double ra = mc_.vertex(ed.v[0]).radius, rb = mc_.vertex(ed.v[1]).radius;
-      best = std::min(best, edge_minimum([&](double t) { return (1 - t) * ra + t * rb + dist(p, lerp(a, b, t)); }));
+      auto time = [&](double t) { return (1 - t) * ra + t * rb + dist(p, lerp(a, b, t)); };
+      best = std::min(best, golden_section_minimum(time, kInside, 1 - kInside));
     } else {
-      best = std::min(best, edge_minimum([&](double t) {
-                        const Vec3d y = lerp(a, b, t);
-                        return dist(y, ed.rule_point_approx) + dist(p, y);
-                      }));
+      best = std::min(best, golden_section_minimum(
+                                [&](double t) {
+                                  const Vec3d y = lerp(a, b, t);
+                                  return dist(y, ed.rule_point_approx) + dist(p, y);
+                                },
+                                kInside, 1 - kInside));
     }
   }
   for (const PointSource& src : sources_) {

@@ -6,6 +6,8 @@
 #include <functional>
 #include <limits>
 
+#include "burn3/bracket_support.h"
+
 namespace grassfire {
 namespace {
 
@@ -13,22 +15,6 @@ constexpr double kInf = std::numeric_limits<double>::infinity();
 
 ExactPoint3 along(const mpq_class& x, const ExactPoint3& dir, const mpq_class& s) {
   return {x + s * dir.x, s * dir.y, s * dir.z};
-}
-
-// min over x' in [0, 1] of f(x') for a convex f (golden-section search).
-double convex_minimum(const std::function<double(double)>& f) {
-  const double g = (std::sqrt(5.0) - 1.0) / 2.0;
-  double lo = 0.0, hi = 1.0;
-  double m1 = hi - g * (hi - lo), m2 = lo + g * (hi - lo);
-  double f1 = f(m1), f2 = f(m2);
-  for (int i = 0; i < 200 && hi - lo > 1e-15; ++i) {
-    if (f1 <= f2) {
-      hi = m2, m2 = m1, f2 = f1, m1 = hi - g * (hi - lo), f1 = f(m1);
-    } else {
-      lo = m1, m1 = m2, f1 = f2, m2 = lo + g * (hi - lo), f2 = f(m2);
-    }
-  }
-  return std::min({f(lo), f(hi), f1, f2});
 }
 
 // The spine's geometry in the plane z = 0: N(x) = (x, y(x)), y = 0 for x <= 1/2 and
@@ -84,14 +70,14 @@ std::vector<std::function<double(double)>> spine_pieces(const JunctionBook& book
 // min over x in [0, 1] of f, convex on [0, 1/2] and [1/2, 1]; `scan` adds a scan of 4001
 // points first (for page A of a bent book, where f need not be convex).
 double piecewise_minimum(const std::function<double(double)>& f, bool scan) {
-  double best = std::min(convex_minimum([&](double t) { return f(0.5 * t); }),
-                         convex_minimum([&](double t) { return f(0.5 + 0.5 * t); }));
+  double best = std::min(golden_section_minimum(f, 0.0, 0.5),
+                         golden_section_minimum(f, 0.5, 1.0));
   if (!scan) return best;
   double arg = 0;
   for (int i = 0; i <= 4000; ++i)
     if (f(i / 4000.0) < best) best = f(i / 4000.0), arg = i / 4000.0;
   const double lo = std::max(0.0, arg - 1.0 / 4000), hi = std::min(1.0, arg + 1.0 / 4000);
-  return std::min(best, convex_minimum([&](double t) { return f(lo + (hi - lo) * t); }));
+  return std::min(best, golden_section_minimum(f, lo, hi));
 }
 
 }  // namespace
