@@ -44,7 +44,7 @@ struct Widths {
 struct BracketRun {
   Tally t;
   Widths coarse, fine;
-  double seconds_lower = 0, spacing = 0;
+  double seconds_lower = 0, seconds_upper = 0, spacing = 0;
   std::uint64_t uncertified = 0;
   std::size_t refused = 0;
 };
@@ -110,6 +110,7 @@ void run(const CheckContext& ctx, const MedialComplex& mc, double h, const std::
   for (int k = 0; k < 2; ++k) {
     const BtBracket bracket(mc, k == 0 ? h : h / 2, sources);
     r.seconds_lower += bracket.lower().seconds();
+    r.seconds_upper += bracket.seconds_upper();
     std::vector<Interval> b;
     for (const ComplexPoint& x : points) b.push_back(bracket.at(x));
     Tally t;
@@ -133,7 +134,8 @@ CheckRow row(const std::string& corpus, const BracketRun& r) {
                    "rounding of the bracket)",
                    r.t, "length",
                    "bracket width at h (up to " + g3(r.spacing) + "): " + widths(r.coarse) + "; at h/2: " +
-                       widths(r.fine) + "; lower bound " + g3(r.seconds_lower) + " s; " + std::to_string(r.refused) +
+                       widths(r.fine) + "; reference time: lower " + g3(r.seconds_lower) + " s, upper " +
+                       g3(r.seconds_upper) + " s; " + std::to_string(r.refused) +
                        " instances refused (more than " + std::to_string(kMaxSingularEdges) +
                        " singular edges); uncertified decisions " + std::to_string(r.uncertified));
 }

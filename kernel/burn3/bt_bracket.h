@@ -125,7 +125,8 @@ class BtBracket {
   // [lower, upper] at x; lower may exceed upper only by rounding (checked by callers).
   Interval at(const ComplexPoint& x) const;
   const BtLowerBound& lower() const { return lower_; }
-  double seconds_upper() const { return upper_.stats.seconds; }
+  // The construction times of the upper bounds: the discrete baseline, the chords.
+  double seconds_upper() const { return upper_.stats.seconds + chords_.seconds(); }
 
  private:
   const MedialComplex& mc_;

@@ -2,6 +2,7 @@
 #include "burn3/bt_bracket_upper.h"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <functional>
 #include <limits>
@@ -60,9 +61,11 @@ double kth(std::vector<double> v, std::size_t k) {
 
 ChordUpperBound::ChordUpperBound(const MedialComplex& mc, double spacing, const std::vector<PointSource>& sources)
     : mc_(mc), spacing_(spacing), sources_(sources) {
+  const auto start = std::chrono::steady_clock::now();
   classify_sheets();
   place_samples();
   solve();
+  seconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
 std::size_t ChordUpperBound::convex_sheets() const {

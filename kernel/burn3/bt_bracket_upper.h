@@ -41,6 +41,7 @@ class ChordUpperBound {
   // An upper bound of BT at x (+infinity where no convex sheet carries fire to x).
   double at(const ComplexPoint& x) const;
   std::size_t convex_sheets() const;
+  double seconds() const { return seconds_; }
 
  private:
   struct Sample {
@@ -75,6 +76,7 @@ class ChordUpperBound {
   std::vector<std::uint32_t> vertex_sample_;
   std::vector<double> value_;
   std::vector<double> floor_;
+  double seconds_ = 0;
 };
 
 }  // namespace grassfire
