@@ -220,7 +220,7 @@ double BtLowerBound::ignition_bound(std::uint32_t s, const Vec3d& a, const Vec3d
 
 void BtLowerBound::solve() {
   const std::size_t n = cells_.size();
-  const double r = o_.reach > 0 ? o_.reach : 8 * o_.spacing;
+  const double r = o_.reach > 0 ? o_.reach : 32 * o_.spacing;
   // side values n_t(c), initialised with the ignitions of each side's sheet
   std::vector<std::vector<double>> side(n);
   for (std::size_t c = 0; c < n; ++c)
