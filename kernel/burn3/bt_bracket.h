@@ -1,6 +1,6 @@
 // bt_bracket.h -- BT bracketed from both sides by computations that share nothing with the
-// exact engine (4.2.3, Definitions 9-10; DESIGN.md 5): a lower bound derived below and the
-// discrete baseline as the upper bound.
+// exact engine (4.2.3, Definitions 9-10; DESIGN.md 5): a lower bound derived below and two
+// upper bounds.
 //
 // Upper bound: the smaller of two, each the time of a burning process Definition 9 allows,
 // so >= BT (up to double rounding), and each converging as h shrinks: the discrete baseline
@@ -57,7 +57,7 @@
 // keeps a width that does not vanish (reported, not hidden).
 // Values are doubles: every number is within double rounding (relative 1e-15 per step) of
 // the quantity named above; golden-section minima along border edges with non-constant f
-// stop at 1e-12 in the parameter. Callers allow 1e-9.
+// stop at 1e-15 in the parameter (bracket_support.h). Callers allow 1e-9.
 // Contract: a validated MedialComplex that outlives this object; sources located on it;
 // spacing h > 0 and at most max_cells cells (std::invalid_argument otherwise).
 // Complexity: O(C^2 k + C B) for C cells, k sides per cell, B border edges per sheet;
