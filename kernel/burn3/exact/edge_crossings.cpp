@@ -291,10 +291,10 @@ EdgeCrossings isolate_crossings(const Unfolding& u, const WindowStore& s, Certif
     }
     const int sm = f.sign(mid);
     if (sm == 0) found.push_back({mid, mid});  // undecided: the halves' tests count it if it matters
-    // Signs no stage settles at kEqualPoints split points (ties no stage proves: the fronts
-    // are one expression, unproved): stop, one undecided decision, rather than subdivide
-    // towards every point of the line.
-    if (sm == kUndecided && ++near_ties >= kEqualPoints) {
+    // Signs no stage settles at three points (split points or the range's ends: ties no
+    // stage proves, the fronts being one expression unproved): stop, one undecided
+    // decision, rather than subdivide towards every point of the line.
+    if (sm == kUndecided && ++near_ties + (f.sign(lo) == kUndecided) + (f.sign(hi) == kUndecided) >= 3) {
       ++out.undecided;
       break;
     }
