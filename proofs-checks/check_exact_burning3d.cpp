@@ -145,7 +145,7 @@ bool check_sheet(const CheckContext& ctx, std::uint32_t seed, ExactTallies& t) {
   for (std::uint32_t v = 0; v < mc.vertex_count(); v += vertex_stride) points.push_back(locator.locate(mc.vertex(v).exact));
   for (std::uint32_t f = 0; f < mc.triangle_count(); f += triangle_stride)
     points.push_back(point_in_triangle(mc, f, interior_weights(rng)));
-  ExactBurning eb(mc);
+  ExactBurning eb(mc, engine_options(ctx));
   eb.add_border_ignition();
   eb.run();
   t.uncertified += eb.certification().uncertified;
@@ -179,7 +179,7 @@ void check_mesh(const CheckContext& ctx, const std::string& name, std::uint32_t 
   std::mt19937 rng(seed);
   const auto faces = static_cast<std::uint32_t>(mesh.triangles.size());
   std::uniform_int_distribution<std::uint32_t> face(0, faces - 1);
-  ExactBurning eb(mc);
+  ExactBurning eb(mc, engine_options(ctx));
   SmspGeodesics reference(mesh);
   // Sources inside a face, inside an edge and at a vertex, each with its t0 in [0, 3/4].
   const int k = std::uniform_int_distribution<int>(1, 7)(rng);
@@ -271,6 +271,7 @@ MutantList exact_mutants() {
   MutantList all = burning_mutants(), output;
   for (const MutantInfo& m : all)
     if (m.name == "bt-bump" || m.name == "bt-dip" || m.name == "bt-infinite") output.push_back(m);
+  for (const MutantInfo& m : engine_mutants()) output.push_back(m);
   return output;
 }
 

@@ -22,6 +22,7 @@
 #include <vector>
 
 #include "burn3/discrete_burning.h"
+#include "burn3/exact/window_propagation.h"
 #include "check_registry.h"
 #include "number/interval.h"
 
@@ -33,6 +34,13 @@ MutantList burning_mutants();
 std::unique_ptr<BurnRuleOverride> engine_rule(const CheckContext& ctx, double spacing);
 // The rule of the discrete burning sets (Definition 9): replaced by rule-not-monotone only.
 std::unique_ptr<BurnRuleOverride> definition_rule(const CheckContext& ctx);
+
+// Engine mutants of the exact engine (burn3/exact/engine_mutant.h), named engine-...: they
+// break the engine's own decisions (the junction rule's arrival rank, kink emission, the
+// rotation into the other sheets, crossings by samples, the bending test in doubles), not
+// its output. engine_options gives the options of the context's mutant (none otherwise).
+MutantList engine_mutants();
+ExactBurningOptions engine_options(const CheckContext& ctx);
 
 // Applies an output mutant to bt (one value per graph point). in_sheet(i): point i lies in
 // M2; closed(i): point i lies in the maximal closed subcomplex.
