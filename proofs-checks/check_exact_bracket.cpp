@@ -13,7 +13,8 @@
 // The note gives the bracket widths (upper - lower: mean and largest over the probes) at two
 // spacings, h and h / 2, so a reader sees the bracket shrink, and the lower bound's time.
 // Mutants: the output mutants of mutants3d.h (bt-bump, bt-dip, bt-infinite) on the engine's
-// enclosures before the row reads them.
+// enclosures before the row reads them, and the engine mutants (engine-..., the engine's
+// own decisions broken through ExactBurningOptions::mutant).
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -97,7 +98,7 @@ void judge(const std::vector<Interval>& engine, const std::vector<Interval>& bra
 // One complex: the engine (border ignition and `sources`) against the bracket at h and h / 2.
 void run(const CheckContext& ctx, const MedialComplex& mc, double h, const std::vector<PointSource>& sources,
          const std::vector<ComplexPoint>& points, BracketRun& r) {
-  ExactBurning eb(mc);
+  ExactBurning eb(mc, engine_options(ctx));
   for (const PointSource& s : sources) eb.add_point_source(s.location, s.t0);
   eb.add_border_ignition();
   eb.run();
@@ -179,6 +180,7 @@ MutantList bracket_mutants() {
   MutantList output;
   for (const MutantInfo& m : burning_mutants())
     if (m.name == "bt-bump" || m.name == "bt-dip" || m.name == "bt-infinite") output.push_back(m);
+  for (const MutantInfo& m : engine_mutants()) output.push_back(m);
   return output;
 }
 
