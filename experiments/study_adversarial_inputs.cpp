@@ -1,5 +1,5 @@
 // study_adversarial_inputs.cpp -- adversarial geometry through the pipelines the program
-// runs, counting internal messages (DESIGN.md 3: valid input never gets an internal
+// runs, counting internal messages (docs/design.md 3: valid input never gets an internal
 // invariant message; bad input gets a clear one).
 //
 // Usage: study_adversarial_inputs [--inputs N] [--seconds S] [--kind K]... [--out FILE] [--append]

@@ -2,7 +2,7 @@
 // (bt_bracket.h, bt_bracket_upper.h, junction_books.h): the singular set Sigma, and the
 // minimum of a convex function of one variable.
 //  - Sigma: the singular edges and dangling segments, and the vertices on them, on
-//    triangles of two or more sheets, or on no triangle (4.2.2; DESIGN.md 5).
+//    triangles of two or more sheets, or on no triangle (4.2.2; docs/design.md 5).
 //  - golden_section_minimum(f, lo, hi): min over [lo, hi] of a convex f, by golden-section
 //    search until the bracket is below 1e-15 (at most 200 steps), the ends included; the
 //    value is f at a point of [lo, hi] (so an upper bound of the minimum, within the

@@ -1,5 +1,5 @@
 // bt_bracket.h -- BT bracketed from both sides by computations that share nothing with the
-// exact engine (4.2.3, Definitions 9-10; DESIGN.md 5): a lower bound derived below and two
+// exact engine (4.2.3, Definitions 9-10; docs/design.md 5): a lower bound derived below and two
 // upper bounds.
 //
 // Upper bound: the smaller of two, each the time of a burning process Definition 9 allows,

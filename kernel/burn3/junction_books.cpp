@@ -59,7 +59,7 @@ std::vector<std::function<double(double)>> spine_pieces(const JunctionBook& book
   p.push_back([=](double x) { return W + sp.y(x); });  // C's plane wave (W when straight)
   for (const auto& s : in_a) p.push_back([=](double x) { return std::max(arrival_a(s, x), H); });
   for (const auto& s : on_n) p.push_back([=](double x) { return s.t0.get_d() + std::abs(sp.u(x) - sp.u(s.x.get_d())); });
-  // The ends of N: star links with f = infinity burn at their first arrival (DESIGN.md 5),
+  // The ends of N: star links with f = infinity burn at their first arrival (docs/design.md 5),
   // and fire runs along N from them.
   const double e0 = std::min({H, a(0.0), o(0.0)}), e1 = std::min({H, a(1.0), o(1.0)}), end = sp.u(1.0);
   p.push_back([=](double x) { return e0 + sp.u(x); });

@@ -1,5 +1,5 @@
 // junction_books.h -- three-page books whose burning time is known in closed form, built to
-// break a junction rule that burns too early (Definition 9, 4.2.1; DESIGN.md 5).
+// break a junction rule that burns too early (Definition 9, 4.2.1; docs/design.md 5).
 //
 // The complex. One singular edge N = [0, 1] x {0} x {0} and three rectangular pages on it,
 // each two triangles: A = {x in [0, 1], 0 <= s <= 1} along the direction a = (0, 1, 0) (the

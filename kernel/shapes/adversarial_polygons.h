@@ -1,5 +1,5 @@
 // adversarial_polygons.h -- seeded polygons that are hard for segment Voronoi builders and
-// for exact predicates (2.1.1; DESIGN.md 4): the inputs of Boost.Polygon's known wrong
+// for exact predicates (2.1.1; docs/design.md 4): the inputs of Boost.Polygon's known wrong
 // outputs and their variants, near-collinear and near-cocircular vertices, tiny edges at
 // coordinates near the int32 limit, spikes.
 //

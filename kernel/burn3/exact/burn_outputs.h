@@ -1,5 +1,5 @@
 // burn_outputs.h -- what the exact burning time is turned into: per-vertex values, a
-// refined sampling, iso-lines, the front at a time t, and the event log (issue 8 item 3).
+// refined sampling, iso-lines, the front at a time t, and the event log (docs/exact-engine.md).
 //
 // Computes, from an ExactBurning after run():
 //  - vertex_values: BT and ET = BT - R per vertex, each as a midpoint with a certified

@@ -1,7 +1,7 @@
 // edge_crossings.h -- where two arrivals at a singular edge cross: every crossing of two
 // windows' times along the edge isolated in a certified bracket, so that between the
 // brackets their order is proved and never changes (the junction rule's breakpoints,
-// 4.2.1, Fig. 4.4; DESIGN.md 3, 5a).
+// 4.2.1, Fig. 4.4; docs/design.md 3, 5a).
 //
 // Computes, for windows wa, wb of triangles on the edge E = v[0] + l (v[1] - v[0]) and a
 // parameter range [lo, hi], the brackets [l1, l2] each holding exactly one sign change of

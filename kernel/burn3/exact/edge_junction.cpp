@@ -1,5 +1,5 @@
 // edge_junction.cpp -- the junction rule of Definition 9 on singular edges (4.2.1, 4.2.3;
-// DESIGN.md 5; part of WindowPropagation, window_propagation.h).
+// docs/design.md 5; part of WindowPropagation, window_propagation.h).
 //
 // A singular edge E with k sheet sides (triangles) keeps every arrival of fire through
 // each side: a window of that side's triangle whose wedge meets E (a record). With a_i(x)

@@ -192,7 +192,7 @@ Interval ExactBurning::burn_time(const ComplexPoint& x) {
 
 std::optional<std::string> exact_engine_unsupported(const MedialComplex&) {
   // Singular edges follow the junction rule (edge_junction.cpp) and singular points the
-  // link rule (vertex_burning.cpp) since issue 9: every validated complex is burned. What
+  // link rule (vertex_burning.cpp) since the junction rule (docs/exact-engine.md): every validated complex is burned. What
   // stays unsupported is per source, not per complex: a point source inside a segment.
   return std::nullopt;
 }

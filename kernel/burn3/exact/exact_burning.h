@@ -1,5 +1,5 @@
 // exact_burning.h -- the burning time BT on a medial complex by exact window propagation
-// (4.2.3, Definitions 9-10; 5.2 "sweep-event engine"; DESIGN.md 5, 5a; issue 8).
+// (4.2.3, Definitions 9-10; 5.2 "sweep-event engine"; docs/design.md 5, 5a; docs/exact-engine.md).
 //
 // Computes BT as an exact piecewise function: per triangle, the windows that can realise
 // it (each a pseudo-source image, an offset and a wedge; windows.h), built by
@@ -38,7 +38,7 @@ struct QueryCounts {
   std::uint64_t widened = 0;     // memberships no stage decided (enclosure widened)
 };
 
-// What the engine cannot burn as Definition 9 asks, or none. Since issue 9 nothing
+// What the engine cannot burn as Definition 9 asks, or none. Since docs/exact-engine.md nothing
 // structural: every validated complex (singular edges and points included) is burned; kept
 // for callers that ask (sources inside segments are refused by add_point_source instead).
 std::optional<std::string> exact_engine_unsupported(const MedialComplex& mc);

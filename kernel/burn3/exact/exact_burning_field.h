@@ -1,5 +1,5 @@
 // exact_burning_field.h -- the exact window-propagation engine as a BurningField
-// (burning_field.h, "How an exact engine plugs in"; 4.2.3, 5.1.2; issue 9).
+// (burning_field.h, "How an exact engine plugs in"; 4.2.3, 5.1.2; docs/exact-engine.md).
 //
 // Computes, from a finished ExactBurning and only its public API (windows, pseudo-sources,
 // time expressions, certified queries):

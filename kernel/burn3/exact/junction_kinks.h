@@ -1,6 +1,6 @@
 // junction_kinks.h -- where along a singular edge two arrivals cross, and where a window's
 // wedge ray meets the edge: the breakpoints of the junction rule (4.2.1, Fig. 4.4;
-// DESIGN.md 5a), located exactly where possible.
+// docs/design.md 5a), located exactly where possible.
 //
 // Computes, for an edge E = v[0] v[1] and windows of triangles on E (parameter lambda along
 // E, in each window's own frame, which contains E):

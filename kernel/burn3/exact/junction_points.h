@@ -1,6 +1,5 @@
 // junction_points.h -- the kinks, merges and quench points of the junction rule, located
-// and classified on every singular edge (4.2.1, Fig. 4.4; DESIGN.md 5 "Fronts"; issue 9
-// item 2).
+// and classified on every singular edge (4.2.1, Fig. 4.4; docs/design.md 5 "Fronts"; docs/exact-engine.md).
 //
 // Computes, from an ExactBurning after run(), the switch points of each singular edge E:
 // the interior points p of E where the record realising the (k-1)-th arrival A changes

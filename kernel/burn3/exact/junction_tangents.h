@@ -1,7 +1,7 @@
 // junction_tangents.h -- a structural proof that a switch point of the junction rule is a
 // tangent handover: the two fronts realising the (k-1)-th arrival A on either side agree to
 // first order there, so A is differentiable at the switch (no corner: neither a kink nor a
-// quench nor a merge; 4.2.1, Definition 9; issue 9, junction_points.h).
+// quench nor a merge; 4.2.1, Definition 9; docs/exact-engine.md, junction_points.h).
 //
 // Computes, for two windows a and b of one triangle t (the records realising A just below
 // and just above a switch point p of a singular edge, so a(p) = b(p) = A(p) by continuity),

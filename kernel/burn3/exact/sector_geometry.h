@@ -1,5 +1,5 @@
 // sector_geometry.h -- which vertices can bend a shortest burning path (pseudo-source
-// vertices), per sector of the vertex's link (4.2.2, DESIGN.md 5).
+// vertices), per sector of the vertex's link (4.2.2, docs/design.md 5).
 //
 // Computes, for every sector (a fan of triangles around its apex joined across manifold
 // edges), whether fire reaching the apex through the sector must restart there as a point

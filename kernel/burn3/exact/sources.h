@@ -1,5 +1,5 @@
 // sources.h -- where fire starts: the exact data of the border ignition rules and the
-// position of every pseudo-source in a triangle's frame (ch. 4, DESIGN.md 5 and 5a).
+// position of every pseudo-source in a triangle's frame (ch. 4, docs/design.md 5 and 5a).
 //
 // Computes:
 //  - the ignition f(v) at a border vertex as an exact sum of square roots: the minimum over

@@ -10,13 +10,13 @@
 //  - the images of t's corners in its frame, three ways: double discs (certified radius,
 //    from Interval arithmetic on the exact data), Arb balls at the current BallPrecision,
 //    and exact rational local coordinates (u, v) with the frame's Gram diagonal (g1, g2)
-//    (DESIGN.md 5a: inside one planar frame everything stays rational);
+//    (docs/design.md 5a: inside one planar frame everything stays rational);
 //  - the unfolding across an edge from triangle t to triangle t2 (both on the edge): the
 //    rigid motion of the plane of t's frame onto t2's frame that fixes the edge pointwise
 //    and puts t on the side of the edge opposite t2 (a rotation, or a reflection where the
 //    two frames are oriented differently). Identity when t and t2 share a frame.
 //    In exact local coordinates it is rational up to one square root, sqrt(h_t^2 / h_t2^2)
-//    (the ratio of the triangles' heights over the edge; DESIGN.md 5a), rational itself
+//    (the ratio of the triangles' heights over the edge; docs/design.md 5a), rational itself
 //    when the heights are equal (a cube's faces): exact_crossing() gives it, for the exact
 //    stage of the certification.
 // Why orthonormalised doubles: rigid motions keep discs discs (number/disc_point.h).
@@ -24,7 +24,7 @@
 // Complexity: construction O(T) interval operations (every manifold crossing whose
 // frames differ is computed once); Ball and exact queries O(1) GMP/Arb operations
 // (exact local coordinates are cached per frame and vertex).
-// Section: DESIGN.md 5 and 5a.
+// Section: docs/design.md 5 and 5a.
 #pragma once
 
 #include <gmpxx.h>
@@ -95,7 +95,7 @@ class Unfolding {
 
   // The crossing in exact local coordinates: X' = P(X) + k beta(X) w with P affine and
   // beta an affine functional, both rational, w rational and k = -sqrt(kk), kk rational
-  // (the crossing's one generator, DESIGN.md 5a); cached.
+  // (the crossing's one generator, docs/design.md 5a); cached.
   struct ExactCrossing {
     mpq_class p00, p01, p10, p11, p0, p1;  // P(X) = [p00 p01; p10 p11] X + (p0, p1)
     mpq_class b0, b1, bc;                  // beta(X) = b0 x + b1 y + bc

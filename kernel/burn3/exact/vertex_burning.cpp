@@ -2,7 +2,7 @@
 // (part of WindowPropagation; window_propagation.h).
 //
 // A vertex whose link has segment directions (a 1-dimensional part of the complex meets it)
-// burns by the operational form of Definition 9 (DESIGN.md 5, MedialComplex::link_burns):
+// burns by the operational form of Definition 9 (docs/design.md 5, MedialComplex::link_burns):
 // at the first time T at which its link, with every element arrived by T removed, has no
 // cycle and at most one segment direction (the 2D rule of 3.3.1 along segments), or at its
 // ignition f(v). Arrivals come from windows reaching it through a sector and from fire

@@ -1,4 +1,4 @@
-// window_certify.h -- certified decisions of the exact burning engine (DESIGN.md 3, 5a).
+// window_certify.h -- certified decisions of the exact burning engine (docs/design.md 3, 5a).
 //
 // Computes the sign of the three quantities the window propagation decides with:
 //  - side: where a point lies relative to a wedge ray of a window (the visibility

@@ -1,5 +1,5 @@
 // window_propagation.h -- the event loop of the exact burning engine: fronts (windows)
-// propagated across the sheets of a medial complex (4.2.3, 5.2; DESIGN.md 5).
+// propagated across the sheets of a medial complex (4.2.3, 5.2; docs/design.md 5).
 //
 // Computes: every window that can realise the burning time BT inside the sheets, from the
 // caller's point sources and the border ignition rules, with Definition 9 at singular
@@ -7,7 +7,7 @@
 // fronts that only graze the edge; the edge burns at the (k-1)-th arrival; its pieces
 // continue into the other sides as child windows across the edge, kinks and stretch ends
 // as EdgePoint point sources) and at vertices with segments or singular poles (the link
-// rule, vertex_burning.cpp); ExactBurningOptions::singular_walls keeps issue 8's walls.
+// rule, vertex_burning.cpp); ExactBurningOptions::singular_walls keeps the walls of docs/exact-engine.md ("--singular-walls").
 // The method is Chen and Han's window propagation with the improvements of Xin and Wang
 // 2009 (ICH, as in CGAL's Surface_mesh_shortest_path): a priority queue ordered by a
 // certified lower bound of each window's times (so that, as in Dijkstra's algorithm, every
@@ -52,7 +52,7 @@ namespace grassfire {
 struct ExactBurningOptions {
   bool vertex_filter = true;          // the vertex filter (tests switch it off to compare)
   bool one_angle_one_split = true;
-  // Singular edges as walls (issue 8 part 1; `burn3d --singular-walls`): fronts stop there and
+  // Singular edges as walls (docs/exact-engine.md; `burn3d --singular-walls`): fronts stop there and
   // no junction rule runs. Not Definition 9: an upper bound of BT (fire from the curves is left out).
   bool singular_walls = false;
   long max_bits = 512;                // Arb precision cap of the certified stages

@@ -87,7 +87,7 @@ struct PseudoSource {
   Interval sigma;                   // the offset's enclosure given to its windows
 };
 
-// A pseudo-source with rational data (DESIGN.md 5a): a point (a vertex, or a rational 3D
+// A pseudo-source with rational data (docs/design.md 5a): a point (a vertex, or a rational 3D
 // point) with an offset that is a sum of square roots, or a plane wave of slope 0 (time
 // sigma + distance to the line of a border edge, on its triangle's side). A window whose
 // chain crosses only rational unfoldings (Unfolding::rational_crossing; none at all inside
@@ -158,7 +158,7 @@ struct SweepEvent {
   std::uint32_t time = 0;
 };
 
-// Per-stage counts of the certified decisions (DESIGN.md 3).
+// Per-stage counts of the certified decisions (docs/design.md 3).
 struct CertificationCounts {
   std::uint64_t filter = 0;         // decided by the double (disc / interval) filter
   std::uint64_t exact = 0;          // decided (nonzero) by exact rational / square-root arithmetic

@@ -1,5 +1,5 @@
 // segment_voronoi_check.h -- is an interior segment Voronoi topology (segment_voronoi.h)
-// the diagram of a polygon, as far as its combinatorics tell (2.1.1; DESIGN.md 4)?
+// the diagram of a polygon, as far as its combinatorics tell (2.1.1; docs/design.md 4)?
 //
 // Computes the first defect of `topo` against what every interior segment Voronoi diagram of
 // a polygon with h holes has (the medial axis is a deformation retract of the polygon, and
