@@ -24,6 +24,7 @@ void declare_field_options(Options& opt) {
                               "(an upper bound of BT, not Definition 9)")
       .option("max-points", "N", "refuse to place more than N graph points", "50000000")
       .flag("mesh-is-complex", "use a mesh itself as the 2-complex (R = 0) instead of its medial axis");
+  add_repair_options(opt);
 }
 
 namespace {
@@ -50,7 +51,7 @@ FieldInput load_field(const Options& opt, const std::string& input, const std::s
     throw std::runtime_error("unknown method '" + method + "' (discrete or exact)");
   if (opt.has("singular-walls") && method != "exact") throw std::runtime_error("--singular-walls needs --method exact");
   FieldInput in;
-  in.complex = std::make_unique<MedialComplex>(load_complex(input, opt.has("mesh-is-complex"), command));
+  in.complex = std::make_unique<MedialComplex>(load_complex(input, opt.has("mesh-is-complex"), command, repair_options(opt)));
   in.complex->validate();
   if (in.complex->vertex_count() == 0) throw std::runtime_error(input + ": the complex is empty");
   DiscreteBurningOptions o;

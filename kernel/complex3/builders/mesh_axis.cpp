@@ -8,6 +8,7 @@
 #include "complex3/builders/axis_pruning.h"
 #include "complex3/builders/inner_voronoi.h"
 #include "complex3/builders/mesh_checks.h"
+#include "complex3/builders/mesh_repair.h"
 #include "complex3/builders/mesh_samples.h"
 #include "complex3/exact_predicates3.h"
 #include "io/cpu_clock.h"
@@ -417,7 +418,7 @@ struct AcceptedAxis {
 MeshAxis mesh_medial_axis(const TriangleMesh3& mesh, const MeshAxisOptions& options) {
   const double start = cpu_seconds();
   if (!(options.samples_per_edge > 0)) throw std::invalid_argument(mesh.source + ": samples per edge must be positive");
-  require_closed_manifold(mesh);
+  require_solid(mesh);  // with the defects and the --repair hint when it refuses
   MeshAxis out;
   out.solid = solid_topology(mesh);
   const SolidLocator solid(mesh);
