@@ -11,7 +11,7 @@
 //   overlap: a copy translated by 1/10 of the bounding box diagonal along x added (two
 //            shells crossing each other; wrapped into one).
 // Each row: the census of defects, the method, alpha and offset (the defaults relative to
-// the diagonal: alpha = diagonal / R, R = 100, offset = diagonal / 3000), the repaired
+// the diagonal: alpha = diagonal / R, R = 50, offset = diagonal / 300), the repaired
 // mesh's size and shells, the CPU seconds of the repair (census, steps, exact check of
 // the result) and of the two bounded-error Hausdorff distances, the distances, and the
 // solid's Betti numbers; with --axis also the axis (mesh_axis.h, default options) of the
@@ -107,7 +107,7 @@ void study(const std::string& name, const std::string& defect, const TriangleMes
 
 int run(int argc, char** argv) {
   bool axis = false;
-  double alpha_ratio = 100;
+  double alpha_ratio = 50;
   std::vector<std::string> meshes;
   for (int i = 1; i < argc; ++i) {
     if (!std::strcmp(argv[i], "--axis")) axis = true;

@@ -173,9 +173,9 @@ void add_repair_options(Options& opt) {
   opt.flag("repair", "a mesh that does not bound a solid (self-intersecting, non-manifold, open, overlapping shells)\n"
                      "is repaired first: duplicates welded, or holes filled, or else an alpha wrap (CGAL Alpha_wrap_3);\n"
                      "the report gives the defects, the method and the Hausdorff distance to the input")
-      .option("repair-alpha", "A", "the alpha wrap's alpha, in the mesh's units (default: 1/100 of the bounding box "
+      .option("repair-alpha", "A", "the alpha wrap's alpha, in the mesh's units (default: 1/50 of the bounding box "
                                    "diagonal; smaller follows concavities closer, with more triangles)")
-      .option("repair-offset", "D", "the alpha wrap's offset (default: 1/3000 of the bounding box diagonal)");
+      .option("repair-offset", "D", "the alpha wrap's offset (default: 1/300 of the bounding box diagonal)");
 }
 
 MeshRepairOptions repair_options(const Options& opt) {

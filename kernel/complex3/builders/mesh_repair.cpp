@@ -10,6 +10,7 @@
 
 #include "complex3/builders/mesh_checks.h"
 #include "complex3/builders/mesh_embedding.h"
+#include "complex3/builders/mesh_solid.h"
 #include "io/complex_text.h"
 #include "io/cpu_clock.h"
 #include "io/mesh_weld.h"
@@ -113,6 +114,39 @@ TriangleMesh3 welded(const TriangleMesh3& mesh) {
   return w;
 }
 
+// The outer shells of a closed mesh (depth 0, mesh_solid.h) with their vertices renumbered;
+// `dropped` counts the others. The alpha wrap is the boundary of the region flooded from
+// infinity, which has no cavity; CGAL 5.5's manifold fix (relabelling cells around
+// non-manifold vertices) can leave a tiny enclosed shell (4 triangles on joint.off with a
+// shifted copy), which this removes: filling it only adds volume, so the wrap still
+// contains the input.
+TriangleMesh3 outer_shells(const TriangleMesh3& mesh, std::size_t& dropped) {
+  const SolidTopology solid = solid_topology(mesh);
+  TriangleMesh3 out;
+  out.source = mesh.source;
+  std::vector<std::uint32_t> index(mesh.vertices.size(), static_cast<std::uint32_t>(-1));
+  dropped = 0;
+  for (const MeshShell& shell : solid.shells) {
+    if (shell.depth != 0) {
+      ++dropped;
+      continue;
+    }
+    for (std::uint32_t t : shell.triangles) {
+      std::array<std::uint32_t, 3> tri;
+      for (int k = 0; k < 3; ++k) {
+        std::uint32_t& v = index[mesh.triangles[t][k]];
+        if (v == static_cast<std::uint32_t>(-1)) {
+          v = static_cast<std::uint32_t>(out.vertices.size());
+          out.vertices.push_back(mesh.vertices[mesh.triangles[t][k]]);
+        }
+        tri[k] = v;
+      }
+      out.triangles.push_back(tri);
+    }
+  }
+  return out;
+}
+
 }  // namespace
 
 MeshDefects mesh_defects(const TriangleMesh3& mesh) {
@@ -174,11 +208,12 @@ MeshRepair repair_mesh(const TriangleMesh3& mesh, const MeshRepairOptions& optio
       r.method = "fill", r.mesh = std::move(filled);
       r.added_triangles = r.mesh.triangles.size() - w.triangles.size();
     } else {
-      r.alpha = options.alpha > 0 ? options.alpha : r.diagonal / 100;
-      r.offset = options.offset > 0 ? options.offset : r.diagonal / 3000;
+      r.alpha = options.alpha > 0 ? options.alpha : r.diagonal / 50;
+      r.offset = options.offset > 0 ? options.offset : r.diagonal / 300;
       r.method = "alpha_wrap", r.mesh = alpha_wrap(w, r.alpha, r.offset);
       if (const std::string why = closed_manifold_refusal(r.mesh); !why.empty())
         throw std::invalid_argument(mesh.source + ": the alpha wrap is not a closed embedded manifold (" + why + ")");
+      r.mesh = outer_shells(r.mesh, r.dropped_cavities);
     }
   }
   MeshDefects repaired;
@@ -216,6 +251,7 @@ nlohmann::json mesh_repair_json(const MeshRepair& r) {
           {"offset", r.offset},
           {"filled_holes", r.filled_holes},
           {"added_triangles", r.added_triangles},
+          {"dropped_cavities", r.dropped_cavities},
           {"vertices", r.mesh.vertices.size()},
           {"triangles", r.mesh.triangles.size()},
           {"shells", r.repaired_shells},
@@ -232,7 +268,9 @@ nlohmann::json mesh_repair_json(const MeshRepair& r) {
 std::string describe_repair(const MeshRepair& r) {
   if (r.method == "none") return "nothing to repair (the mesh bounds a solid)";
   std::string s = "repaired by " + r.method;
-  if (r.method == "alpha_wrap") s += " (alpha " + shortest_double(r.alpha) + ", offset " + shortest_double(r.offset) + ")";
+  if (r.method == "alpha_wrap")
+    s += " (alpha " + shortest_double(r.alpha) + ", offset " + shortest_double(r.offset) +
+         (r.dropped_cavities ? ", " + count_text(r.dropped_cavities, "spurious cavity", "spurious cavities") + " filled" : "") + ")";
   if (r.method == "fill") s += " (" + count_text(r.filled_holes, "hole", "holes") + ", " + count_text(r.added_triangles, "triangle", "triangles") + " added)";
   return s + " of " + describe_defects(r.defects) + "; " + count_text(r.mesh.vertices.size(), "vertex", "vertices") +
          ", " + count_text(r.mesh.triangles.size(), "triangle", "triangles") + ", " + count_text(r.repaired_shells, "shell", "shells") +

@@ -23,8 +23,12 @@
 //        vertex is added; cavities and separate shells are kept. The added triangles lie
 //        within the hole's diameter of the input.
 //     3. "alpha_wrap": CGAL's Alpha_wrap_3 (Portaneri et al. 2022) of the triangle soup
-//        with alpha and offset (defaults: 1/100 and 1/3000 of the bounding box
-//        diagonal). Guarantee (CGAL 5.5 manual): the result is a watertight,
+//        with alpha and offset (defaults: 1/50 and 1/300 of the bounding box
+//        diagonal). Why not smaller: the wrap rounds convex edges and corners with
+//        radius `offset`, and the mesh axis builder's thickness rule (mesh_axis.h, 6)
+//        samples such a rounding finely: two overlapping copies of joint.off needed
+//        2.9 million samples (over the limit) at 1/100 and 1/3000, 8.8 s of CPU at 1/50
+//        and 1/300. CGAL's own example uses 1/20 and 1/600. Guarantee (CGAL 5.5 manual): the result is a watertight,
 //        intersection-free, orientable 2-manifold that strictly contains the input, with
 //        its vertices on the offset surface at distance `offset`; concavities narrower
 //        than about alpha are filled. It is what a self-intersecting or non-manifold mesh
@@ -32,7 +36,9 @@
 //        locally (PMP's experimental remove_self_intersections) has no guarantee.
 //        The wrap is the boundary of the union of the outside-facing Delaunay cells, so
 //        overlapping shells become one surface and a cavity (a shell inside another) is
-//        lost: step 3 runs only when 1 and 2 cannot give a solid.
+//        lost: step 3 runs only when 1 and 2 cannot give a solid. An enclosed shell in
+//        the wrap can only come from CGAL's manifold fix (relabelled cells); such shells
+//        are removed (counted in dropped_cavities), which only adds volume.
 //    Why steps 1 and 2 first: they do not move the surface (distance 0 on what was
 //    there), keep cavities, and keep the mesh's size; the wrap resamples the whole
 //    surface at about alpha and offsets it by `offset`. A hole wider than alpha is not
@@ -87,8 +93,8 @@ std::string describe_defects(const MeshDefects& d);
 
 struct MeshRepairOptions {
   bool enabled = false;         // false: a defective mesh is refused (with a hint)
-  double alpha = 0;             // 0: diagonal / 100
-  double offset = 0;            // 0: diagonal / 3000
+  double alpha = 0;             // 0: diagonal / 50
+  double offset = 0;            // 0: diagonal / 300
   double hausdorff_error = 0;   // 0: diagonal * 1e-4
   bool allow_fill = true;       // step 2 (tests and the study turn it off to wrap)
 };
@@ -99,6 +105,7 @@ struct MeshRepair {
   std::string method = "none";  // "none", "weld", "fill" or "alpha_wrap"
   double diagonal = 0, alpha = 0, offset = 0;  // alpha, offset: of the wrap (0 otherwise)
   std::size_t filled_holes = 0, added_triangles = 0;  // step 2
+  std::size_t dropped_cavities = 0;  // step 3: enclosed shells of the wrap (artifacts), removed
   std::size_t repaired_shells = 0;
   // One-sided Hausdorff distances (the farthest point of one from the other), each within
   // hausdorff_error of the true value; hausdorff = the larger (two-sided). Input to
