@@ -182,7 +182,8 @@ TEST_CASE("mesh repair: a project mesh with injected defects", "[mesh_repair]") 
   CHECK(wrapped.defects.shells == 2);
   CHECK(wrapped.method == "alpha_wrap");
   CHECK(wrapped.repaired_shells == 1);
-  CHECK(wrapped.repaired_to_input < o.alpha);
+  // The wrap follows the input to about alpha (1.13 alpha at most in study_mesh_repair).
+  CHECK(wrapped.repaired_to_input < 1.5 * o.alpha);
   CHECK(solid_topology(wrapped.mesh).betti.b0 == 1);
 }
 
