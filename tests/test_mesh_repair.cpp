@@ -55,6 +55,14 @@ void require_axis_betti(const TriangleMesh3& repaired, long b0, long b1, long b2
   CHECK(same_betti(axis.axis_betti, b0, b1, b2));
 }
 
+// An alpha wrap into one shell within alpha of the input, then require_axis_betti.
+void require_wrapped_axis(const MeshRepair& r, double alpha, long b0, long b1, long b2) {
+  CHECK(r.method == "alpha_wrap");
+  CHECK(r.repaired_shells == 1);
+  CHECK(r.hausdorff < alpha);
+  require_axis_betti(r.mesh, b0, b1, b2);
+}
+
 }  // namespace
 
 TEST_CASE("mesh repair: two overlapping spheres become one solid ball", "[mesh_repair]") {
@@ -92,11 +100,7 @@ TEST_CASE("mesh repair: a torus with a pinched vertex is wrapped into a solid to
   MeshRepairOptions o;
   o.alpha = 0.3;
   o.offset = 0.05;  // the pinch becomes a neck of radius about 0.05
-  const MeshRepair r = repair_mesh(pinched, o);
-  CHECK(r.method == "alpha_wrap");
-  CHECK(r.repaired_shells == 1);
-  CHECK(r.hausdorff < o.alpha);
-  require_axis_betti(r.mesh, 1, 1, 0);
+  require_wrapped_axis(repair_mesh(pinched, o), o.alpha, 1, 1, 0);
 }
 
 TEST_CASE("mesh repair: a closed mesh with a missing triangle is filled exactly", "[mesh_repair]") {
@@ -140,10 +144,7 @@ TEST_CASE("mesh repair: a duplicated shell is welded back; a shifted copy is wra
   o.alpha = 0.15;
   const MeshRepair wrapped = repair_mesh(overlapping, o);
   CHECK(wrapped.defects.self_intersecting_pairs > 0);
-  CHECK(wrapped.method == "alpha_wrap");
-  CHECK(wrapped.repaired_shells == 1);
-  CHECK(wrapped.hausdorff < o.alpha);
-  require_axis_betti(wrapped.mesh, 1, 0, 0);
+  require_wrapped_axis(wrapped, o.alpha, 1, 0, 0);
 }
 
 TEST_CASE("mesh repair: a valid mesh is left alone", "[mesh_repair]") {
