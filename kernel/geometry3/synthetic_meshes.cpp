@@ -27,6 +27,56 @@ TriangleMesh3 torus_mesh(double major, double minor, int n, int m) {
   return mesh;
 }
 
+TriangleMesh3 pinched_torus_mesh(double major, double minor, int n, int m) {
+  TriangleMesh3 mesh;
+  mesh.source = "pinched torus(" + std::to_string(major) + ", " + std::to_string(minor) + ")";
+  mesh.vertices.push_back({major, 0, 0});  // the ring at u = 0, pinched to one vertex
+  for (int i = 1; i < n; ++i)
+    for (int j = 0; j < m; ++j) {
+      const double u = 2 * M_PI * i / n, v = 2 * M_PI * j / m, r = minor * std::sin(u / 2);
+      mesh.vertices.push_back({(major + r * std::cos(v)) * std::cos(u), (major + r * std::cos(v)) * std::sin(u), r * std::sin(v)});
+    }
+  auto id = [&](int i, int j) { return i % n == 0 ? 0u : static_cast<std::uint32_t>(1 + (i - 1) * m + j % m); };
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < m; ++j)
+      for (const std::array<std::uint32_t, 3>& t : {std::array<std::uint32_t, 3>{id(i, j), id(i + 1, j), id(i + 1, j + 1)},
+                                                    std::array<std::uint32_t, 3>{id(i, j), id(i + 1, j + 1), id(i, j + 1)}})
+        if (t[0] != t[1] && t[1] != t[2] && t[0] != t[2]) mesh.triangles.push_back(t);
+  return mesh;
+}
+
+TriangleMesh3 sphere_mesh(const std::array<double, 3>& centre, double radius, int levels) {
+  const double g = (1 + std::sqrt(5.0)) / 2;
+  std::vector<std::array<double, 3>> p = {{-1, g, 0}, {1, g, 0}, {-1, -g, 0}, {1, -g, 0}, {0, -1, g}, {0, 1, g},
+                                          {0, -1, -g}, {0, 1, -g}, {g, 0, -1}, {g, 0, 1}, {-g, 0, -1}, {-g, 0, 1}};
+  std::vector<std::array<std::uint32_t, 3>> t = {{0, 11, 5}, {0, 5, 1},  {0, 1, 7},   {0, 7, 10}, {0, 10, 11},
+                                                 {1, 5, 9},  {5, 11, 4}, {11, 10, 2}, {10, 7, 6}, {7, 1, 8},
+                                                 {3, 9, 4},  {3, 4, 2},  {3, 2, 6},   {3, 6, 8},  {3, 8, 9},
+                                                 {4, 9, 5},  {2, 4, 11}, {6, 2, 10},  {8, 6, 7},  {9, 8, 1}};
+  for (int level = 0; level < levels; ++level) {
+    std::map<std::pair<std::uint32_t, std::uint32_t>, std::uint32_t> middle;
+    auto mid = [&](std::uint32_t a, std::uint32_t b) {
+      const auto [it, fresh] = middle.emplace(std::make_pair(std::min(a, b), std::max(a, b)), static_cast<std::uint32_t>(p.size()));
+      if (fresh) p.push_back({(p[a][0] + p[b][0]) / 2, (p[a][1] + p[b][1]) / 2, (p[a][2] + p[b][2]) / 2});
+      return it->second;
+    };
+    std::vector<std::array<std::uint32_t, 3>> finer;
+    for (const auto& [a, b, c] : t) {
+      const std::uint32_t ab = mid(a, b), bc = mid(b, c), ca = mid(c, a);
+      finer.insert(finer.end(), {{a, ab, ca}, {b, bc, ab}, {c, ca, bc}, {ab, bc, ca}});
+    }
+    t = std::move(finer);
+  }
+  TriangleMesh3 mesh;
+  mesh.source = "sphere";
+  for (const auto& q : p) {
+    const double s = radius / std::sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2]);
+    mesh.vertices.push_back({centre[0] + s * q[0], centre[1] + s * q[1], centre[2] + s * q[2]});
+  }
+  mesh.triangles = std::move(t);
+  return mesh;
+}
+
 TriangleMesh3 voxel_mesh(const std::vector<Voxel>& filled, double size, const std::string& name) {
   const std::set<Voxel> cells(filled.begin(), filled.end());
   TriangleMesh3 mesh;

@@ -2,7 +2,7 @@
 // voxel solids (the boundary of a union of unit cubes).
 //
 // Computes:
-//  - torus_mesh: the torus of radii R > r > 0 about the z axis, n x m quads split into
+//  - torus_mesh, pinched_torus_mesh, sphere_mesh (an icosphere): the torus of radii R > r > 0 about the z axis, n x m quads split into
 //    triangles, outward (genus 1; coordinates are the nearest doubles of the parametric
 //    points);
 //  - voxel_mesh: the faces between filled and empty unit cells of an integer voxel set,
@@ -26,6 +26,15 @@
 namespace grassfire {
 
 TriangleMesh3 torus_mesh(double major, double minor, int n, int m);
+
+// The same torus with the tube's radius minor * |sin(u / 2)| along the angle u about the z
+// axis: the ring at u = 0 is one vertex, a non-manifold vertex with two fans (a pinched
+// torus, the defective input of mesh_repair.h's tests).
+TriangleMesh3 pinched_torus_mesh(double major, double minor, int n, int m);
+
+// The icosahedron subdivided `levels` times, its vertices pushed onto the sphere of `radius`
+// about `centre` (outward; 20 * 4^levels triangles).
+TriangleMesh3 sphere_mesh(const std::array<double, 3>& centre, double radius, int levels);
 
 using Voxel = std::array<int, 3>;
 TriangleMesh3 voxel_mesh(const std::vector<Voxel>& filled, double size = 1, const std::string& name = "voxels");

@@ -117,7 +117,7 @@ double default_burn_spacing(const MedialComplex& mc) {
 Burn3dRun burn3d(const Burn3dSetup& setup) {
   const BurnMethod method = burn_method(setup.method);
   Progress progress("burn3d", 0);
-  RawComplex raw = load_complex(setup.input, setup.mesh_is_complex, "burn3d");
+  RawComplex raw = load_complex(setup.input, setup.mesh_is_complex, "burn3d", setup.repair);
   if (setup.no_border_ignition) raw = without_border_ignition(std::move(raw));
   Burn3dRun run;
   run.mc = std::make_unique<MedialComplex>(raw);

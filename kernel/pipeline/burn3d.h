@@ -34,6 +34,7 @@
 #include <string>
 #include <vector>
 
+#include "medial3/mesh/mesh_repair.h"
 #include "complex3/medial_complex.h"
 #include "io/point_csv.h"
 #include "pipeline/burn3d_methods.h"
@@ -52,6 +53,7 @@ struct Burn3dSetup {
   std::string input;                // load_complex's INPUT
   std::string method = "discrete";  // burn_method's name
   bool mesh_is_complex = false;     // burn a mesh itself (R = 0)
+  MeshRepairOptions repair;         // a defective mesh's repair before its axis (load_complex)
   bool no_border_ignition = false;  // every border rule Never: only the sources burn
   bool singular_walls = false;      // exact: singular edges as walls (BurnRequest)
   std::optional<double> spacing;    // discrete: Steiner spacing h; none: default_burn_spacing

@@ -39,7 +39,7 @@ FieldRun load_burning_field(const FieldSetup& setup) {
   if (setup.max_points < 1 || setup.max_points > 2'000'000'000ULL)
     throw std::invalid_argument("--max-points must be in [1, 2000000000]");
   FieldRun in;
-  in.complex = std::make_unique<MedialComplex>(load_complex(setup.input, setup.mesh_is_complex, setup.command));
+  in.complex = std::make_unique<MedialComplex>(load_complex(setup.input, setup.mesh_is_complex, setup.command, setup.repair));
   in.complex->validate();
   if (in.complex->vertex_count() == 0) throw std::runtime_error(setup.input + ": the complex is empty");
   in.spacing = setup.spacing ? *setup.spacing : default_burn_spacing(*in.complex);

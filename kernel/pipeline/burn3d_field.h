@@ -26,6 +26,7 @@
 #include "burn3/burning_field.h"
 #include "burn3/discrete/discrete_burning.h"
 #include "burn3/exact/exact_burning.h"
+#include "medial3/mesh/mesh_repair.h"
 
 namespace grassfire {
 
@@ -37,6 +38,7 @@ struct FieldSetup {
   std::optional<double> spacing;
   std::uint64_t max_points = 50'000'000;  // discrete only
   std::string command = "burn3d";   // names the command in notes
+  MeshRepairOptions repair;         // a defective mesh INPUT (medial3/mesh/mesh_repair.h)
 };
 
 struct FieldRun {

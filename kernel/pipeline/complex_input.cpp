@@ -30,12 +30,14 @@ std::string complex_input_help() {
          "board-cylinder, book:K, y-junction, tetrahedron, octahedron, double-cone, tetrahedron-flap, box:A:B:C";
 }
 
-RawComplex load_complex(const std::string& input, bool mesh_is_complex, const std::string& command) {
+RawComplex load_complex(const std::string& input, bool mesh_is_complex, const std::string& command,
+                        const MeshRepairOptions& repair) {
   if (is_synthetic(input)) return synthetic_complex(input);
   const std::string ext = file_extension(input);
   if (ext == "json") return read_complex_json(input);
   if (ext == "ma") return read_ma(input);
   if (mesh_is_complex) {
+    if (repair.enabled) throw std::runtime_error(input + ": --repair builds a medial axis; --mesh-is-complex burns the mesh as it is");
     if (!is_mesh_extension(ext))
       throw std::runtime_error(input + ": --mesh-is-complex needs a mesh (.off, .ply, .obj or .stl)");
     const TriangleMesh3 mesh = read_triangle_mesh(input);
@@ -43,10 +45,11 @@ RawComplex load_complex(const std::string& input, bool mesh_is_complex, const st
     return mesh_as_complex(mesh);
   }
   if (is_mesh_extension(ext) || ext == "hs" || ext == "halfspaces" || ext == "cin" || ext == "balls") {
-    MedialAxisBuild axis = build_medial_axis(input, MedialInputKind::Auto);
+    MedialAxisBuild axis = build_medial_axis(input, MedialInputKind::Auto, {}, repair);
     note(command + ": " + input + ": medial axis by the " + axis.kind + " builder");
     if (const std::string r = axis.report.value("/mesh_input/repairs"_json_pointer, ""); !r.empty())
       note(command + ": " + input + ": " + r);
+    if (axis.report.contains("repair")) note(command + ": " + input + ": " + axis.report["repair"]["summary"].get<std::string>());
     return std::move(axis.complex);
   }
   std::string names;

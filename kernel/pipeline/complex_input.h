@@ -13,12 +13,16 @@
 
 #include <string>
 
+#include "medial3/mesh/mesh_repair.h"
 #include "complex3/raw_complex.h"
 
 namespace grassfire {
 
-// `command` prefixes the line that says which builder made a medial axis (stderr).
-RawComplex load_complex(const std::string& input, bool mesh_is_complex, const std::string& command);
+// `command` prefixes the line that says which builder made a medial axis (stderr), and the
+// line that says how a defective mesh was repaired (`repair`, medial3/mesh/mesh_repair.h;
+// not with mesh_is_complex, which burns the mesh as it is).
+RawComplex load_complex(const std::string& input, bool mesh_is_complex, const std::string& command,
+                        const MeshRepairOptions& repair = {});
 // The help text of INPUT for the commands that take one.
 std::string complex_input_help();
 

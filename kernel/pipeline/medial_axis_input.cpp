@@ -96,7 +96,8 @@ MedialInputKind parse_medial_input_kind(const std::string& name) {
   throw std::invalid_argument("unknown kind '" + name + "' (auto, convex, balls, mesh)");
 }
 
-MedialAxisBuild build_medial_axis(const std::string& path, MedialInputKind kind, const MeshAxisOptions& mesh_options) {
+MedialAxisBuild build_medial_axis(const std::string& path, MedialInputKind kind, const MeshAxisOptions& mesh_options,
+                                  const MeshRepairOptions& repair) {
   const auto start = std::chrono::steady_clock::now();
   if (kind == MedialInputKind::Auto) kind = kind_of_path(path);
   MedialAxisBuild out;
@@ -107,7 +108,15 @@ MedialAxisBuild build_medial_axis(const std::string& path, MedialInputKind kind,
     if (kind != MedialInputKind::Convex) throw std::invalid_argument(path + ": --kind mesh needs a mesh file");
     out = convex(read_halfspaces(path));
   } else {
-    const TriangleMesh3 mesh = read_triangle_mesh(path);
+    TriangleMesh3 mesh = read_triangle_mesh(path);
+    const nlohmann::json mesh_input = mesh_input_json(mesh);
+    nlohmann::json repair_report;
+    if (repair.enabled) {
+      MeshRepair r = repair_mesh(mesh, repair);
+      repair_report = mesh_repair_json(r);
+      repair_report["summary"] = describe_repair(r);
+      mesh = std::move(r.mesh);
+    }
     bool use_convex = kind == MedialInputKind::Convex;
     ConvexPolyhedron p;
     if (kind == MedialInputKind::Auto) {
@@ -126,7 +135,8 @@ MedialAxisBuild build_medial_axis(const std::string& path, MedialInputKind kind,
       const MeshAxis a = mesh_medial_axis(mesh, mesh_options);
       out = {a.complex, "mesh", mesh_axis_json(a)};
     }
-    out.report["mesh_input"] = mesh_input_json(mesh);
+    out.report["mesh_input"] = mesh_input;
+    if (repair.enabled) out.report["repair"] = repair_report;
   }
   out.report["input"] = path;
   out.report["kind"] = out.kind;

@@ -9,7 +9,9 @@
 //    numbers are the solid's (mesh_axis.h) -- an approximation with exact vertices;
 // and a JSON report of what was computed (counts, exactness and error bounds, timings,
 // Betti numbers of the shape and of the axis where known; for meshes "mesh_input": what the
-// reader welded and dropped, io/mesh_weld.h, "repairs" its one-line summary). Kind Auto
+// reader welded and dropped, io/mesh_weld.h, "repairs" its one-line summary; with
+// repair.enabled, "repair": what mesh_repair.h found and did, "summary" its one line, and
+// the axis is that of the repaired solid). Kind Auto
 // picks by extension; for a mesh it takes the convex builder when the mesh is convex, else the mesh axis builder.
 // Contract: errors are exceptions whose message names the file and the problem (readers:
 // ComplexFormatError; geometry: std::invalid_argument); nothing is written here.
@@ -21,6 +23,7 @@
 #include <string>
 
 #include "medial3/mesh/mesh_axis.h"
+#include "medial3/mesh/mesh_repair.h"
 #include "complex3/raw_complex.h"
 
 namespace grassfire {
@@ -36,8 +39,10 @@ struct MedialAxisBuild {
   nlohmann::json report;
 };
 
-// `mesh_options`: for closed meshes (mesh_axis.h).
-MedialAxisBuild build_medial_axis(const std::string& path, MedialInputKind kind, const MeshAxisOptions& mesh_options = {});
+// `mesh_options`: for closed meshes (mesh_axis.h); `repair`: for defective meshes
+// (mesh_repair.h; without it a defective mesh is refused with the --repair hint).
+MedialAxisBuild build_medial_axis(const std::string& path, MedialInputKind kind, const MeshAxisOptions& mesh_options = {},
+                                  const MeshRepairOptions& repair = {});
 // The same with only the initial sampling given: h = mean edge length / samples.
 MedialAxisBuild build_medial_axis(const std::string& path, MedialInputKind kind, int samples);
 

@@ -60,8 +60,9 @@ int run_burn3d(int argc, char** argv) {
       .option("csv", "OUT", "with --at: one row per query `x,y,z,bt,bt_error,snap` (inf where it never burns)")
       .option("ply", "OUT", "write the complex with per-vertex R, BT, ET as PLY")
       .option("vtk", "OUT", "write the complex with per-vertex R, BT, ET as legacy VTK")
-      .option("json", "OUT", "write a JSON report (counts, timings, per-vertex x y z R BT ET; null = never burns)")
-      .epilog("The discrete method over-estimates BT by O(h) (kernel/burn3/discrete/discrete_burning.h); at --at points its\n"
+      .option("json", "OUT", "write a JSON report (counts, timings, per-vertex x y z R BT ET; null = never burns)");
+  add_repair_options(opt);
+  opt.epilog("The discrete method over-estimates BT by O(h) (kernel/burn3/discrete/discrete_burning.h); at --at points its\n"
               "bt is an upper bound from the graph points of the point's triangles (kernel/burn3/discrete/discrete_query.h).\n"
               "The exact method returns certified enclosures: |bt - BT| <= bt_error at every query and vertex\n"
               "(--json: vertex_values.BT_error, stats.certification per stage, stats.uncertified; on singular\n"
@@ -77,6 +78,7 @@ int run_burn3d(int argc, char** argv) {
   burn_method(setup.method);  // an unknown method is refused before anything is read
   if (opt.has("csv") && !opt.has("at")) throw std::runtime_error("--csv needs --at (the query points)");
   setup.mesh_is_complex = opt.has("mesh-is-complex");
+  setup.repair = repair_options(opt);
   setup.no_border_ignition = opt.has("no-border-ignition");
   setup.singular_walls = opt.has("singular-walls");
   if (setup.singular_walls && setup.method != "exact") throw std::runtime_error("--singular-walls needs --method exact");

@@ -21,12 +21,13 @@ int run_complex(int argc, char** argv) {
       .flag("no-border-ignition", "set every border edge's rule to never (only point sources would burn it)")
       .option("json", "OUT", "write the complex in the grassfire-complex JSON format (exact)")
       .option("ma", "OUT", "write the complex as .ma (nearest doubles where a value is not a decimal)")
-      .option("ply", "OUT", "write the complex with per-vertex R as PLY")
-      .epilog("Nothing is written unless the complex is valid (MedialComplex checks, exact).\n"
+      .option("ply", "OUT", "write the complex with per-vertex R as PLY");
+  add_repair_options(opt);
+  opt.epilog("Nothing is written unless the complex is valid (MedialComplex checks, exact).\n"
               "Example: grassfire complex board-fin --json board_fin.json");
   if (!opt.parse(argc, argv)) return opt.exit_code();
   const std::string input = opt.arg("INPUT");
-  RawComplex raw = load_complex(input, opt.has("mesh-is-complex"), "complex");
+  RawComplex raw = load_complex(input, opt.has("mesh-is-complex"), "complex", repair_options(opt));
   if (opt.has("no-border-ignition")) raw = without_border_ignition(std::move(raw));
   const MedialComplex mc(raw);
   mc.validate();

@@ -17,6 +17,7 @@ void declare_field_options(Options& opt, const std::string& default_method) {
                               "(an upper bound of BT, not Definition 9)")
       .option("max-points", "N", "refuse to place more than N graph points", "50000000")
       .flag("mesh-is-complex", "use a mesh itself as the 2-complex (R = 0) instead of its medial axis");
+  add_repair_options(opt);
 }
 
 FieldSetup field_setup(const Options& opt, const std::string& input, const std::string& command) {
@@ -28,6 +29,7 @@ FieldSetup field_setup(const Options& opt, const std::string& input, const std::
   if (opt.has("spacing")) setup.spacing = opt.get_double("spacing");
   setup.max_points = static_cast<std::uint64_t>(opt.get_long("max-points", 1, 2'000'000'000L));
   setup.command = command;
+  setup.repair = repair_options(opt);
   return setup;
 }
 

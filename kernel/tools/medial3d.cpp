@@ -29,8 +29,11 @@ int run_medial3d(int argc, char** argv) {
       .option("ma", "OUT", "write the axis as .ma (Q-MAT format: v x y z r, e i j, f i j k)")
       .option("complex", "OUT", "write the axis in the grassfire-complex JSON format (exact; burn3d reads it)")
       .option("ply", "OUT", "write the axis with per-vertex R as PLY")
-      .option("json", "OUT", "write a JSON report (counts, exactness, error bounds, Betti numbers, timings)")
-      .epilog("Nothing is written unless the whole axis was built and its complex validated.\n"
+      .option("json", "OUT", "write a JSON report (counts, exactness, error bounds, Betti numbers, timings;\n"
+                             "with --repair: \"repair\", the defects found, the method, alpha, offset, the repaired mesh's size,\n"
+                             "the Hausdorff distance)");
+  add_repair_options(opt);
+  opt.epilog("Nothing is written unless the whole axis was built and its complex validated.\n"
               "Example: grassfire medial3d data/balls/caffeine.cin --ma caffeine.ma --json caffeine.json");
   if (!opt.parse(argc, argv)) return opt.exit_code();
   const std::string input = opt.arg("INPUT");
@@ -42,7 +45,7 @@ int run_medial3d(int argc, char** argv) {
   if (!(mesh.angle_degrees >= 0 && mesh.angle_degrees < 180)) throw std::invalid_argument("--angle must be in [0, 180)");
   Progress progress("medial3d " + input, 3);
   progress.stage("building the medial axis");
-  const MedialAxisBuild axis = build_medial_axis(input, parse_medial_input_kind(opt.get("kind")), mesh);
+  const MedialAxisBuild axis = build_medial_axis(input, parse_medial_input_kind(opt.get("kind")), mesh, repair_options(opt));
   if (const std::string r = axis.report.value("/mesh_input/repairs"_json_pointer, ""); !r.empty())
     note("medial3d: " + input + ": " + r);
   progress.advance();
@@ -71,6 +74,8 @@ int run_medial3d(int argc, char** argv) {
             << " triangles, " << a["segments"] << " segments, " << mc.count(EdgeStratum::Singular)
             << " singular edges, " << mc.sheets().size() << " sheets, Betti " << a["betti"].dump() << ", "
             << axis.report["total_seconds"] << " s\n";
+  if (axis.report.contains("repair"))
+    std::cout << "medial3d " << input << ": " << axis.report["repair"]["summary"].get<std::string>() << '\n';
   return 0;
 }
 

@@ -1,6 +1,7 @@
 // options.cpp -- see options.h.
 #include "tools/options.h"
 
+#include "medial3/mesh/mesh_repair.h"
 #include "support/progress.h"
 
 #include <cerrno>
@@ -166,6 +167,29 @@ ImageShapeOptions image_options(const Options& opt) {
   for (const char* name : {"connectivity", "contour", "foreground", "threshold"}) named[name] = opt.get(name);
   named["largest"] = opt.has("largest") ? "true" : "false";
   return parse_image_shape_options(named);
+}
+
+void add_repair_options(Options& opt) {
+  opt.flag("repair", "a mesh that does not bound a solid (self-intersecting, non-manifold, open, overlapping shells)\n"
+                     "is repaired first: duplicates welded, or holes filled, or else an alpha wrap (CGAL Alpha_wrap_3);\n"
+                     "the report gives the defects, the method and the Hausdorff distance to the input")
+      .option("repair-alpha", "A", "the alpha wrap's alpha, in the mesh's units (default: 1/50 of the bounding box "
+                                   "diagonal; smaller follows concavities closer, with more triangles)")
+      .option("repair-offset", "D", "the alpha wrap's offset (default: 1/300 of the bounding box diagonal)");
+}
+
+MeshRepairOptions repair_options(const Options& opt) {
+  MeshRepairOptions r;
+  r.enabled = opt.has("repair");
+  if (opt.has("repair-alpha")) r.alpha = opt.get_double("repair-alpha");
+  if (opt.has("repair-offset")) r.offset = opt.get_double("repair-offset");
+  if ((opt.has("repair-alpha") || opt.has("repair-offset")) && !r.enabled)
+    throw std::invalid_argument("--repair-alpha and --repair-offset need --repair");
+  if (opt.has("repair-alpha") && !(r.alpha > 0 && std::isfinite(r.alpha)))
+    throw std::invalid_argument("--repair-alpha must be a positive number");
+  if (opt.has("repair-offset") && !(r.offset > 0 && std::isfinite(r.offset)))
+    throw std::invalid_argument("--repair-offset must be a positive number");
+  return r;
 }
 
 }  // namespace grassfire::cli

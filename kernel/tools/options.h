@@ -15,6 +15,10 @@
 
 #include "shapes/image_shape.h"
 
+namespace grassfire {
+struct MeshRepairOptions;  // medial3/mesh/mesh_repair.h
+}
+
 namespace grassfire::cli {
 
 class Options {
@@ -62,5 +66,10 @@ class Options {
 // --contour, --foreground, --threshold, --largest; every 2D command that loads a SHAPE takes them.
 void add_image_options(Options& opt);
 ImageShapeOptions image_options(const Options& opt);
+
+// The repair of a defective mesh (medial3/mesh/mesh_repair.h): --repair,
+// --repair-alpha, --repair-offset; every 3D command that builds the axis of a mesh takes them.
+void add_repair_options(Options& opt);
+MeshRepairOptions repair_options(const Options& opt);
 
 }  // namespace grassfire::cli

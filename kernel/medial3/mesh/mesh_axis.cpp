@@ -11,6 +11,7 @@
 #include "medial3/mesh/mesh_samples.h"
 #include "geometry3/exact_predicates3.h"
 #include "support/cpu_clock.h"
+#include "medial3/mesh/mesh_repair.h"
 #include "number/exact_sum.h"
 
 namespace grassfire {
@@ -416,7 +417,7 @@ struct AcceptedAxis {
 MeshAxis mesh_medial_axis(const TriangleMesh3& mesh, const MeshAxisOptions& options) {
   const double start = cpu_seconds();
   if (!(options.samples_per_edge > 0)) throw std::invalid_argument(mesh.source + ": samples per edge must be positive");
-  require_closed_manifold(mesh);
+  require_solid(mesh);  // with the defects and the --repair hint when it refuses
   MeshAxis out;
   out.solid = solid_topology(mesh);
   const SolidLocator solid(mesh);

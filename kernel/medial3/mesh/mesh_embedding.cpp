@@ -38,12 +38,19 @@ bool certainly_proper(const std::array<double, 3>& a, const std::array<double, 3
   return false;
 }
 
+}  // namespace
+
+bool has_zero_area(const TriangleMesh3& mesh, std::uint32_t t) {
+  const auto& [a, b, c] = mesh.triangles[t];
+  const auto& p = mesh.vertices;
+  return !certainly_proper(p[a], p[b], p[c]) && collinear(exact_point(p[a]), exact_point(p[b]), exact_point(p[c]));
+}
+
+namespace {
+
 void require_positive_areas(const TriangleMesh3& mesh) {
   for (std::uint32_t t = 0; t < mesh.triangles.size(); ++t) {
-    const auto& [a, b, c] = mesh.triangles[t];
-    const auto& p = mesh.vertices;
-    if (certainly_proper(p[a], p[b], p[c])) continue;
-    if (collinear(exact_point(p[a]), exact_point(p[b]), exact_point(p[c])))
+    if (has_zero_area(mesh, t))
       reject(mesh, face_name(mesh, t) + " has zero area: its three vertices are collinear (it is not dropped: that "
                                         "would open the mesh)");
   }
@@ -85,6 +92,7 @@ using Box = CGAL::Box_intersection_d::Box_with_handle_d<double, 3, std::uint32_t
 // exit point of s ∩ t on the farther of the two opposite edges); coplanar or not. A common
 // edge is the fold test's (require_no_folds).
 bool improper(const TriangleMesh3& mesh, std::uint32_t s, std::uint32_t t) {
+  if (s == t) return false;
   const auto& ts = mesh.triangles[s];
   const auto& tt = mesh.triangles[t];
   const auto point = [&](std::uint32_t v) { return K::Point_3(mesh.vertices[v][0], mesh.vertices[v][1], mesh.vertices[v][2]); };
@@ -102,10 +110,16 @@ bool improper(const TriangleMesh3& mesh, std::uint32_t s, std::uint32_t t) {
 
 }  // namespace
 
-std::optional<std::array<std::uint32_t, 2>> first_crossing(const TriangleMesh3& mesh) {
+namespace {
+
+// Calls visit(s, t), s < t, for every pair of triangles of `mesh` (those with use[t], all
+// when `use` is empty) whose closed bounding boxes overlap.
+template <class Visit>
+void visit_box_pairs(const TriangleMesh3& mesh, const std::vector<bool>& use, Visit visit) {
   std::vector<Box> boxes;
   boxes.reserve(mesh.triangles.size());
   for (std::uint32_t t = 0; t < mesh.triangles.size(); ++t) {
+    if (!use.empty() && !use[t]) continue;
     double lo[3], hi[3];
     for (int i = 0; i < 3; ++i) {
       lo[i] = hi[i] = mesh.vertices[mesh.triangles[t][0]][i];
@@ -116,13 +130,27 @@ std::optional<std::array<std::uint32_t, 2>> first_crossing(const TriangleMesh3& 
     }
     boxes.emplace_back(lo, hi, t);
   }
-  std::optional<std::array<std::uint32_t, 2>> found;
   auto callback = [&](const Box& x, const Box& y) {
-    const std::array<std::uint32_t, 2> pair{std::min(x.handle(), y.handle()), std::max(x.handle(), y.handle())};
-    if ((!found || pair < *found) && improper(mesh, pair[0], pair[1])) found = pair;
+    visit(std::min(x.handle(), y.handle()), std::max(x.handle(), y.handle()));
   };
   CGAL::box_self_intersection_d(boxes.begin(), boxes.end(), callback);  // closed boxes: touching ones are tested
+}
+
+}  // namespace
+
+std::optional<std::array<std::uint32_t, 2>> first_crossing(const TriangleMesh3& mesh) {
+  std::optional<std::array<std::uint32_t, 2>> found;
+  visit_box_pairs(mesh, {}, [&](std::uint32_t s, std::uint32_t t) {
+    const std::array<std::uint32_t, 2> pair{s, t};
+    if ((!found || pair < *found) && improper(mesh, s, t)) found = pair;
+  });
   return found;
+}
+
+std::size_t count_crossings(const TriangleMesh3& mesh, const std::vector<bool>& positive_area) {
+  std::size_t n = 0;
+  visit_box_pairs(mesh, positive_area, [&](std::uint32_t s, std::uint32_t t) { n += improper(mesh, s, t); });
+  return n;
 }
 
 void require_embedded(const TriangleMesh3& mesh) {

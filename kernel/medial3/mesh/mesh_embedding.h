@@ -19,7 +19,9 @@
 #pragma once
 
 #include <array>
+#include <cstddef>
 #include <optional>
+#include <vector>
 
 #include "geometry3/triangle_mesh.h"
 
@@ -27,8 +29,16 @@ namespace grassfire {
 
 void require_embedded(const TriangleMesh3& mesh);
 
+// Test (1) for triangle t: its three vertices are collinear (exact).
+bool has_zero_area(const TriangleMesh3& mesh, std::uint32_t t);
+
 // Test (3) alone: the smallest pair (s, t), s < t, of triangles without a common edge that
 // meet outside their common vertex, if any. Needs only triangles of positive area.
 std::optional<std::array<std::uint32_t, 2>> first_crossing(const TriangleMesh3& mesh);
+
+// The number of pairs test (3) finds among the triangles t with positive_area[t] (the
+// defect census of mesh_repair.h; pairs on a common edge are not counted), for any
+// triangle soup: exact.
+std::size_t count_crossings(const TriangleMesh3& mesh, const std::vector<bool>& positive_area);
 
 }  // namespace grassfire
