@@ -62,9 +62,11 @@ py::dict edf2d(const py::object& shape, std::size_t samples, bool exact, const s
 mpq_class threshold_of(const py::object& x, const char* name) {
   mpq_class v;
   if (py::isinstance<py::str>(x)) {
-    if (!parse_exact_decimal(x.cast<std::string>(), v))
+    const std::optional<mpq_class> q = parse_exact_decimal(x.cast<std::string>());
+    if (!q)
       throw std::invalid_argument(std::string(name) + " must be a non-negative decimal number, got '" +
                                   x.cast<std::string>() + "'");
+    v = *q;
   } else {
     const double d = x.cast<double>();
     if (!std::isfinite(d)) throw std::invalid_argument(std::string(name) + " must be a finite number");
