@@ -127,7 +127,7 @@ TEST_CASE("mesh repair: a closed mesh with a missing triangle is filled exactly"
   require_axis_betti(r.mesh, 1, 1, 0);
 }
 
-TEST_CASE("mesh repair: a duplicated shell is welded back; a shifted copy is wrapped", "[mesh_repair]") {
+TEST_CASE("mesh repair: a duplicated shell is welded back, a shifted copy is wrapped", "[mesh_repair]") {
   const TriangleMesh3 sphere = sphere_mesh({0, 0, 0}, 1, 2);
   const TriangleMesh3 twice = united(sphere, sphere, "twice.off");
   const MeshDefects d = mesh_defects(twice);
@@ -188,7 +188,7 @@ TEST_CASE("mesh repair: a project mesh with injected defects", "[mesh_repair]") 
   CHECK(solid_topology(wrapped.mesh).betti.b0 == 1);
 }
 
-TEST_CASE("medial3d --repair: refusal names the file and the option; the report", "[mesh_repair][cli]") {
+TEST_CASE("medial3d --repair: refusal names the file and the option, and the report", "[mesh_repair][cli]") {
   using testing::run_cli;
   const std::string path = testing::temp_path("pinched_torus.off");
   write_off(pinched_torus_mesh(2, 0.8, 24, 12), path);

@@ -9,7 +9,7 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 
-#include "burn3/axis_pruning3.h"
+#include "curves3/axis_pruning3.h"
 #include "complex3/synthetic_complexes.h"
 #include "complex3/synthetic_tubes.h"
 #include "io/complex_json.h"

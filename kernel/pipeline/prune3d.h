@@ -1,5 +1,5 @@
 // prune3d.h -- the 3D pruning pipeline: input -> medial complex -> burning field -> the axis
-// pruned by ET and ST thresholds (burn3/axis_pruning3.h).
+// pruned by ET and ST thresholds (curves3/axis_pruning3.h).
 //
 // Computes what `grassfire prune3d` computes and what the Python module's grassfire.prune3d
 // returns (both call prune3d() below): the complex and burning field an input names by a
@@ -36,7 +36,7 @@
 #include <optional>
 #include <string>
 
-#include "burn3/axis_pruning3.h"
+#include "curves3/axis_pruning3.h"
 #include "pipeline/burn3d_field.h"
 
 namespace grassfire {

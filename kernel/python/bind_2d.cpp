@@ -19,7 +19,7 @@
 #include "io/disk_list.h"
 #include "pipeline/edf2d.h"
 #include "pipeline/edf2d_json.h"
-#include "pipeline/match2d.h"
+#include "apps2d/match2d.h"
 #include "pipeline/prune2d.h"
 #include "python_inputs.h"
 #include "python_values.h"
@@ -175,7 +175,7 @@ signature  "be" (boundary eccentricity), "lfs" (local feature size) or "curvatur
 samples    boundary samples per shape, in [8, 2000] (the DP costs O(N^3))
 stretch    cost of a step where only one curve advances (normalised units)
 
-Returns the members of the grassfire-match2d JSON (kernel/pipeline/match2d.h): "cost",
+Returns the members of the grassfire-match2d JSON (kernel/apps2d/match2d.h): "cost",
 "offset", "path" (k, 2), "correspondence" (N,), "a_samples"/"b_samples" columns x, y, value.
 
 >>> import grassfire

@@ -239,7 +239,7 @@ st        keep ST = 1 - R / BT >= st, in [0, 1]
 method    "exact" (default) or "discrete" (the baseline), with spacing as burn3d's
 
 Cuts exactly along the threshold lines of the piecewise-linear fields and removes failing
-parts only by collapses from the free border inward (kernel/burn3/axis_pruning3.h).
+parts only by collapses from the free border inward (kernel/curves3/axis_pruning3.h).
 Returns "vertices", "triangles", "segments", "R", "BT", "ET" of the pruned axis as numpy
 arrays and the members of the grassfire-pruned3d report ("axis", "refined", "removed",
 "pruned" with their Betti numbers, "uncertified", "seconds", ...).

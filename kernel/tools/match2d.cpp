@@ -1,14 +1,14 @@
 // match2d.cpp -- `grassfire match2d`: correspondence of two shape boundaries guided by their
 // boundary eccentricity (3.5.3, Fig. 3.9e).
 //
-// Runs pipeline/match2d.h (which documents the JSON output, format "grassfire-match2d").
+// Runs apps2d/match2d.h (which documents the JSON output, format "grassfire-match2d").
 #include <iostream>
 #include <sstream>
 
 #include "apps2d/boundary_matching.h"
 #include "apps2d/match_svg.h"
 #include "support/atomic_file.h"
-#include "pipeline/match2d.h"
+#include "apps2d/match2d.h"
 #include "shapes/builtin_shapes.h"
 #include "io/load_shape.h"
 #include "tools/commands.h"
@@ -29,7 +29,7 @@ int match2d_main(int argc, char** argv) {
       .option("samples", "N", "boundary samples per shape (the DP costs O(N^3))", "200")
       .option("stretch", "S", "cost of a step where only one curve advances (normalised units)", "0.05")
       .option("signature", "K", "be (boundary eccentricity), lfs (local feature size) or curvature", "be")
-      .option("json", "OUT", "write the signatures and the correspondence as JSON (format: kernel/pipeline/match2d.h)")
+      .option("json", "OUT", "write the signatures and the correspondence as JSON (format: kernel/apps2d/match2d.h)")
       .option("svg", "OUT", "draw both boundaries coloured by the signature, with lines joining the "
                             "signature's local maxima on A to their partners on B")
       .epilog("examples:\n  grassfire match2d data/shapes2d/children-1.json data/shapes2d/children-2.json --svg m.svg\n"

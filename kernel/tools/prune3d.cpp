@@ -1,5 +1,5 @@
 // prune3d.cpp -- `grassfire prune3d`: the 3D medial axis pruned by ET and ST thresholds,
-// keeping its homotopy type (burn3/axis_pruning3.h, pipeline/prune3d.h). Writes, each whole
+// keeping its homotopy type (curves3/axis_pruning3.h, pipeline/prune3d.h). Writes, each whole
 // or not at all and only after the pruned complex was validated: --json (grassfire-pruned3d,
 // pipeline/prune3d.h), --complex (grassfire-complex JSON, exact), --ma (Q-MAT .ma), --ply
 // (with R, BT, ET per vertex).

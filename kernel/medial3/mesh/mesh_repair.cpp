@@ -11,7 +11,7 @@
 #include "medial3/mesh/mesh_checks.h"
 #include "medial3/mesh/mesh_embedding.h"
 #include "medial3/mesh/mesh_solid.h"
-#include "io/complex_text.h"
+#include "support/number_text.h"
 #include "support/cpu_clock.h"
 #include "io/mesh_weld.h"
 

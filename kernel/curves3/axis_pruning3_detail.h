@@ -11,7 +11,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "burn3/axis_pruning3.h"
+#include "curves3/axis_pruning3.h"
 
 namespace grassfire::pruning3 {
 

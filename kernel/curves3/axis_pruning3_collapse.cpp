@@ -6,7 +6,7 @@
 #include <queue>
 #include <tuple>
 
-#include "burn3/axis_pruning3_detail.h"
+#include "curves3/axis_pruning3_detail.h"
 
 namespace grassfire::pruning3 {
 namespace {

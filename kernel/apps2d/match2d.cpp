@@ -1,5 +1,5 @@
 // match2d.cpp -- see match2d.h.
-#include "pipeline/match2d.h"
+#include "apps2d/match2d.h"
 
 #include <stdexcept>
 

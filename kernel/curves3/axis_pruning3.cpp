@@ -1,6 +1,6 @@
 // axis_pruning3.cpp -- the subdivision K of axis_pruning3.h: the threshold lines cut every
 // cell of M exactly; the collapse is in axis_pruning3_collapse.cpp.
-#include "burn3/axis_pruning3.h"
+#include "curves3/axis_pruning3.h"
 
 #include <algorithm>
 #include <chrono>
@@ -9,7 +9,7 @@
 #include <stdexcept>
 #include <unordered_map>
 
-#include "burn3/axis_pruning3_detail.h"
+#include "curves3/axis_pruning3_detail.h"
 #include "curves3/medial_curves.h"
 
 namespace grassfire {
