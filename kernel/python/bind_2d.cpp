@@ -57,21 +57,9 @@ py::dict edf2d(const py::object& shape, std::size_t samples, bool exact, const s
   return to_python(nlohmann::json::parse(json)).cast<py::dict>();
 }
 
-// A threshold as the program reads it (a decimal string, exactly) or a float at its exact
-// binary value.
+// exact_threshold (python_inputs.h), non-negative.
 mpq_class threshold_of(const py::object& x, const char* name) {
-  mpq_class v;
-  if (py::isinstance<py::str>(x)) {
-    const std::optional<mpq_class> q = parse_exact_decimal(x.cast<std::string>());
-    if (!q)
-      throw std::invalid_argument(std::string(name) + " must be a non-negative decimal number, got '" +
-                                  x.cast<std::string>() + "'");
-    v = *q;
-  } else {
-    const double d = x.cast<double>();
-    if (!std::isfinite(d)) throw std::invalid_argument(std::string(name) + " must be a finite number");
-    v = d;
-  }
+  const mpq_class v = exact_threshold(x, name);
   if (sgn(v) < 0) throw std::invalid_argument(std::string(name) + " must be non-negative");
   return v;
 }

@@ -129,18 +129,7 @@ py::dict paths3d(const py::object& input, const std::string& from, const py::obj
 
 std::optional<mpq_class> threshold(const py::object& x, const char* name) {
   if (x.is_none()) return std::nullopt;
-  mpq_class v;
-  if (py::isinstance<py::str>(x)) {
-    const std::optional<mpq_class> q = parse_exact_decimal(x.cast<std::string>());
-    if (!q) throw std::invalid_argument(std::string(name) + " must be a non-negative decimal number, got '" +
-                                        x.cast<std::string>() + "'");
-    v = *q;
-  } else {
-    const double d = x.cast<double>();
-    if (!std::isfinite(d)) throw std::invalid_argument(std::string(name) + " must be a finite number");
-    v = d;
-  }
-  return v;
+  return exact_threshold(x, name);
 }
 
 py::dict prune3d(const py::object& input, const py::object& et, const py::object& st, bool relative,

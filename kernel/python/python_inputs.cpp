@@ -7,10 +7,12 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <optional>
 #include <sstream>
 #include <stdexcept>
 
 #include "io/complex_text.h"
+#include "io/decimal_text.h"
 #include "io/image_raster.h"
 #include "io/load_shape.h"
 #include "shapes/validate_shape.h"
@@ -212,6 +214,19 @@ Shape2 shape_of(const py::object& shape, const std::string& name, const ImageSha
   }
   validate_shape(s, name);
   return s;
+}
+
+mpq_class exact_threshold(const pybind11::object& x, const char* name) {
+  if (pybind11::isinstance<pybind11::str>(x)) {
+    const std::optional<mpq_class> q = parse_exact_decimal(x.cast<std::string>());
+    if (!q)
+      throw std::invalid_argument(std::string(name) + " must be a non-negative decimal number, got '" +
+                                  x.cast<std::string>() + "'");
+    return *q;
+  }
+  const double d = x.cast<double>();
+  if (!std::isfinite(d)) throw std::invalid_argument(std::string(name) + " must be a finite number");
+  return mpq_class(d);
 }
 
 }  // namespace grassfire::python

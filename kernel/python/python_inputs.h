@@ -15,6 +15,7 @@
 // Complexity: linear in the input.
 #pragma once
 
+#include <gmpxx.h>
 #include <pybind11/pybind11.h>
 
 #include <string>
@@ -51,6 +52,10 @@ class InputFile {
  private:
   std::string path_, dir_, name_;
 };
+
+// A threshold as the program reads it (a decimal string, exactly) or a float at its exact
+// binary value; `name` names the argument in the error.
+mpq_class exact_threshold(const pybind11::object& x, const char* name);
 
 bool is_path(const pybind11::object& x);
 std::string path_text(const pybind11::object& x);
