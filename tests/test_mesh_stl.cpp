@@ -18,7 +18,7 @@
 #include "geometry3/exact_predicates3.h"
 #include "io/complex_text.h"
 #include "io/mesh_io.h"
-#include "io/mesh_weld.h"
+#include "io/mesh_input.h"
 #include "support.h"
 
 using namespace grassfire;

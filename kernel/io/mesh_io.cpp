@@ -9,7 +9,7 @@
 #include <regex>
 
 #include "io/complex_text.h"
-#include "io/mesh_weld.h"
+#include "io/mesh_input.h"
 #include "support/quoted.h"
 
 namespace grassfire {

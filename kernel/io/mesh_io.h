@@ -31,7 +31,7 @@
 // A face with k > 3 vertices becomes the fan of k - 2 triangles from its first vertex
 // (append_polygon_face), the triangulation of a convex face; non-convex faces are the
 // caller's risk (the mesh builders check closedness, not face convexity).
-// Then every reader repairs what is safe to repair, and counts it (io/mesh_weld.h): exactly
+// Then every reader repairs what is safe to repair, and counts it (geometry3/mesh_weld.h, through io/mesh_input.h): exactly
 // repeated vertices are welded, faces left with fewer than 3 distinct vertices and
 // repeated faces are dropped, unused vertices are dropped.
 // Coordinates (io/decimal_text.h): text formats keep the decimals as written, exactly

@@ -10,7 +10,7 @@
 
 #include "io/complex_text.h"
 #include "io/mesh_io.h"
-#include "io/mesh_weld.h"
+#include "io/mesh_input.h"
 #include "support/quoted.h"
 
 namespace grassfire {

@@ -8,7 +8,7 @@
 #include "io/complex_json.h"
 #include "io/complex_ma.h"
 #include "io/mesh_io.h"
-#include "io/mesh_weld.h"
+#include "io/mesh_input.h"
 #include "support/progress.h"
 
 namespace grassfire {

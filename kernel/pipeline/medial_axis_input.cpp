@@ -10,7 +10,7 @@
 #include "complex3/simplicial_homology.h"
 #include "medial3/balls/union_of_balls_axis.h"
 #include "io/mesh_io.h"
-#include "io/mesh_weld.h"
+#include "io/mesh_input.h"
 
 namespace grassfire {
 

@@ -9,7 +9,7 @@
 //    numbers are the solid's (mesh_axis.h) -- an approximation with exact vertices;
 // and a JSON report of what was computed (counts, exactness and error bounds, timings,
 // Betti numbers of the shape and of the axis where known; for meshes "mesh_input": what the
-// reader welded and dropped, io/mesh_weld.h, "repairs" its one-line summary; with
+// reader welded and dropped, geometry3/mesh_weld.h, "repairs" its one-line summary; with
 // repair.enabled, "repair": what mesh_repair.h found and did, "summary" its one line, and
 // the axis is that of the repaired solid). Kind Auto
 // picks by extension; for a mesh it takes the convex builder when the mesh is convex, else the mesh axis builder.

@@ -13,7 +13,7 @@
 #include "medial3/mesh/mesh_solid.h"
 #include "support/number_text.h"
 #include "support/cpu_clock.h"
-#include "io/mesh_weld.h"
+#include "geometry3/mesh_weld.h"
 
 namespace grassfire {
 
@@ -103,7 +103,7 @@ std::string closed_manifold_refusal(const TriangleMesh3& mesh) {
   return "";
 }
 
-// Step 1: the readers' weld (io/mesh_weld.h) on a copy with its own numbering kept.
+// Step 1: the readers' weld (geometry3/mesh_weld.h) on a copy with its own numbering kept.
 TriangleMesh3 welded(const TriangleMesh3& mesh) {
   TriangleMesh3 w = mesh;
   if (w.triangle_origin.empty()) {

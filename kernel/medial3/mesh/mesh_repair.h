@@ -14,7 +14,7 @@
 //  - repair_mesh, three steps, the first whose result passes require_closed_manifold
 //    (the same exact check every mesh meets, so no step is trusted blindly):
 //     1. "weld": vertices at the same point become one, degenerate and repeated triangles
-//        are dropped (io/mesh_weld.h, what every reader does; needed for meshes made in
+//        are dropped (geometry3/mesh_weld.h, what every reader does; needed for meshes made in
 //        code, e.g. a shell listed twice). No point moves: Hausdorff distance 0.
 //     2. "fill": only when the defects are border edges and orientation (no crossing, no
 //        non-manifold element): CGAL's orient_polygon_soup makes the orientation
