@@ -2,14 +2,19 @@
 // of the medial axis, on synthetic, generated and real complexes.
 //
 // Independent reference: the Betti numbers of the axis by GF(2) simplicial homology of its
-// triangles, segments and vertices (complex3/simplicial_homology.h), against the
-// curve graph's, counted afresh from its edge list (union-find: b0, and b1 = E - V + b0).
-// Tolerance: exact (integers). Mutant "curves-drop-edge": the engine's curve graph loses
+// triangles, segments and vertices (complex3/simplicial_homology.h), against the curve
+// graph's, recounted from its edge list by another construction than the engine's
+// (recount_graph_betti: breadth-first search and the GF(2) cycle space, where the engine
+// uses a union-find and Euler's formula); the engine's stored count must equal the recount.
+// Tolerance: exact (integers). Mutants: "curves-drop-edge": the engine's curve graph loses
 // one of its joining edges (a "join", else any edge) before the comparison; removing an
 // edge of a graph always changes b0 or b1, so every row with an edge must fail under it.
+// "curves-betti-euler-only": the engine's count of b1 leaves out b0 (b1 = E - V), off by b0
+// >= 1 on every instance.
 #include <algorithm>
 #include <cmath>
 #include <dirent.h>
+#include <queue>
 #include <random>
 
 #include "burn3/discrete/discrete_burning_field.h"
@@ -20,7 +25,7 @@
 #include "complex3/synthetic_complexes.h"
 #include "io/complex_ma.h"
 #include "io/mesh_io.h"
-#include "support/union_find.h"
+#include "complex3/simplicial_homology.h"
 
 namespace grassfire::checks {
 namespace {
@@ -30,12 +35,36 @@ struct Named {
   RawComplex raw;
 };
 
-BettiNumbers graph_betti(std::size_t nodes, const std::vector<CurveEdge>& edges) {
-  UnionFind uf(nodes);
-  for (const CurveEdge& e : edges) uf.unite(e.u, e.v);
+// The curve graph's Betti numbers by another construction than the engine's (which unites
+// the ends of every edge in a union-find, counts the roots as b0 and takes b1 = E - V + b0
+// by the Euler characteristic): b0 by breadth-first search over adjacency lists, b1 as the
+// dimension of the cycle space, the columns of the GF(2) boundary matrix d1 (an edge's
+// column holds its two ends; a loop's is zero) that the pivot reduction of
+// complex3/simplicial_homology.h takes to zero. Neither Euler's formula nor a union-find.
+BettiNumbers recount_graph_betti(std::size_t nodes, const std::vector<CurveEdge>& edges) {
+  std::vector<std::vector<std::uint32_t>> adjacent(nodes), columns;
+  for (const CurveEdge& e : edges) {
+    adjacent[e.u].push_back(e.v);
+    adjacent[e.v].push_back(e.u);
+    if (e.u == e.v) columns.emplace_back();
+    else columns.push_back({std::min(e.u, e.v), std::max(e.u, e.v)});
+  }
   BettiNumbers b;
-  for (std::uint32_t v = 0; v < nodes; ++v) b.b0 += uf.find(v) == v ? 1 : 0;
-  b.b1 = static_cast<long>(edges.size()) - static_cast<long>(nodes) + b.b0;
+  std::vector<bool> seen(nodes, false);
+  for (std::uint32_t start = 0; start < nodes; ++start) {
+    if (seen[start]) continue;
+    ++b.b0;
+    std::queue<std::uint32_t> todo;
+    todo.push(start);
+    seen[start] = true;
+    while (!todo.empty()) {
+      const std::uint32_t v = todo.front();
+      todo.pop();
+      for (const std::uint32_t w : adjacent[v])
+        if (!seen[w]) seen[w] = true, todo.push(w);
+    }
+  }
+  b.b1 = static_cast<long>(gf2_zero_columns(std::move(columns)).size());
   return b;
 }
 
@@ -96,25 +125,33 @@ std::vector<CheckRow> check_curves3d(const CheckContext& ctx) {
       const DiscreteBurning d = burn_discrete(mc, {h});
       const DiscreteBurningField field(mc, d);
       MedialCurves c = medial_curves(field);
+      if (ctx.mutated("curves-betti-euler-only"))  // the engine's count without its components term
+        c.curve_betti.b1 = static_cast<long>(c.edges.size()) - static_cast<long>(c.nodes.size());
       if (ctx.mutated("curves-drop-edge") && !c.edges.empty()) {
         const auto join = std::find_if(c.edges.begin(), c.edges.end(), [](const CurveEdge& e) { return !e.raw_end; });
         c.edges.erase(join != c.edges.end() ? join : c.edges.begin());
       }
-      const BettiNumbers axis = complex_betti(mc), curves = graph_betti(c.nodes.size(), c.edges);
+      const BettiNumbers axis = complex_betti(mc), curves = recount_graph_betti(c.nodes.size(), c.edges);
       ++t.instances;
       t.points += c.nodes.size();
       punctures += c.stats.punctures;
       walls += c.stats.walls_opened;
-      if (c.stats.residual_triangles != 0 || axis.b0 != curves.b0 || axis.b1 != curves.b1) {
+      // The proposition on the recount, and the engine's own count against the recount.
+      const BettiNumbers& stored = c.curve_betti;
+      if (c.stats.residual_triangles != 0 || axis.b0 != curves.b0 || axis.b1 != curves.b1 || stored.b0 != curves.b0 ||
+          stored.b1 != curves.b1) {
         ++t.violations;
-        t.worst = std::max(t.worst, static_cast<double>(std::abs(axis.b0 - curves.b0) + std::abs(axis.b1 - curves.b1)));
+        t.worst = std::max({t.worst, static_cast<double>(std::abs(axis.b0 - curves.b0) + std::abs(axis.b1 - curves.b1)),
+                            static_cast<double>(std::abs(stored.b0 - curves.b0) + std::abs(stored.b1 - curves.b1))});
         failed += " " + in.name;
       }
     }
     CheckRow r;
     r.proposition = "5.1.2: medial curves have the axis' b0 and b1";
     r.corpus = corpus;
-    r.reference = "GF(2) simplicial homology of the axis; graph Betti numbers recounted from the curve edges";
+    r.reference =
+        "GF(2) simplicial homology of the axis; the curve graph's (and the engine's stored) Betti numbers against a "
+        "recount by breadth-first search (b0) and the GF(2) cycle space of the edges (b1)";
     r.tolerance = "exact (integers)";
     r.instances = t.instances;
     r.points = t.points;
@@ -129,7 +166,8 @@ std::vector<CheckRow> check_curves3d(const CheckContext& ctx) {
 }
 
 GF_REGISTER_CHECK("curves3d", check_curves3d,
-                  (MutantList{{"curves-drop-edge", "one joining edge removed from the engine's curve graph"}}));
+                  (MutantList{{"curves-drop-edge", "one joining edge removed from the engine's curve graph"},
+                              {"curves-betti-euler-only", "the engine's graph b1 counted as E - V (its b0 term left out)"}}));
 
 }  // namespace
 }  // namespace grassfire::checks
