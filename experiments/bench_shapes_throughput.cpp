@@ -48,6 +48,7 @@
 #include "io/load_shape.h"
 #include "shard.h"
 #include "cli.h"
+#include "run_options.h"
 
 using namespace grassfire;
 
@@ -195,23 +196,11 @@ constexpr const char* kUsage =
     "usage: bench_shapes_throughput FOLDER [OUT] [--shard I/N] [--progress|--quiet]\nthe whole 2D pipeline over every shape of a folder: the exact polygon axis with EDF, EMA and the measures, and the sampled pipeline at 2000 samples.\n(CSV columns and details: the header of experiments/bench_shapes_throughput.cpp)\n";
 
 int run(int argc, char** argv) {
-  const experiments::Shard shard = experiments::take_shard(argc, argv);
-  take_verbosity_flags(argc, argv);
-  if (argc < 2) {
-    std::fputs(kUsage, stderr);
-    return 2;
-  }
-  const std::string out = argc > 2 ? argv[2] : ".";
-  std::vector<std::filesystem::path> files;
-  std::error_code ec;
-  for (const auto& e : std::filesystem::directory_iterator(argv[1], ec))
-    if (e.path().extension() == ".json" || e.path().extension() == ".wkt") files.push_back(e.path());
-  if (ec) {
-    std::fprintf(stderr, "%s: %s\n", argv[1], ec.message().c_str());
-    return 1;
-  }
-  std::sort(files.begin(), files.end());
-  files = experiments::shard_of(files, shard);
+  const experiments::RunOptions cmd = experiments::parse_run_options(argc, argv, {{}, {}, 1, 2});
+  const experiments::Shard shard = cmd.shard;
+  const std::string out = cmd.positional_or(1, ".");
+  const std::vector<std::filesystem::path> files =
+      experiments::shard_of(experiments::folder_files(cmd.positional[0], {".json", ".wkt"}), shard);
   std::vector<Row> rows;
   Progress progress("bench_shapes_throughput " + shard.label(), files.size());
   for (const auto& f : files) {

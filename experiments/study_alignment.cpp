@@ -32,6 +32,7 @@
 #include "shapes/validate_shape.h"
 #include "shard.h"
 #include "cli.h"
+#include "run_options.h"
 
 using namespace grassfire;
 
@@ -77,22 +78,9 @@ constexpr const char* kUsage =
     "usage: study_alignment SHAPES_DIR [OUT] [--class NAME] [--shard I/N] [--progress|--quiet]\ntranslational alignment of the human figures of the `children` class by centroid, bounding-box centre, EMA and PR maximum (3.5.2, Fig. 3.8).\n(CSV columns and details: the header of experiments/study_alignment.cpp)\n";
 
 int run(int argc, char** argv) {
-  const experiments::Shard shard = experiments::take_shard(argc, argv);
-  take_verbosity_flags(argc, argv);
-  std::string dir, out = ".", cls = "children";
-  for (int i = 1; i < argc; ++i) {
-    const std::string a = argv[i];
-    if (a == "--class" && i + 1 < argc)
-      cls = argv[++i];
-    else if (dir.empty())
-      dir = a;
-    else
-      out = a;
-  }
-  if (dir.empty()) {
-    std::fputs(kUsage, stderr);
-    return 2;
-  }
+  const experiments::RunOptions cmd = experiments::parse_run_options(argc, argv, {{}, {"--class"}, 1, 2});
+  const experiments::Shard shard = cmd.shard;
+  const std::string dir = cmd.positional[0], out = cmd.positional_or(1, "."), cls = cmd.text("--class", "children");
   std::vector<Entry> shapes;
   std::vector<std::string> skipped;  // files the loader rejects (e.g. a self-touching outline)
   try {

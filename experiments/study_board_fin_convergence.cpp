@@ -25,6 +25,7 @@
 #include "render/render3d.h"
 #include "shard.h"
 #include "cli.h"
+#include "run_options.h"
 
 using namespace grassfire;
 
@@ -130,15 +131,10 @@ constexpr const char* kUsage =
     "usage: study_board_fin_convergence [OUT] [--quick] [--shard I/N] [--progress|--quiet]\nthe discrete baseline against the closed form on the board and fin (4.1.2, 4.2.1; docs/design.md 5, reference case 1) as the Steiner spacing h halves.\n(CSV columns and details: the header of experiments/study_board_fin_convergence.cpp)\n";
 
 int run(int argc, char** argv) {
-  const experiments::Shard shard = experiments::take_shard(argc, argv);
-  take_verbosity_flags(argc, argv);
-  std::string out = ".";
-  bool quick = false;
-  for (int i = 1; i < argc; ++i) {
-    const std::string a = argv[i];
-    if (a == "--quick") quick = true;
-    else out = a;
-  }
+  const experiments::RunOptions cmd = experiments::parse_run_options(argc, argv, {{"--quick"}, {}, 0, 1});
+  const experiments::Shard shard = cmd.shard;
+  const std::string out = cmd.positional_or(0, ".");
+  const bool quick = cmd.flag("--quick");
   const MedialComplex mc(board_fin({10, 1}));
   mc.validate();
   const std::uint32_t c = [&] {

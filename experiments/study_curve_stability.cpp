@@ -53,6 +53,7 @@
 #include "plot_svg.h"
 #include "shard.h"
 #include "cli.h"
+#include "run_options.h"
 
 using namespace grassfire;
 
@@ -105,28 +106,13 @@ constexpr const char* kUsage =
     "usage: study_curve_stability MESH_DIR [OUT] [--quick] [--seeds K] [--max-samples N] [--shard I/N] [--progress|--quiet]\nhow far the medial curves move when a mesh's surface is perturbed, and whether their topology is kept (5.1.3 for the lower-dimensional forms).\n(CSV columns and details: the header of experiments/study_curve_stability.cpp)\n";
 
 int run(int argc, char** argv) {
-  const experiments::Shard shard = experiments::take_shard(argc, argv);
-  take_verbosity_flags(argc, argv);
-  if (argc < 2) {
-    std::fputs(kUsage, stderr);
-    return 2;
-  }
-  const std::string dir = argv[1];
-  std::string out = "experiments/results";
-  bool quick = false;
-  int seeds_wanted = 3;
-  std::size_t max_samples = 200000;
-  for (int i = 2; i < argc; ++i) {
-    const std::string a = argv[i];
-    if (a == "--quick")
-      quick = true;
-    else if (a == "--seeds" && i + 1 < argc)
-      seeds_wanted = std::atoi(argv[++i]);
-    else if (a == "--max-samples" && i + 1 < argc)
-      max_samples = std::stoul(argv[++i]);
-    else
-      out = a;
-  }
+  const experiments::RunOptions cmd =
+      experiments::parse_run_options(argc, argv, {{"--quick"}, {"--seeds", "--max-samples"}, 1, 2});
+  const experiments::Shard shard = cmd.shard;
+  const std::string dir = cmd.positional[0], out = cmd.positional_or(1, "experiments/results");
+  const bool quick = cmd.flag("--quick");
+  const int seeds_wanted = static_cast<int>(cmd.count("--seeds", 3));
+  const std::size_t max_samples = cmd.count("--max-samples", 200000);
   std::filesystem::create_directories(out);
   const std::vector<std::string> meshes = experiments::shard_of(
       quick ? std::vector<std::string>{"tripod", "pipe"} : std::vector<std::string>{"tripod", "cross", "pipe", "joint"}, shard);

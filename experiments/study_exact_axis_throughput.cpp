@@ -27,6 +27,7 @@
 #include "io/load_shape.h"
 #include "shard.h"
 #include "cli.h"
+#include "run_options.h"
 
 using namespace grassfire;
 
@@ -77,23 +78,11 @@ constexpr const char* kUsage =
     "usage: study_exact_axis_throughput FOLDER [--validate] [--shard I/N] [--progress|--quiet]\nthe exact polygon axis plus the extended grassfire on every shape of a folder (e.g. the 979 shapes of the 2D Shape Structure dataset).\n(CSV columns and details: the header of experiments/study_exact_axis_throughput.cpp)\n";
 
 int run(int argc, char** argv) {
-  const experiments::Shard shard = experiments::take_shard(argc, argv);
-  take_verbosity_flags(argc, argv);
-  if (argc < 2) {
-    std::fputs(kUsage, stderr);
-    return 2;
-  }
-  const bool validate = argc > 2 && std::string(argv[2]) == "--validate";
-  std::vector<std::filesystem::path> files;
-  std::error_code ec;
-  for (const auto& e : std::filesystem::directory_iterator(argv[1], ec))
-    if (e.path().extension() == ".json" || e.path().extension() == ".wkt") files.push_back(e.path());
-  if (ec) {
-    std::fprintf(stderr, "%s: %s\n", argv[1], ec.message().c_str());
-    return 1;
-  }
-  std::sort(files.begin(), files.end());
-  files = experiments::shard_of(files, shard);
+  const experiments::RunOptions cmd = experiments::parse_run_options(argc, argv, {{"--validate"}, {}, 1, 1});
+  const experiments::Shard shard = cmd.shard;
+  const bool validate = cmd.flag("--validate");
+  const std::vector<std::filesystem::path> files =
+      experiments::shard_of(experiments::folder_files(cmd.positional[0], {".json", ".wkt"}), shard);
   Totals totals;
   std::vector<std::string> rows;
   Progress progress("study_exact_axis_throughput " + shard.label(), files.size());

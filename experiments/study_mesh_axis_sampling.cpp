@@ -53,6 +53,7 @@
 #include "support/progress.h"
 #include "mesh_axis_sampling_plot.h"
 #include "cli.h"
+#include "run_options.h"
 
 using namespace grassfire;
 
@@ -152,24 +153,17 @@ constexpr const char* kUsage =
     "usage: study_mesh_axis_sampling MESH_DIR [OUT] [--quick] [--densities S1,S2,...] [--max-samples N]\nthe mesh axis (medial3/mesh/mesh_axis.h) against the sampling density: how far it is from the true axis, and whether its topology is the solid's (docs/exactness.md).\n(CSV columns and details: the header of experiments/study_mesh_axis_sampling.cpp)\n";
 
 int run(int argc, char** argv) {
-  take_verbosity_flags(argc, argv);
-  if (argc < 2) {
-    std::fputs(kUsage, stderr);
-    return 2;
-  }
-  std::string out = "experiments/results";
+  experiments::RunOptionSpec spec{{"--quick"}, {"--densities", "--max-samples"}, 1, 2};
+  spec.shard = false;
+  const experiments::RunOptions cmd = experiments::parse_run_options(argc, argv, spec);
+  const std::string out = cmd.positional_or(1, "experiments/results");
   std::vector<double> densities{1, 2, 4};
-  std::size_t max_samples = 200000;
-  for (int i = 2; i < argc; ++i) {
-    const std::string a = argv[i];
-    if (a == "--quick") densities = {1, 2};
-    else if (a == "--densities" && i + 1 < argc) densities = parse_densities(argv[++i]);
-    else if (a == "--max-samples" && i + 1 < argc) max_samples = std::stoul(argv[++i]);
-    else out = a;
-  }
-  const std::vector<Input> inputs = read_inputs(argv[1]);
+  if (cmd.flag("--quick")) densities = {1, 2};
+  if (const auto d = cmd.value("--densities")) densities = parse_densities(*d);
+  const std::size_t max_samples = cmd.count("--max-samples", 200000);
+  const std::vector<Input> inputs = read_inputs(cmd.positional[0]);
   if (inputs.empty()) {
-    std::fprintf(stderr, "study_mesh_axis_sampling: no .off mesh in %s\n", argv[1]);
+    std::fprintf(stderr, "study_mesh_axis_sampling: no .off mesh in %s\n", cmd.positional[0].c_str());
     return 2;
   }
   std::filesystem::create_directories(out);

@@ -37,6 +37,7 @@
 #include "shapes/resample.h"
 #include "shard.h"
 #include "cli.h"
+#include "run_options.h"
 #include "support/cpu_clock.h"
 
 using namespace grassfire;
@@ -194,23 +195,10 @@ constexpr const char* kUsage =
     "usage: study_sampling_convergence SHAPES_DIR [OUT] [--quick] [--shard I/N] [--progress|--quiet]\ndoes the EDF on the sampled Voronoi axis converge to the EDF on the exact polygon axis as the boundary sampling densifies (docs/exactness.md)?\n(CSV columns and details: the header of experiments/study_sampling_convergence.cpp)\n";
 
 int run(int argc, char** argv) {
-  const experiments::Shard shard = experiments::take_shard(argc, argv);
-  take_verbosity_flags(argc, argv);
-  std::string dir, out = ".";
-  bool quick = false;
-  for (int i = 1; i < argc; ++i) {
-    const std::string a = argv[i];
-    if (a == "--quick")
-      quick = true;
-    else if (dir.empty())
-      dir = a;
-    else
-      out = a;
-  }
-  if (dir.empty()) {
-    std::fputs(kUsage, stderr);
-    return 2;
-  }
+  const experiments::RunOptions cmd = experiments::parse_run_options(argc, argv, {{"--quick"}, {}, 1, 2});
+  const experiments::Shard shard = cmd.shard;
+  const std::string dir = cmd.positional[0], out = cmd.positional_or(1, ".");
+  const bool quick = cmd.flag("--quick");
   const std::vector<std::size_t> levels =
       quick ? std::vector<std::size_t>{500, 1000, 2000} : std::vector<std::size_t>{500, 1000, 2000, 4000, 8000, 16000};
   std::vector<std::pair<std::string, std::string>> inputs;  // (argument, label)

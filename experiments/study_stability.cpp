@@ -42,6 +42,7 @@
 #include "shapes/validate_shape.h"
 #include "shard.h"
 #include "cli.h"
+#include "run_options.h"
 
 using namespace grassfire;
 
@@ -201,23 +202,10 @@ constexpr const char* kUsage =
     "usage: study_stability SHAPES_DIR [OUT] [--quick] [--shard I/N] [--progress|--quiet]\nhow far the EMA, the EDF and the PR maximum move when the boundary is perturbed (3.4, Fig. 3.5; 5.1.3, Fig. 5.3).\n(CSV columns and details: the header of experiments/study_stability.cpp)\n";
 
 int run(int argc, char** argv) {
-  const experiments::Shard shard = experiments::take_shard(argc, argv);
-  take_verbosity_flags(argc, argv);
-  std::string dir, out = ".";
-  bool quick = false;
-  for (int i = 1; i < argc; ++i) {
-    const std::string a = argv[i];
-    if (a == "--quick")
-      quick = true;
-    else if (dir.empty())
-      dir = a;
-    else
-      out = a;
-  }
-  if (dir.empty()) {
-    std::fputs(kUsage, stderr);
-    return 2;
-  }
+  const experiments::RunOptions cmd = experiments::parse_run_options(argc, argv, {{"--quick"}, {}, 1, 2});
+  const experiments::Shard shard = cmd.shard;
+  const std::string dir = cmd.positional[0], out = cmd.positional_or(1, ".");
+  const bool quick = cmd.flag("--quick");
   std::vector<std::string> inputs = {"square"};  // "square": the unit square, else a shape file
   std::vector<std::string> args = shape_args(dir);
   if (quick) args.resize(std::min<std::size_t>(args.size(), 3));
