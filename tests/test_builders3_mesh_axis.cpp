@@ -441,3 +441,27 @@ TEST_CASE("mesh axis skips a thickness round that would add few samples", "[mesh
   CHECK(skipped.axis_betti == all.axis_betti);
   CHECK(skipped.axis_betti == skipped.solid.betti);
 }
+
+TEST_CASE("mesh axis sample limit: a round over it stops with a message naming --max-samples", "[mesh_axis]") {
+  // A thin torus whose first sampling (mean edge length) misses its handle: the axis needs a
+  // second, finer round. A limit below that round's samples refuses with the rounds reached
+  // and the option; a limit at them builds the same axis as the default.
+  TriangleMesh3 torus = torus_mesh(2, 0.3, 24, 6);
+  torus.source = "thin-torus";
+  const MeshAxis a = mesh_medial_axis(torus);
+  CHECK(a.axis_betti == BettiNumbers{1, 1, 0});
+  REQUIRE(a.rounds.size() >= 2);
+  REQUIRE(a.rounds.front().betti != a.solid.betti);
+  MeshAxisOptions tight;
+  tight.max_samples = a.rounds.front().samples;
+  CHECK_THROWS_AS(mesh_medial_axis(torus, tight), MeshAxisTopologyError);
+  CHECK_THROWS_WITH(mesh_medial_axis(torus, tight),
+                    Catch::Contains("thin-torus") && Catch::Contains("over the limit of " + std::to_string(tight.max_samples)) &&
+                        Catch::Contains("--max-samples") && Catch::Contains("Betti " + betti_text(a.rounds.front().betti)) &&
+                        Catch::Contains("1:1:0") && Catch::Contains("no axis"));
+  MeshAxisOptions enough;
+  enough.max_samples = a.rounds[a.axis_round].samples;
+  const MeshAxis b = mesh_medial_axis(torus, enough);
+  CHECK(b.axis_betti == a.axis_betti);
+  CHECK(b.rounds[b.axis_round].samples == a.rounds[a.axis_round].samples);
+}

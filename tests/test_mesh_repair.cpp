@@ -219,3 +219,22 @@ TEST_CASE("medial3d --repair: refusal names the file and the option, and the rep
   CHECK(burn.code == 0);
   CHECK(burn.output.find("repaired by alpha_wrap") != std::string::npos);
 }
+
+TEST_CASE("medial3d --max-samples: over the limit, the refusal names the option; within it, the axis", "[mesh_axis][cli]") {
+  using testing::run_cli;
+  const std::string path = testing::temp_path("thin_torus.off");
+  write_off(torus_mesh(2, 0.3, 24, 6), path);
+  const auto refused = run_cli("medial3d " + path + " --max-samples 1000");
+  INFO(refused.output);
+  CHECK(refused.code == 1);
+  CHECK(refused.output.find(path) != std::string::npos);
+  CHECK(refused.output.find("over the limit of 1000 (medial3d --max-samples)") != std::string::npos);
+  CHECK(refused.output.find("no axis") != std::string::npos);
+  const auto ok = run_cli("medial3d " + path);
+  INFO(ok.output);
+  CHECK(ok.code == 0);
+  CHECK(ok.output.find("Betti [1,1,0]") != std::string::npos);
+  const auto bad = run_cli("medial3d " + path + " --max-samples 10");
+  CHECK(bad.code != 0);
+  CHECK(bad.output.find("--max-samples") != std::string::npos);
+}

@@ -26,6 +26,9 @@ int run_medial3d(int argc, char** argv) {
       .option("angle", "DEG", "mesh kind: Voronoi faces narrower than DEG degrees seen from the axis are pruned "
                               "while the topology allows (0: no angle test)", "0")
       .option("refinements", "N", "mesh kind: at most N halvings of the spacing", "5")
+      .option("max-samples", "N", "mesh kind: at most N surface samples in a round (memory and time grow about linearly "
+                                  "with N: ~2 GB per million samples); a round needing more stops the refinement",
+              "2000000")
       .option("ma", "OUT", "write the axis as .ma (Q-MAT format: v x y z r, e i j, f i j k)")
       .option("complex", "OUT", "write the axis in the grassfire-complex JSON format (exact; burn3d reads it)")
       .option("ply", "OUT", "write the axis with per-vertex R as PLY")
@@ -41,6 +44,7 @@ int run_medial3d(int argc, char** argv) {
   mesh.samples_per_edge = opt.get_double("samples");
   mesh.angle_degrees = opt.get_double("angle");
   mesh.max_refinements = static_cast<int>(opt.get_long("refinements", 0, 12));
+  mesh.max_samples = static_cast<std::size_t>(opt.get_long("max-samples", 1000, 1000000000L));
   if (!(mesh.samples_per_edge > 0 && mesh.samples_per_edge <= 1024)) throw std::invalid_argument("--samples must be in (0, 1024]");
   if (!(mesh.angle_degrees >= 0 && mesh.angle_degrees < 180)) throw std::invalid_argument("--angle must be in [0, 180)");
   Progress progress("medial3d " + input, 3);

@@ -433,8 +433,13 @@ MeshAxis mesh_medial_axis(const TriangleMesh3& mesh, const MeshAxisOptions& opti
     r.samples = samples.lattice.size();
     if (r.samples > options.max_samples) {
       if (accepted) break;  // thickness refinement only: the accepted axis stands
-      throw MeshAxisTopologyError(mesh.source + ": " + std::to_string(r.samples) + " samples would exceed the limit of " +
-                                  std::to_string(options.max_samples));
+      std::string history;
+      for (const MeshAxisRound& done : out.rounds)
+        history += (history.empty() ? "" : ", ") + std::to_string(done.samples) + " samples (Betti " + betti_text(done.betti) + ")";
+      throw MeshAxisTopologyError(mesh.source + ": the next round needs " + std::to_string(r.samples) +
+                                  " samples, over the limit of " + std::to_string(options.max_samples) +
+                                  " (medial3d --max-samples); the rounds so far: " + history + "; the solid's Betti numbers are " +
+                                  betti_text(out.solid.betti) + "; no axis is returned");
     }
     r.sample_seconds = cpu_seconds_since(t);
     // A thickness round that adds under min_thickness_growth samples refines a handful of triangles (at

@@ -76,7 +76,11 @@ struct MeshAxisOptions {
   double feature_ratio = 0.5;    // refinement: spacing <= ratio * (pole distance) where refined;
                                  // thickness rule: spacing <= ratio * 2 (inner pole distance) / lambda,
                                  // halved where the deepest pole lost its sheets
-  std::size_t max_samples = 2000000;
+  std::size_t max_samples = 2000000;  // per round (memory: about 2 GB per million samples); a round
+                                      // needing more ends the thickness rounds, or, before the
+                                      // solid's Betti numbers are reached, MeshAxisTopologyError
+                                      // with every round's samples and Betti numbers and the
+                                      // option's name (medial3d --max-samples)
   double min_thickness_growth = 0.10;  // a thickness round adding fewer samples (a fraction) is not run
 };
 
