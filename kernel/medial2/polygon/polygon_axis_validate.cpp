@@ -3,7 +3,6 @@
 
 #include <algorithm>
 #include <stdexcept>
-#include <type_traits>
 
 #include "medial2/polygon/polygon_axis_geometry.h"
 #include "number/sqrt_field.h"
@@ -57,6 +56,11 @@ T projection(const CircleValue<T>& c, const Point2& a, const Point2& b) {  // (X
   return (c.x - T(a.x)) * (T(b.x) - T(a.x)) + (c.y - T(a.y)) * (T(b.y) - T(a.y));
 }
 template <class T>
+T beyond_end(const CircleValue<T>& c, const Point2& a, const Point2& b) {  // (X - A).(B - A) - |B-A|^2
+  const T ux = T(b.x) - T(a.x), uy = T(b.y) - T(a.y);
+  return projection(c, a, b) - (ux * ux + uy * uy);
+}
+template <class T>
 T line_residual(const CircleValue<T>& c, const Point2& a, const Point2& b) {  // cross^2 - R^2 |B-A|^2
   const T ux = T(b.x) - T(a.x), uy = T(b.y) - T(a.y);
   const T cr = ux * (c.y - T(a.y)) - uy * (c.x - T(a.x));
@@ -95,11 +99,7 @@ void check_node(const MedialGraph& g, const PolygonAxisGeometry& geo, std::uint3
       closer = closer || signs.sign([&](const auto& c) { return point_residual(c, p); }) < 0;
     }
     if (!has(s.vertex_count() + i) && signs.sign([&](const auto& c) { return projection(c, a, b); }) > 0) {
-      const int beyond = signs.sign([&](const auto& c) {
-        using T = std::decay_t<decltype(c.x)>;
-        const T ux = T(b.x) - T(a.x), uy = T(b.y) - T(a.y);
-        return projection(c, a, b) - (ux * ux + uy * uy);
-      });
+      const int beyond = signs.sign([&](const auto& c) { return beyond_end(c, a, b); });
       if (beyond < 0) closer = closer || signs.sign([&](const auto& c) { return line_residual(c, a, b); }) < 0;
     }
     if (closer)
@@ -155,16 +155,22 @@ void check_edge(const MedialGraph& g, const PolygonAxisGeometry& geo, std::uint3
   if (equal == 1 || equal == -1)
     out.failures.push_back("edge " + std::to_string(e) + ": mid point not equidistant to its two sites");
   auto defining = [&](std::uint32_t site) { return site == d.site_a || site == d.site_b; };
+  // Signs at the mid point: first on the double interval enclosing the Arb ball (it
+  // contains the ball, so a sign it certifies holds at the mid point), then in Arb.
+  const CircleValue<Interval> box{m.x.to_interval(), m.y.to_interval(), m.r.to_interval()};
+  auto sign_at_mid = [&](auto&& expr) {
+    const int quick = certified_sign(expr(box));
+    return quick != kUndecided ? quick : expr(m).sign();
+  };
   for (std::uint32_t i = 0; i < s.vertex_count(); ++i) {
     ++out.boundary_tests;
     const Point2 a = s.vertex[i], b = s.vertex[s.next[i]];
     int worst = 1;
     for (std::uint32_t end : {i, s.next[i]})
-      if (!defining(end)) worst = std::min(worst, point_residual(m, s.vertex[end]).sign());
-    if (!defining(s.vertex_count() + i) && projection(m, a, b).sign() == 1) {
-      const Ball ux = Ball(b.x) - Ball(a.x), uy = Ball(b.y) - Ball(a.y);
-      if ((projection(m, a, b) - (ux * ux + uy * uy)).sign() == -1) worst = std::min(worst, line_residual(m, a, b).sign());
-    }
+      if (!defining(end)) worst = std::min(worst, sign_at_mid([&](const auto& c) { return point_residual(c, s.vertex[end]); }));
+    if (!defining(s.vertex_count() + i) && sign_at_mid([&](const auto& c) { return projection(c, a, b); }) == 1 &&
+        sign_at_mid([&](const auto& c) { return beyond_end(c, a, b); }) == -1)
+      worst = std::min(worst, sign_at_mid([&](const auto& c) { return line_residual(c, a, b); }));
     if (worst == -1 || worst == 0)
       out.failures.push_back("edge " + std::to_string(e) + ": boundary segment " + std::to_string(i) +
                              " is as close as the sites at the mid point");
