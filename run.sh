@@ -10,7 +10,7 @@ cd "$(dirname "$0")"
 
 PACKAGES=(cmake make g++ libcgal-dev libgmp-dev libmpfr-dev libboost-graph-dev catch2
           nlohmann-json3-dev librsvg2-bin libflint-arb-dev libpng-dev libgif-dev
-          pybind11-dev python3-dev python3-numpy)
+          pybind11-dev python3-dev python3-numpy python3-venv python3-setuptools python3-wheel)
 JOBS=${JOBS:-2}
 SANITIZE=${SANITIZE:-0}
 if [ "$SANITIZE" = 1 ]; then BUILD_DIR=${BUILD_DIR:-build-sanitize}; else BUILD_DIR=${BUILD_DIR:-build}; fi

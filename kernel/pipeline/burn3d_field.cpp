@@ -10,6 +10,7 @@
 #include "burn3/exact/exact_burning_field.h"
 #include "pipeline/burn3d.h"
 #include "pipeline/complex_input.h"
+#include "support/progress.h"
 
 namespace grassfire {
 namespace {
@@ -38,6 +39,10 @@ FieldRun load_burning_field(const FieldSetup& setup) {
   if (setup.singular_walls && setup.method != "exact") throw std::invalid_argument("--singular-walls needs --method exact");
   if (setup.max_points < 1 || setup.max_points > 2'000'000'000ULL)
     throw std::invalid_argument("--max-points must be in [1, 2000000000]");
+  // The stages on stderr as burn3d shows them (support/progress.h), for every command and
+  // Python function that burns through here.
+  Progress progress(setup.command + " " + setup.input, 0);
+  progress.stage("loading the complex");
   FieldRun in;
   in.complex = std::make_unique<MedialComplex>(load_complex(setup.input, setup.mesh_is_complex, setup.command, setup.repair));
   in.complex->validate();
@@ -45,12 +50,16 @@ FieldRun load_burning_field(const FieldSetup& setup) {
   in.spacing = setup.spacing ? *setup.spacing : default_burn_spacing(*in.complex);
   if (!(in.spacing > 0) || !std::isfinite(in.spacing)) throw std::invalid_argument("--spacing must be a positive number");
   if (setup.method == "exact") {
+    progress.stage("exact propagation");
     load_exact_field(in, setup);
     return in;
   }
   DiscreteBurningOptions o;
   o.spacing = in.spacing;
   o.max_points = setup.max_points;
+  o.progress = [&](std::uint64_t burned, std::uint64_t total) {
+    progress.fraction("burning", static_cast<double>(burned) / static_cast<double>(total));
+  };
   in.burning = std::make_unique<DiscreteBurning>(burn_discrete(*in.complex, o));
   in.field = std::make_unique<DiscreteBurningField>(*in.complex, *in.burning);
   return in;

@@ -11,6 +11,8 @@
 // spacing of the edge points at which medial curves are traced. The program's commands and
 // the Python module call this, so both give the same field. A new method is a new branch
 // here that returns another BurningField.
+// Progress: the stages (loading, burning with its fraction, exact propagation) on stderr as
+// the verbosity says (support/progress.h), named "<command> <input>".
 // Contract: errors are exceptions naming the input and the problem (std::invalid_argument
 // for a bad method, spacing or point budget); nothing is returned then.
 // Complexity: the builder's and the method's.

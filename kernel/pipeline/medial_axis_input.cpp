@@ -145,10 +145,17 @@ MedialAxisBuild build_medial_axis(const std::string& path, MedialInputKind kind,
   return out;
 }
 
-MedialAxisBuild build_medial_axis(const std::string& path, MedialInputKind kind, int samples) {
+MeshAxisOptions medial3d_mesh_options(double samples, double angle_degrees, long refinements) {
+  if (!(samples > 0 && samples <= 1024)) throw std::invalid_argument("--samples must be in (0, 1024]");
+  if (!(angle_degrees >= 0 && angle_degrees < 180)) throw std::invalid_argument("--angle must be in [0, 180)");
+  if (refinements < 0 || refinements > 12)
+    throw std::invalid_argument("option --refinements must be an integer in [0, 12], got '" + std::to_string(refinements) +
+                                "'");
   MeshAxisOptions o;
   o.samples_per_edge = samples;
-  return build_medial_axis(path, kind, o);
+  o.angle_degrees = angle_degrees;
+  o.max_refinements = static_cast<int>(refinements);
+  return o;
 }
 
 }  // namespace grassfire

@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "io/curves_export.h"
+#include "support/progress.h"
 
 namespace grassfire {
 namespace {
@@ -117,6 +118,8 @@ Prune3dRun prune3d(const Prune3dSetup& setup) {
   const MedialComplex& mc = *run.field.complex;
   double max_r = 0;
   for (const ComplexVertex& v : mc.vertices()) max_r = std::max(max_r, v.radius);
+  Progress progress("prune3d " + setup.field.input, 0);
+  progress.stage("pruning");
   run.thresholds.tubularity = setup.tubularity;
   if (setup.erosion) run.thresholds.erosion = setup.relative ? *setup.erosion * mpq_class(max_r) : *setup.erosion;
   run.pruned = prune_axis3(mc, values, run.thresholds);

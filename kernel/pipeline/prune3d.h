@@ -22,6 +22,7 @@
 //                      "triangle"), "cell"}, "triangles": [[i, j, k]], "segments": [[i, j]]}
 // with null for BT and ET where nothing burns. Vertex coordinates are the nearest doubles
 // of the exact points (the --complex output has them exactly).
+// Progress: the field's stages (pipeline/burn3d_field.h), then "pruning" (support/progress.h).
 // Contract: errors are exceptions naming the input and the problem (std::invalid_argument
 // for bad thresholds, method or spacing); nothing is returned then.
 // Complexity: the field's, then that of prune_axis3.

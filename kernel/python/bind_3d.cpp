@@ -22,6 +22,7 @@
 #include "pipeline/burn3d.h"
 #include "python_inputs.h"
 #include "python_values.h"
+#include "support/progress.h"
 
 namespace py = pybind11;
 
@@ -29,29 +30,43 @@ namespace grassfire::python {
 
 namespace {
 
-py::dict medial3d(const py::object& input, const std::string& kind, int samples, const std::string& name) {
-  if (samples < 1 || samples > 64) throw std::invalid_argument("samples must be in [1, 64], got " + std::to_string(samples));
+py::dict medial3d(const py::object& input, const std::string& kind, double samples, double angle, long refinements,
+                  bool repair, std::optional<double> repair_alpha, std::optional<double> repair_offset,
+                  const std::string& name) {
+  const MeshAxisOptions mesh = medial3d_mesh_options(samples, angle, refinements);
+  const MeshRepairOptions repair_options = mesh_repair_options(repair, repair_alpha, repair_offset);
   const MedialInputKind k = parse_medial_input_kind(kind);
   const InputFile file(input, name);
+  const std::string label = is_path(input) ? path_text(input) : name;
   std::optional<MedialAxisBuild> axis;
   std::optional<MedialComplex> mc;
   file.run([&] {
-    axis.emplace(build_medial_axis(file.path(), k, samples));
+    // The program's stages and notes (tools/medial3d.cpp), without its writing stage.
+    Progress progress("medial3d " + label, 2);
+    progress.stage("building the medial axis");
+    axis.emplace(build_medial_axis(file.path(), k, mesh, repair_options));
+    if (const std::string r = axis->report.value("/mesh_input/repairs"_json_pointer, ""); !r.empty())
+      note(file.message("medial3d: " + label + ": " + r));
+    progress.advance();
+    progress.stage("building and validating the complex");
     mc.emplace(axis->complex);
     mc->validate();
+    progress.advance();
   });
   py::dict out;
   add_complex(out, *mc);
-  add_report(out, axis->report);
+  add_report(out, file.named(axis->report));
   if (!is_path(input)) out["input"] = name;
   return out;
 }
 
 py::dict burn3d(const py::object& input, const std::string& method, const py::object& sources, const py::object& at,
                 std::optional<double> spacing, bool mesh_is_complex, bool no_border_ignition,
-                std::uint64_t max_points, bool singular_walls, const std::string& name) {
+                std::uint64_t max_points, bool singular_walls, bool repair, std::optional<double> repair_alpha,
+                std::optional<double> repair_offset, const std::string& name) {
   const InputFile file(input, name);
   Burn3dSetup setup;
+  setup.repair = mesh_repair_options(repair, repair_alpha, repair_offset);
   setup.input = file.path();
   setup.method = method;
   setup.spacing = spacing;
@@ -68,7 +83,7 @@ py::dict burn3d(const py::object& input, const std::string& method, const py::ob
   out["BT"] = float_array(run->outcome.vertex_bt);
   out["ET"] = float_array(run->et);
   if (!run->outcome.vertex_bt_error.empty()) out["BT_error"] = float_array(run->outcome.vertex_bt_error);
-  add_report(out, run->report, "vertex_values");
+  add_report(out, file.named(run->report), "vertex_values");
   if (!is_path(input)) out["input"] = name;
   if (!at.is_none()) {
     std::vector<double> bt, bt_error, snap;
@@ -93,15 +108,23 @@ py::dict burn3d(const py::object& input, const std::string& method, const py::ob
 }  // namespace
 
 void bind_3d(py::module_& m) {
-  m.def("medial3d", &medial3d, py::arg("path"), py::arg("kind") = "auto", py::arg("samples") = 1,
-        py::arg("name") = "array",
+  m.def("medial3d", &medial3d, py::arg("path"), py::arg("kind") = "auto", py::arg("samples") = 1.0,
+        py::arg("angle") = 0.0, py::arg("refinements") = 5, py::arg("repair") = false,
+        py::arg("repair_alpha") = py::none(), py::arg("repair_offset") = py::none(), py::arg("name") = "array",
         R"doc(The medial axis of a convex polyhedron, a union of balls or a closed mesh (grassfire medial3d).
 
 path     a mesh (.off .ply .obj), a half-space list (.hs .halfspaces) or a ball list (.cin .balls);
          or a mesh as a (V, F) pair of arrays or an object with .vertices and .faces
          (trimesh), or balls as an (n, 4) array x, y, z, r (each float exactly)
 kind     "auto", "convex", "balls" or "mesh" (as --kind)
-samples  mesh kind: split every triangle edge into this many parts for the samples
+samples  mesh kind: initial sample spacing = mean edge length / samples, in (0, 1024]
+angle    mesh kind: Voronoi faces narrower than angle degrees seen from the axis are
+         pruned while the topology allows (0: no angle test; as --angle)
+refinements  mesh kind: at most this many halvings of the spacing, in [0, 12]
+repair   a mesh that does not bound a solid (self-intersecting, non-manifold, open,
+         overlapping shells) is repaired first (as --repair): welded, or its holes
+         filled, or else alpha-wrapped with repair_alpha and repair_offset (defaults
+         1/50 and 1/300 of the bounding box diagonal); the result's "repair" says how
 name     names an array input in messages and in the result
 
 Returns {"vertices": (n, 3), "triangles": (m, 3), "segments": (k, 2), "R": (n,)} as numpy
@@ -116,6 +139,7 @@ arrays, and the members of the program's --json report ("axis", "shape", timings
   m.def("burn3d", &burn3d, py::arg("input"), py::arg("method") = "discrete", py::arg("sources") = py::none(),
         py::arg("at") = py::none(), py::arg("spacing") = py::none(), py::arg("mesh_is_complex") = false,
         py::arg("no_border_ignition") = false, py::arg("max_points") = 50'000'000, py::arg("singular_walls") = false,
+        py::arg("repair") = false, py::arg("repair_alpha") = py::none(), py::arg("repair_offset") = py::none(),
         py::arg("name") = "array",
         R"doc(Burning time BT and ET = BT - R on the medial axis of a 3D shape (grassfire burn3d).
 
@@ -136,6 +160,7 @@ no_border_ignition  the border never ignites: only the sources burn
 max_points          refuse to place more graph points than this
 singular_walls      exact: singular edges as walls where fronts stop (an upper bound, not
                     Definition 9)
+repair, repair_alpha, repair_offset: a defective mesh input repaired first, as medial3d's
 name                names an array input in messages and in the result
 
 Returns "vertices", "triangles", "segments", "R", "BT", "ET" as numpy arrays (inf where

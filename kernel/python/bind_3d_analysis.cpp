@@ -29,9 +29,18 @@ namespace grassfire::python {
 
 namespace {
 
+// The repair of a defective mesh input, as the program's --repair, --repair-alpha, --repair-offset.
+struct RepairArgs {
+  bool repair = false;
+  std::optional<double> alpha, offset;
+  MeshRepairOptions options() const { return mesh_repair_options(repair, alpha, offset); }
+};
+
 FieldSetup field_setup(const InputFile& file, const std::string& method, std::optional<double> spacing,
-                       bool mesh_is_complex, bool singular_walls, std::uint64_t max_points, const char* command) {
+                       bool mesh_is_complex, bool singular_walls, std::uint64_t max_points, const RepairArgs& repair,
+                       const char* command) {
   FieldSetup f;
+  f.repair = repair.options();
   f.input = file.path();
   f.method = method;
   f.spacing = spacing;
@@ -46,12 +55,14 @@ void name_input(py::dict& out, const py::object& input, const std::string& name)
   if (!is_path(input)) out["input"] = name;
 }
 
-py::dict complex_of(const py::object& input, bool mesh_is_complex, bool no_border_ignition, const std::string& name) {
+py::dict complex_of(const py::object& input, bool mesh_is_complex, bool no_border_ignition, bool repair,
+                    std::optional<double> repair_alpha, std::optional<double> repair_offset, const std::string& name) {
+  const MeshRepairOptions repair_options = mesh_repair_options(repair, repair_alpha, repair_offset);
   const InputFile file(input, name);
   std::optional<MedialComplex> mc;
   BettiNumbers betti;
   file.run([&] {
-    RawComplex raw = load_complex(file.path(), mesh_is_complex, "complex");
+    RawComplex raw = load_complex(file.path(), mesh_is_complex, "complex", repair_options);
     if (no_border_ignition) raw = without_border_ignition(std::move(raw));
     mc.emplace(raw);
     mc->validate();
@@ -86,10 +97,12 @@ void add_curve_arrays(py::dict& out, const MedialCurves& curves) {
 py::dict curves3d(const py::object& input, const std::string& method, std::optional<double> spacing,
                   double arrive_cosine, double depart_cosine, double min_et, std::optional<double> time_margin,
                   double planar_tubularity, bool mesh_is_complex, bool singular_walls, std::uint64_t max_points,
+                  bool repair, std::optional<double> repair_alpha, std::optional<double> repair_offset,
                   const std::string& name) {
   const InputFile file(input, name);
   Curves3dSetup setup;
-  setup.field = field_setup(file, method, spacing, mesh_is_complex, singular_walls, max_points, "curves3d");
+  setup.field = field_setup(file, method, spacing, mesh_is_complex, singular_walls, max_points,
+                             {repair, repair_alpha, repair_offset}, "curves3d");
   setup.curves.arrive_cosine = arrive_cosine;
   setup.curves.depart_cosine = depart_cosine;
   setup.curves.min_et_fraction = min_et;
@@ -101,7 +114,7 @@ py::dict curves3d(const py::object& input, const std::string& method, std::optio
   std::optional<Curves3dRun> run;
   file.run([&] { run.emplace(curves3d(setup)); });
   py::dict out;
-  add_report(out, run->json);
+  add_report(out, file.named(run->json));
   add_curve_arrays(out, run->curves);
   name_input(out, input, name);
   return out;
@@ -109,6 +122,7 @@ py::dict curves3d(const py::object& input, const std::string& method, std::optio
 
 py::dict paths3d(const py::object& input, const std::string& from, const py::object& points, const std::string& method,
                  std::optional<double> spacing, bool mesh_is_complex, bool singular_walls, std::uint64_t max_points,
+                 bool repair, std::optional<double> repair_alpha, std::optional<double> repair_offset,
                  const std::string& name) {
   const InputFile file(input, name);
   Paths3dSetup setup;
@@ -117,11 +131,12 @@ py::dict paths3d(const py::object& input, const std::string& from, const py::obj
   const BurnPoints p = points_of(points, "points", 3);
   setup.points_name = p.file ? *p.file : p.name;
   setup.points = p.file ? read_point_csv(*p.file, false) : p.rows;
-  setup.field = field_setup(file, method, spacing, mesh_is_complex, singular_walls, max_points, "paths3d");
+  setup.field = field_setup(file, method, spacing, mesh_is_complex, singular_walls, max_points,
+                            {repair, repair_alpha, repair_offset}, "paths3d");
   std::optional<Paths3dRun> run;
   file.run([&] { run.emplace(paths3d(setup)); });
   py::dict out;
-  add_report(out, run->json);
+  add_report(out, file.named(run->json));
   out["farthest"] = run->farthest;
   name_input(out, input, name);
   return out;
@@ -134,14 +149,16 @@ std::optional<mpq_class> threshold(const py::object& x, const char* name) {
 
 py::dict prune3d(const py::object& input, const py::object& et, const py::object& st, bool relative,
                  const std::string& method, std::optional<double> spacing, bool mesh_is_complex, bool singular_walls,
-                 std::uint64_t max_points, const std::string& name) {
+                 std::uint64_t max_points, bool repair, std::optional<double> repair_alpha,
+                 std::optional<double> repair_offset, const std::string& name) {
   const InputFile file(input, name);
   Prune3dSetup setup = default_prune3d_setup();
   setup.erosion = threshold(et, "et");
   setup.tubularity = threshold(st, "st");
   setup.relative = relative;
   if (relative && !setup.erosion) throw std::invalid_argument("--relative needs --et");
-  setup.field = field_setup(file, method, spacing, mesh_is_complex, singular_walls, max_points, "prune3d");
+  setup.field = field_setup(file, method, spacing, mesh_is_complex, singular_walls, max_points,
+                             {repair, repair_alpha, repair_offset}, "prune3d");
   std::optional<Prune3dRun> run;
   file.run([&] { run.emplace(prune3d(setup)); });
   py::dict out;
@@ -153,7 +170,7 @@ py::dict prune3d(const py::object& input, const py::object& et, const py::object
   out["ET"] = float_array(et_values);
   nlohmann::json report = run->report;
   for (const char* key : {"vertex_values", "triangles", "segments"}) report.erase(key);
-  add_report(out, report);
+  add_report(out, file.named(report));
   name_input(out, input, name);
   return out;
 }
@@ -162,12 +179,14 @@ py::dict prune3d(const py::object& input, const py::object& et, const py::object
 
 void bind_3d_analysis(py::module_& m) {
   m.def("complex", &complex_of, py::arg("input"), py::arg("mesh_is_complex") = false,
-        py::arg("no_border_ignition") = false, py::arg("name") = "array",
+        py::arg("no_border_ignition") = false, py::arg("repair") = false, py::arg("repair_alpha") = py::none(), py::arg("repair_offset") = py::none(),
+        py::arg("name") = "array",
         R"doc(Load a 2-complex, validate it exactly and describe its strata (grassfire complex).
 
 input               as burn3d's (a complex file, a shape, arrays, a synthetic name)
 mesh_is_complex     take a mesh itself as the complex (R = 0)
 no_border_ignition  every border edge's rule set to never
+repair, repair_alpha, repair_offset: a defective mesh input repaired first, as medial3d's
 
 Returns "vertices" (n, 3), "triangles" (m, 3), "segments" (k, 2), "R" (n,), "counts" (the
 program's line: vertices, edges, triangles, segments, border_edges, singular_edges,
@@ -180,7 +199,8 @@ singular_points, sheets) and "betti" [b0, b1, b2] by simplicial homology.
   m.def("curves3d", &curves3d, py::arg("input"), py::arg("method") = "discrete", py::arg("spacing") = py::none(),
         py::arg("arrive_cosine") = 0.5, py::arg("depart_cosine") = 0.1, py::arg("min_et") = 0.0,
         py::arg("time_margin") = py::none(), py::arg("planar_tubularity") = 0.5, py::arg("mesh_is_complex") = false,
-        py::arg("singular_walls") = false, py::arg("max_points") = 50'000'000, py::arg("name") = "array",
+        py::arg("singular_walls") = false, py::arg("max_points") = 50'000'000, py::arg("repair") = false, py::arg("repair_alpha") = py::none(), py::arg("repair_offset") = py::none(),
+        py::arg("name") = "array",
         R"doc(Medial curves of a 3D medial axis and its planar / tubular split (grassfire curves3d --json).
 
 input              as burn3d's
@@ -188,6 +208,7 @@ method, spacing    the burning field: "discrete" (Steiner spacing h) or "exact" 
                    spacing of the traced edge points); default h: 1/100 of the diagonal
 arrive_cosine, depart_cosine, min_et, time_margin, planar_tubularity: as the options of
                    the same names (grassfire curves3d --help)
+repair, repair_alpha, repair_offset: a defective mesh input repaired first, as medial3d's
 
 Returns the members of the grassfire-curves3d JSON ("nodes" columns x, y, z, R, bt, et;
 "edges" columns u, v, length, kind; "betti", "axis_betti", "analysis", ...) and the graph
@@ -199,13 +220,15 @@ as arrays: "points" (n, 3) and "segments" (m, 2).
 ([1, 1], 3))doc");
   m.def("paths3d", &paths3d, py::arg("input"), py::arg("from_") = "ends", py::arg("points") = py::none(),
         py::arg("method") = "discrete", py::arg("spacing") = py::none(), py::arg("mesh_is_complex") = false,
-        py::arg("singular_walls") = false, py::arg("max_points") = 50'000'000, py::arg("name") = "array",
+        py::arg("singular_walls") = false, py::arg("max_points") = 50'000'000, py::arg("repair") = false, py::arg("repair_alpha") = py::none(), py::arg("repair_offset") = py::none(),
+        py::arg("name") = "array",
         R"doc(Burning paths on a 3D medial axis (grassfire paths3d --json).
 
 input    as burn3d's
 from_    "vertices", "curves", "ends" (the paths ending on the medial curves) or "points"
 points   with from_="points": a CSV path (x,y,z) or an (n, 3) array; each point is
          located exactly at its nearest point of the complex
+repair, repair_alpha, repair_offset: a defective mesh input repaired first, as medial3d's
 
 Returns the members of the grassfire-paths3d JSON: "paths" with columns "bt", "length"
 and "points" (a list of (k, 3) arrays, from the point back to where its fire started), and
@@ -218,6 +241,7 @@ and "points" (a list of (k, 3) arrays, from the point back to where its fire sta
   m.def("prune3d", &prune3d, py::arg("input"), py::arg("et") = py::none(), py::arg("st") = py::none(),
         py::arg("relative") = false, py::arg("method") = "exact", py::arg("spacing") = py::none(),
         py::arg("mesh_is_complex") = false, py::arg("singular_walls") = false, py::arg("max_points") = 50'000'000,
+        py::arg("repair") = false, py::arg("repair_alpha") = py::none(), py::arg("repair_offset") = py::none(),
         py::arg("name") = "array",
         R"doc(The 3D medial axis pruned by ET and ST thresholds, keeping its topology (grassfire prune3d --json).
 
@@ -226,6 +250,7 @@ et        keep ET = BT - R >= et (a fraction of the axis' largest R with relativ
           (its exact binary value) or a decimal string (read exactly, as --et)
 st        keep ST = 1 - R / BT >= st, in [0, 1]
 method    "exact" (default) or "discrete" (the baseline), with spacing as burn3d's
+repair, repair_alpha, repair_offset: a defective mesh input repaired first, as medial3d's
 
 Cuts exactly along the threshold lines of the piecewise-linear fields and removes failing
 parts only by collapses from the free border inward (kernel/curves3/axis_pruning3.h).

@@ -145,6 +145,14 @@ std::string InputFile::message(const std::string& m) const {
   return out;
 }
 
+nlohmann::json InputFile::named(nlohmann::json report) const {
+  if (dir_.empty()) return report;
+  if (report.is_string()) return message(report.get<std::string>());
+  if (report.is_structured())
+    for (auto& value : report) value = named(std::move(value));
+  return report;
+}
+
 namespace {
 
 Ring ring_of(const py::handle& points, const std::string& name, std::size_t index) {

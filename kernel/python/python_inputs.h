@@ -16,6 +16,7 @@
 #pragma once
 
 #include <gmpxx.h>
+#include <nlohmann/json.hpp>
 #include <pybind11/pybind11.h>
 
 #include <string>
@@ -36,6 +37,8 @@ class InputFile {
   const std::string& path() const { return path_; }
   // `message` with the temporary path replaced by the array's name.
   std::string message(const std::string& message) const;
+  // A report with the temporary path replaced by the array's name in every string.
+  nlohmann::json named(nlohmann::json report) const;
   // Runs f (without the GIL) and rethrows its errors with messages naming the array.
   template <class F>
   auto run(F f) const -> decltype(f()) {

@@ -40,13 +40,9 @@ int run_medial3d(int argc, char** argv) {
               "Example: grassfire medial3d data/balls/caffeine.cin --ma caffeine.ma --json caffeine.json");
   if (!opt.parse(argc, argv)) return opt.exit_code();
   const std::string input = opt.arg("INPUT");
-  MeshAxisOptions mesh;
-  mesh.samples_per_edge = opt.get_double("samples");
-  mesh.angle_degrees = opt.get_double("angle");
-  mesh.max_refinements = static_cast<int>(opt.get_long("refinements", 0, 12));
+  MeshAxisOptions mesh = medial3d_mesh_options(opt.get_double("samples"), opt.get_double("angle"),
+                                                opt.get_long("refinements", 0, 12));
   mesh.max_samples = static_cast<std::size_t>(opt.get_long("max-samples", 1000, 1000000000L));
-  if (!(mesh.samples_per_edge > 0 && mesh.samples_per_edge <= 1024)) throw std::invalid_argument("--samples must be in (0, 1024]");
-  if (!(mesh.angle_degrees >= 0 && mesh.angle_degrees < 180)) throw std::invalid_argument("--angle must be in [0, 180)");
   Progress progress("medial3d " + input, 3);
   progress.stage("building the medial axis");
   const MedialAxisBuild axis = build_medial_axis(input, parse_medial_input_kind(opt.get("kind")), mesh, repair_options(opt));

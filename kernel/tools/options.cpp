@@ -179,17 +179,8 @@ void add_repair_options(Options& opt) {
 }
 
 MeshRepairOptions repair_options(const Options& opt) {
-  MeshRepairOptions r;
-  r.enabled = opt.has("repair");
-  if (opt.has("repair-alpha")) r.alpha = opt.get_double("repair-alpha");
-  if (opt.has("repair-offset")) r.offset = opt.get_double("repair-offset");
-  if ((opt.has("repair-alpha") || opt.has("repair-offset")) && !r.enabled)
-    throw std::invalid_argument("--repair-alpha and --repair-offset need --repair");
-  if (opt.has("repair-alpha") && !(r.alpha > 0 && std::isfinite(r.alpha)))
-    throw std::invalid_argument("--repair-alpha must be a positive number");
-  if (opt.has("repair-offset") && !(r.offset > 0 && std::isfinite(r.offset)))
-    throw std::invalid_argument("--repair-offset must be a positive number");
-  return r;
+  auto given = [&](const char* name) { return opt.has(name) ? std::optional<double>(opt.get_double(name)) : std::nullopt; };
+  return mesh_repair_options(opt.has("repair"), given("repair-alpha"), given("repair-offset"));
 }
 
 }  // namespace grassfire::cli

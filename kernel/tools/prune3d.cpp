@@ -60,10 +60,7 @@ int run_prune3d(int argc, char** argv) {
   setup.relative = opt.has("relative");
   if (setup.relative && !opt.has("et")) throw std::invalid_argument("--relative needs --et");
   setup.field = field_setup(opt, input, "prune3d");
-  Progress progress("prune3d " + input, 2);
-  progress.stage("burning");
-  const Prune3dRun run = prune3d(setup);
-  progress.done();
+  const Prune3dRun run = prune3d(setup);  // its stages on stderr (pipeline/prune3d.h)
   if (opt.has("json")) write_file_atomically(opt.get("json"), run.report.dump(1) + "\n");
   if (opt.has("complex")) write_complex_json(run.pruned.complex, opt.get("complex"));
   if (opt.has("ma") && !write_ma_file(run.pruned.complex, opt.get("ma")))

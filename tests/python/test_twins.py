@@ -1,12 +1,11 @@
 """The Python twins of the program's commands: prune2d, match2d, complex, curves3d, paths3d,
 prune3d, member by member against the program's --json; array and object inputs against the
-same data as files; errors with the program's messages; the documented examples (doctest);
-the GIL released during long calls.
+same data as files; errors with the program's messages; the documented examples (doctest).
+(The GIL and progress: test_long_calls.py.)
 """
 import doctest
 import os
 import tempfile
-import threading
 import types
 import unittest
 
@@ -177,27 +176,6 @@ class Errors(unittest.TestCase):
         with self.assertRaises(ValueError) as e:
             grassfire.paths3d("tube", from_="nowhere")
         self.assertEqual(str(e.exception), cli_error("paths3d", "tube", "--from", "nowhere"))
-
-
-class ReleasesTheGil(unittest.TestCase):
-    def test_other_threads_run_during_a_long_call(self):
-        ticks = []
-        done = threading.Event()
-
-        def tick():
-            while not done.is_set():
-                ticks.append(1)
-                done.wait(0.001)
-
-        t = threading.Thread(target=tick)
-        t.start()
-        before = len(ticks)
-        try:
-            grassfire.prune3d("box:12:8:4", et=0.2, relative=True, method="discrete", spacing=0.1)
-        finally:
-            done.set()
-            t.join()
-        self.assertGreater(len(ticks) - before, 5)
 
 
 if __name__ == "__main__":

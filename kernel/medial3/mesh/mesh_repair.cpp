@@ -188,6 +188,18 @@ void require_solid(const TriangleMesh3& mesh) {
                               "or an alpha wrap) and reports the Hausdorff distance to it");
 }
 
+MeshRepairOptions mesh_repair_options(bool repair, std::optional<double> alpha, std::optional<double> offset) {
+  if ((alpha || offset) && !repair) throw std::invalid_argument("--repair-alpha and --repair-offset need --repair");
+  if (alpha && !(*alpha > 0 && std::isfinite(*alpha))) throw std::invalid_argument("--repair-alpha must be a positive number");
+  if (offset && !(*offset > 0 && std::isfinite(*offset)))
+    throw std::invalid_argument("--repair-offset must be a positive number");
+  MeshRepairOptions r;
+  r.enabled = repair;
+  r.alpha = alpha.value_or(0);
+  r.offset = offset.value_or(0);
+  return r;
+}
+
 MeshRepair repair_mesh(const TriangleMesh3& mesh, const MeshRepairOptions& options) {
   const double start = cpu_seconds();
   if (mesh.vertices.empty() || mesh.triangles.empty()) throw std::invalid_argument(mesh.source + ": the mesh is empty");

@@ -65,6 +65,7 @@
 #include <nlohmann/json.hpp>
 
 #include <cstddef>
+#include <optional>
 #include <string>
 
 #include "geometry3/triangle_mesh.h"
@@ -98,6 +99,12 @@ struct MeshRepairOptions {
   double hausdorff_error = 0;   // 0: diagonal * 1e-4
   bool allow_fill = true;       // step 2 (tests and the study turn it off to wrap)
 };
+
+// The options as the program's --repair, --repair-alpha A, --repair-offset D give them (and
+// the Python module's repair, repair_alpha, repair_offset): std::invalid_argument with the
+// program's message when alpha or offset is given without repair or is not a positive
+// finite number.
+MeshRepairOptions mesh_repair_options(bool repair, std::optional<double> alpha, std::optional<double> offset);
 
 struct MeshRepair {
   TriangleMesh3 mesh;           // the repaired mesh (the input when nothing was needed)
