@@ -145,13 +145,17 @@ MedialAxisBuild build_medial_axis(const std::string& path, MedialInputKind kind,
   return out;
 }
 
-MeshAxisOptions medial3d_mesh_options(double samples, double angle_degrees, long refinements) {
+MeshAxisOptions medial3d_mesh_options(double samples, double angle_degrees, long refinements, long max_samples) {
   if (!(samples > 0 && samples <= 1024)) throw std::invalid_argument("--samples must be in (0, 1024]");
   if (!(angle_degrees >= 0 && angle_degrees < 180)) throw std::invalid_argument("--angle must be in [0, 180)");
   if (refinements < 0 || refinements > 12)
     throw std::invalid_argument("option --refinements must be an integer in [0, 12], got '" + std::to_string(refinements) +
                                 "'");
+  if (max_samples < 1000 || max_samples > 1000000000L)
+    throw std::invalid_argument("option --max-samples must be an integer in [1000, 1000000000], got '" +
+                                std::to_string(max_samples) + "'");
   MeshAxisOptions o;
+  o.max_samples = static_cast<std::size_t>(max_samples);
   o.samples_per_edge = samples;
   o.angle_degrees = angle_degrees;
   o.max_refinements = static_cast<int>(refinements);

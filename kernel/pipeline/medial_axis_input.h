@@ -43,9 +43,11 @@ struct MedialAxisBuild {
 // (mesh_repair.h; without it a defective mesh is refused with the --repair hint).
 MedialAxisBuild build_medial_axis(const std::string& path, MedialInputKind kind, const MeshAxisOptions& mesh_options = {},
                                   const MeshRepairOptions& repair = {});
-// The mesh builder's options as `medial3d --samples S --angle DEG --refinements N` give them
-// (the Python module's medial3d too): h = mean edge length / S, S in (0, 1024]; DEG in
-// [0, 180); N in [0, 12]; std::invalid_argument with the program's message otherwise.
-MeshAxisOptions medial3d_mesh_options(double samples, double angle_degrees, long refinements);
+// The mesh builder's options as `medial3d --samples S --angle DEG --refinements N
+// --max-samples M` give them (the Python module's medial3d too): h = mean edge length / S,
+// S in (0, 1024]; DEG in [0, 180); N in [0, 12]; M in [1000, 10^9] samples a round;
+// std::invalid_argument with the program's message otherwise.
+MeshAxisOptions medial3d_mesh_options(double samples, double angle_degrees, long refinements,
+                                      long max_samples = 2000000);
 
 }  // namespace grassfire

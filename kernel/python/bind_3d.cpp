@@ -31,9 +31,9 @@ namespace grassfire::python {
 namespace {
 
 py::dict medial3d(const py::object& input, const std::string& kind, double samples, double angle, long refinements,
-                  bool repair, std::optional<double> repair_alpha, std::optional<double> repair_offset,
+                  long max_samples, bool repair, std::optional<double> repair_alpha, std::optional<double> repair_offset,
                   const std::string& name) {
-  const MeshAxisOptions mesh = medial3d_mesh_options(samples, angle, refinements);
+  const MeshAxisOptions mesh = medial3d_mesh_options(samples, angle, refinements, max_samples);
   const MeshRepairOptions repair_options = mesh_repair_options(repair, repair_alpha, repair_offset);
   const MedialInputKind k = parse_medial_input_kind(kind);
   const InputFile file(input, name);
@@ -109,8 +109,8 @@ py::dict burn3d(const py::object& input, const std::string& method, const py::ob
 
 void bind_3d(py::module_& m) {
   m.def("medial3d", &medial3d, py::arg("path"), py::arg("kind") = "auto", py::arg("samples") = 1.0,
-        py::arg("angle") = 0.0, py::arg("refinements") = 5, py::arg("repair") = false,
-        py::arg("repair_alpha") = py::none(), py::arg("repair_offset") = py::none(), py::arg("name") = "array",
+        py::arg("angle") = 0.0, py::arg("refinements") = 5, py::arg("max_samples") = 2000000,
+        py::arg("repair") = false, py::arg("repair_alpha") = py::none(), py::arg("repair_offset") = py::none(), py::arg("name") = "array",
         R"doc(The medial axis of a convex polyhedron, a union of balls or a closed mesh (grassfire medial3d).
 
 path     a mesh (.off .ply .obj), a half-space list (.hs .halfspaces) or a ball list (.cin .balls);
@@ -121,6 +121,8 @@ samples  mesh kind: initial sample spacing = mean edge length / samples, in (0, 
 angle    mesh kind: Voronoi faces narrower than angle degrees seen from the axis are
          pruned while the topology allows (0: no angle test; as --angle)
 refinements  mesh kind: at most this many halvings of the spacing, in [0, 12]
+max_samples  mesh kind: at most this many surface samples in a round, in [1000, 10^9]
+         (as --max-samples; memory grows about 2 GB per million samples)
 repair   a mesh that does not bound a solid (self-intersecting, non-manifold, open,
          overlapping shells) is repaired first (as --repair): welded, or its holes
          filled, or else alpha-wrapped with repair_alpha and repair_offset (defaults

@@ -40,9 +40,9 @@ int run_medial3d(int argc, char** argv) {
               "Example: grassfire medial3d data/balls/caffeine.cin --ma caffeine.ma --json caffeine.json");
   if (!opt.parse(argc, argv)) return opt.exit_code();
   const std::string input = opt.arg("INPUT");
-  MeshAxisOptions mesh = medial3d_mesh_options(opt.get_double("samples"), opt.get_double("angle"),
-                                                opt.get_long("refinements", 0, 12));
-  mesh.max_samples = static_cast<std::size_t>(opt.get_long("max-samples", 1000, 1000000000L));
+  const MeshAxisOptions mesh =
+      medial3d_mesh_options(opt.get_double("samples"), opt.get_double("angle"), opt.get_long("refinements", 0, 12),
+                            opt.get_long("max-samples", 1000, 1000000000L));
   Progress progress("medial3d " + input, 3);
   progress.stage("building the medial axis");
   const MedialAxisBuild axis = build_medial_axis(input, parse_medial_input_kind(opt.get("kind")), mesh, repair_options(opt));
