@@ -30,8 +30,11 @@
 // edge point's closed form, junction_kinks.h) and BT as an ExactSum (Certifier::
 // exact_expr); else as certified enclosures. x, bt and error are doubles with |x_i - exact|
 // <= error and |bt - BT(p)| <= error.
-// Switches at vertices (between two edges of a curve) are not listed: the link rule decides
-// those points (vertex_burning.cpp) and the event log lists them. Quench lines inside
+// Switches at vertices where a curve runs on from one singular edge into another (no link
+// rule there) are classified the same way, with both slopes per unit length along the curve
+// (the board and fin whose curve runs at direction (3/5, 4/5) has its kink s* = 5 at a vertex).
+// Switches at vertices with a link rule (singular points, segments) are not listed: the link
+// rule decides those points (vertex_burning.cpp) and the event log lists them. Quench lines inside
 // sheets (where two windows meet) are curves, not points, and not listed.
 // Contract: eb has run. Complexity: O(switches) Arb evaluations of two windows' chains at
 // 128..max_bits bits, plus 2 staged comparisons per switch whose slopes Arb cannot separate

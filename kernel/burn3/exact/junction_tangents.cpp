@@ -15,8 +15,8 @@ using Crossing = std::array<std::uint32_t, 3>;  // edge, triangle entered, trian
 
 class Prover {
  public:
-  Prover(ExactBurning& eb, std::uint32_t a, std::uint32_t b)
-      : u_(eb.unfolding()), s_(eb.propagation().store()), cert_(eb.certifier()), mc_(eb.complex()), a_(a), b_(b) {}
+  Prover(const Unfolding& u, const WindowStore& s, Certifier& cert, std::uint32_t a, std::uint32_t b)
+      : u_(u), s_(s), cert_(cert), mc_(u.complex()), a_(a), b_(b) {}
 
   bool run() {
     const Window& B = s_.windows[b_];
@@ -131,6 +131,11 @@ class Prover {
 
 }  // namespace
 
-bool starts_on_front(ExactBurning& eb, std::uint32_t a, std::uint32_t b) { return Prover(eb, a, b).run(); }
+bool starts_on_front(ExactBurning& eb, std::uint32_t a, std::uint32_t b) {
+  return Prover(eb.unfolding(), eb.propagation().store(), eb.certifier(), a, b).run();
+}
+bool starts_on_front(const Unfolding& u, const WindowStore& s, Certifier& cert, std::uint32_t a, std::uint32_t b) {
+  return Prover(u, s, cert, a, b).run();
+}
 
 }  // namespace grassfire

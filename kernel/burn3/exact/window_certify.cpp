@@ -630,45 +630,58 @@ std::optional<Certifier::EdgeRoot> Certifier::ray_root_on_edge(std::uint32_t w, 
 }
 
 
+Certifier::Along Certifier::along_edge(std::uint32_t w, std::uint32_t edge) {
+  const std::uint32_t t = s_.windows[w].triangle;
+  Along a{evaluate(w, true), u_.edge_param_ball(t, edge, mpq_class(0)), {}};
+  a.D = ball_sub(u_.edge_param_ball(t, edge, mpq_class(1)), a.A);
+  return a;
+}
+
+namespace {
+using Along = Certifier::Along;
+Ball time_along(const Along& a, const Ball& l) {  // time_ball at the edge point l
+  return time_at(a.b, BallVec2{a.A.x + l * a.D.x, a.A.y + l * a.D.y});
+}
+Ball rate_along(const Along& a, const Ball& l) {  // its derivative in l
+  if (a.b.plane) return a.b.source.x * a.D.x + a.b.source.y * a.D.y;
+  const BallVec2 d{a.A.x + l * a.D.x - a.b.source.x, a.A.y + l * a.D.y - a.b.source.y};
+  return (d.x * a.D.x + d.y * a.D.y) / sqrt(d.x * d.x + d.y * d.y);
+}
+}  // namespace
+
 std::optional<Certifier::EdgeRoot> Certifier::crossing_root_on_edge(std::uint32_t w1, std::uint32_t w2,
                                                                     std::uint32_t edge, double lo, double hi,
                                                                     long bits) {
   BallPrecision guard(bits);
-  struct Along {
-    WindowBall b;
-    BallVec2 A, D;  // the edge a + l (b - a) in the window's frame: A + l D
-  };
-  auto along = [&](std::uint32_t w) {
-    const std::uint32_t t = s_.windows[w].triangle;
-    Along a{evaluate(w, true), u_.edge_param_ball(t, edge, mpq_class(0)), {}};
-    a.D = ball_sub(u_.edge_param_ball(t, edge, mpq_class(1)), a.A);
-    return a;
-  };
-  const Along a = along(w1), b = along(w2);
-  auto time = [](const Along& a, const Ball& l) {  // time_ball at the edge point l
-    return time_at(a.b, BallVec2{a.A.x + l * a.D.x, a.A.y + l * a.D.y});
-  };
-  auto rate = [](const Along& a, const Ball& l) {  // its derivative in l
-    if (a.b.plane) return a.b.source.x * a.D.x + a.b.source.y * a.D.y;
-    const BallVec2 d{a.A.x + l * a.D.x - a.b.source.x, a.A.y + l * a.D.y - a.b.source.y};
-    return (d.x * a.D.x + d.y * a.D.y) / sqrt(d.x * d.x + d.y * d.y);
-  };
+  const Along a = along_edge(w1, edge), b = along_edge(w2, edge);
   Ball X = Ball::from_interval(Interval{lo, hi});
-  const Ball dX = rate(a, X) - rate(b, X);
+  const Ball dX = rate_along(a, X) - rate_along(b, X);
   const int slope = dX.sign();
   if (slope != 1 && slope != -1) return std::nullopt;
-  if ((time(a, Ball(lo)) - time(b, Ball(lo))).sign() != -slope || (time(a, Ball(hi)) - time(b, Ball(hi))).sign() != slope)
+  if ((time_along(a, Ball(lo)) - time_along(b, Ball(lo))).sign() != -slope ||
+      (time_along(a, Ball(hi)) - time_along(b, Ball(hi))).sign() != slope)
     return std::nullopt;
   // f is monotone on X with a sign change: one root, which every Newton image contains.
   for (int i = 0; i < 8; ++i) {
     Ball m;
     arb_get_mid_arb(m.get(), X.get());
-    const Ball n = m - (time(a, m) - time(b, m)) / (rate(a, X) - rate(b, X));
+    const Ball n = m - (time_along(a, m) - time_along(b, m)) / (rate_along(a, X) - rate_along(b, X));
     Ball y;
     if (!arb_intersection(y.get(), X.get(), n.get(), bits)) return std::nullopt;
     X = y;
   }
   return rational_root(X, slope, bits);
+}
+
+std::array<int, 2> Certifier::edge_difference_signs(std::uint32_t w1, std::uint32_t w2, std::uint32_t edge,
+                                                    const mpq_class& lo, const mpq_class& hi, long bits) {
+  BallPrecision guard(bits);
+  const Along a = along_edge(w1, edge), b = along_edge(w2, edge);
+  const Ball X = hull(ball_of(lo), ball_of(hi)), m = ball_of((lo + hi) / 2);
+  const Ball slope = rate_along(a, X) - rate_along(b, X);
+  int value = ball_sign(time_along(a, X) - time_along(b, X));
+  if (value != 1 && value != -1) value = ball_sign(time_along(a, m) - time_along(b, m) + slope * (X - m));  // centred
+  return {value, ball_sign(slope)};
 }
 
 int Certifier::side_if_certified(std::uint32_t w, int j, const Target& x, bool arb_first) {
@@ -706,8 +719,10 @@ int Certifier::side_if_certified(std::uint32_t w, int j, const Target& x, bool a
   return arb_first ? kUndecided : arb();
 }
 
-int Certifier::compare_times(std::uint32_t w1, const Target& x1, std::uint32_t w2, const Target& x2, bool arb_first) {
+int Certifier::compare_times(std::uint32_t w1, const Target& x1, std::uint32_t w2, const Target& x2, bool arb_first,
+                             bool deciding) {
   trim_memos();
+  const long cap = deciding ? max_bits_ : prune_bits_;
   const int s = certified_sign(time_interval(w1, x1) - time_interval(w2, x2));
   if (s != kUndecided) {
     ++counts.filter;
@@ -730,7 +745,7 @@ int Certifier::compare_times(std::uint32_t w1, const Target& x1, std::uint32_t w
     }
   }
   const int flip = fa < fb ? 1 : -1;
-  const MemoKey key{tag(kTimes, std::min(fa, fb)) | cap_code(prune_bits_), std::max(fa, fb), where};
+  const MemoKey key{tag(kTimes, std::min(fa, fb)) | cap_code(cap), std::max(fa, fb), where};
   if (keyed)
     if (const std::optional<int> m = recall(key)) return *m == kUndecided ? *m : flip * *m;
   auto done = [&](int r) {
@@ -738,7 +753,7 @@ int Certifier::compare_times(std::uint32_t w1, const Target& x1, std::uint32_t w
     return r == kUndecided ? remember(key, r) : remember(key, flip * r) * flip;
   };
   auto arb_level = [&] { return ball_sign(time_ball(w1, x1) - time_ball(w2, x2)); };
-  auto arb = [&] { return escalate(prune_bits_, arb_level); };
+  auto arb = [&] { return escalate(cap, arb_level); };
   // Arb's first level before the exact stage (as in side_if_certified).
   if (const int a = arb_first ? arb() : escalate(128, arb_level); a != kUndecided) return done(a);
   if (exact_window(w1) && exact_window(w2)) {
@@ -750,7 +765,7 @@ int Certifier::compare_times(std::uint32_t w1, const Target& x1, std::uint32_t w
     }
   }
   const int r = arb_first ? kUndecided : arb();
-  if (r == kUndecided) ++counts.kept_undecided;
+  if (r == kUndecided && !deciding) ++counts.kept_undecided;
   return done(r);
 }
 

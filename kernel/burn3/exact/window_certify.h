@@ -74,7 +74,11 @@ class Certifier {
   // arb_first: the Arb stage before the exact one (bisections: thousands of decisions near a
   // point that Arb settles at once, where the exact sums of long rationals cost far more).
   int side_if_certified(std::uint32_t w, int j, const Target& x, bool arb_first = false);
-  int compare_times(std::uint32_t w1, const Target& x1, std::uint32_t w2, const Target& x2, bool arb_first = false);
+  // deciding: the outcome decides BT (the junction rule's order of arrivals), so the Arb
+  // stage escalates to max_bits and an undecided outcome is the caller's to count as
+  // `uncertified`; otherwise it only prunes (prune_bits; undecided counts kept_undecided).
+  int compare_times(std::uint32_t w1, const Target& x1, std::uint32_t w2, const Target& x2, bool arb_first = false,
+                    bool deciding = false);
   // Where w's ray j meets `edge` (an edge of w's triangle), from the Arb stage of
   // side_if_certified: its side function at the edge point a + l (b - a) is affine in l,
   // g0 + l g1, so one evaluation (at `bits`) gives a rational interval [lo, hi] holding the
@@ -93,6 +97,20 @@ class Certifier {
   // its lo, both within [lo, hi]); nullopt where any of this is not certified.
   std::optional<EdgeRoot> crossing_root_on_edge(std::uint32_t w1, std::uint32_t w2, std::uint32_t edge, double lo,
                                                 double hi, long bits);
+  // The signs of f = time(w1) - time(w2) and of its derivative f' over the whole parameter
+  // box [lo, hi] of `edge` (an edge of both triangles), in Arb at `bits`: {sign f, sign f'},
+  // each kUndecided where its ball holds 0 (the exclusion and monotonicity proofs of the
+  // crossings' isolation, edge_crossings.h).
+  std::array<int, 2> edge_difference_signs(std::uint32_t w1, std::uint32_t w2, std::uint32_t edge, const mpq_class& lo,
+                                           const mpq_class& hi, long bits);
+  // A window's front along an edge a + l (b - a) of its triangle, in its frame (A + l D),
+  // at the current BallPrecision.
+  struct Along {
+    WindowBall b;
+    BallVec2 A, D;
+  };
+  Along along_edge(std::uint32_t w, std::uint32_t edge);
+  long max_bits() const { return max_bits_; }
   int compare_directions(std::uint32_t w1, std::uint32_t w2, std::uint32_t v);
   // The identity of w's front (equal ids: the same source image and offset in the same
   // frame, as same_expression decides), and of a time expression (equal ids: one value).
