@@ -87,10 +87,9 @@ std::optional<EdgeTime> edge_time(const Unfolding& u, const WindowStore& s, Cert
     return t;
   }
   // distance to the line = inner * cross(D, X - p) * sqrt(g1 g2 / |D|^2) (window_certify.cpp)
-  ExactSum n2 = scaled(mul(e->d[0], e->d[0]), g1) + scaled(mul(e->d[1], e->d[1]), g2);
-  n2.simplify();
-  if (!n2.sqrt_terms().empty() || !n2.constant_terms().empty()) return std::nullopt;
-  ExactSum k = ExactSum::sqrt_of(g1 * g2 / n2.rational_part());
+  const std::optional<mpq_class> n2 = cert.line_length2(w);
+  if (!n2) return std::nullopt;
+  ExactSum k = ExactSum::sqrt_of(g1 * g2 / *n2);
   k.simplify();
   if (e->inner < 0) k.scale(-1);
   const XV ap{ExactSum::rational(a[0]) - e->p[0], ExactSum::rational(a[1]) - e->p[1]};

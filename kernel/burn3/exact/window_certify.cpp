@@ -2,6 +2,7 @@
 #include "burn3/exact/window_certify.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstring>
 #include <stdexcept>
 
@@ -224,6 +225,67 @@ bool Certifier::same_point_source(std::uint32_t pa, std::uint32_t pb) const {
     return a.origin == SourceOrigin::Vertex || a.origin == SourceOrigin::GivenPoint || a.origin == SourceOrigin::EdgePoint;
   return a.origin == SourceOrigin::Vertex && b.origin == SourceOrigin::Vertex && a.vertex == b.vertex &&
          a.time == b.time && a.time != kNoIndex;
+}
+
+// `relay` a first window of an edge point p of x's edge E whose offset is the time at p of
+// `src` (or of a window equal to it at p by p's defining equation), a first window of a point source S on E (a vertex of E or a caller's point on it),
+// and `w` a first window of S too, all in triangles containing E: at x on E with p between S
+// and x (decided on p's certified enclosure), time(w, x) = sigma + |x - S| = sigma + |p - S|
+// + |x - p| = time(relay, x), each distance a straight segment of E (the relayed source of a
+// kink or a stretch end, 4.2.1, beyond it along the edge).
+bool Certifier::relayed_along_edge(std::uint32_t relay, std::uint32_t w, const Target& x) const {
+  if (!x.point || x.edge == kNoIndex || !x.lambda) return false;
+  const Window &b = s_.windows[relay], &a = s_.windows[w];
+  if (!b.root() || !a.root()) return false;
+  const PseudoSource& pb = s_.pseudo[b.pseudo];
+  if (pb.origin != SourceOrigin::EdgePoint || pb.time == kNoIndex) return false;
+  const EdgePoint& ep = s_.edge_points[pb.data];
+  if (ep.edge != x.edge) return false;
+  const TimeExpr& te = s_.times[pb.time];
+  if (te.kind != TimeExpr::Kind::WindowAt || te.b != (pb.data | kEdgePointBound)) return false;
+  // The window whose time at p is the offset, or the other window of p's defining equation
+  // (a certified crossing: the two times are equal at p).
+  auto of_s = [&](std::uint32_t v) {
+    return v != kNoIndex && s_.windows[v].root() && same_point_source(s_.windows[v].pseudo, a.pseudo);
+  };
+  std::uint32_t from = kNoIndex;
+  if (of_s(te.a)) from = te.a;
+  for (int k = 0; k < 2 && from == kNoIndex; ++k)
+    if (ep.equal_windows[k] == te.a && of_s(ep.equal_windows[1 - k])) from = ep.equal_windows[1 - k];
+  if (from == kNoIndex) return false;
+  const Window& src = s_.windows[from];
+  const MedialComplex& mc = u_.complex();
+  for (const Window* t : {&a, &b, &src}) {
+    const auto& te3 = mc.triangle(t->triangle).e;
+    if (std::find(te3.begin(), te3.end(), x.edge) == te3.end()) return false;
+  }
+  // S's parameter on E.
+  const PseudoSource& ps = s_.pseudo[a.pseudo];
+  const auto& ev = mc.edge(x.edge).v;
+  mpq_class ls;
+  if (ps.origin == SourceOrigin::Vertex && (ps.vertex == ev[0] || ps.vertex == ev[1])) {
+    ls = ps.vertex == ev[0] ? 0 : 1;
+  } else if (ps.origin == SourceOrigin::GivenPoint) {
+    const ExactPoint3 &va = mc.vertex(ev[0]).exact, &vb = mc.vertex(ev[1]).exact, &q = s_.given[ps.data].point;
+    if (!(cross(vb - va, q - va) == ExactPoint3{})) return false;
+    ls = dot(q - va, vb - va) / dot(vb - va, vb - va);
+    if (ls < 0 || ls > 1) return false;
+  } else {
+    return false;
+  }
+  // p's certified enclosure [pl, ph].
+  mpq_class pl, ph;
+  if (ep.exact >= 0 && s_.exact_times[ep.exact].sqrt_terms().empty() && s_.exact_times[ep.exact].constant_terms().empty()) {
+    pl = ph = s_.exact_times[ep.exact].rational_part();
+  } else if (ep.bracketed) {
+    pl = ep.lo, ph = ep.hi;
+  } else if (std::isfinite(ep.lambda.lo) && std::isfinite(ep.lambda.hi)) {
+    pl = ep.lambda.lo, ph = ep.lambda.hi;
+  } else {
+    return false;
+  }
+  const mpq_class& lx = *x.lambda;
+  return (ls >= ph && lx <= pl) || (ls <= pl && lx >= ph);
 }
 
 bool Certifier::same_expression(std::uint32_t w1, std::uint32_t w2, const Target& x) const {
@@ -516,6 +578,22 @@ int Certifier::exact_side(const ExactWindow& e, int j, const Target& x) const {
   return -e.inner * exact_sign(metric_dot(e.d, sub(p, e.image[j]), u_.g1(e.frame), u_.g2(e.frame)));
 }
 
+std::optional<mpq_class> Certifier::line_length2(std::uint32_t w) {
+  const ExactWindow* e = exact_window(w);
+  if (!e || !e->line) return std::nullopt;
+  ExactSum n2 = metric_dot(e->d, e->d, u_.g1(e->frame), u_.g2(e->frame));
+  n2.simplify();
+  if (n2.sqrt_terms().empty() && n2.constant_terms().empty()) return n2.rational_part();
+  // Irrational crossings leave sums of square roots that the simplification does not fold:
+  // d is the border edge's vector carried by isometries, so |d|^2 is its squared length,
+  // proved here by exact comparison (not assumed).
+  const PseudoSource& ps = s_.pseudo[s_.windows[w].pseudo];
+  if (ps.origin != SourceOrigin::BorderPlane || ps.exact < 0 || !n2.constant_terms().empty()) return std::nullopt;
+  const mpq_class len2 = edge_length2(s_.exact[ps.exact].edge);
+  if (exact_sign(n2 - ExactSum::rational(len2)) != 0) return std::nullopt;
+  return len2;
+}
+
 std::optional<ExactSum> Certifier::exact_time(std::uint32_t w, const Target& x) {
   const ExactWindow* e = exact_window(w);
   if (!e) return std::nullopt;
@@ -539,10 +617,9 @@ std::optional<ExactSum> Certifier::exact_time(std::uint32_t w, const Target& x) 
     }
   } else {
     // distance to the line = inner * cross(d, X - p) * sqrt(g1 g2 / |d|^2)
-    ExactSum n2 = metric_dot(e->d, e->d, g1, g2);
-    n2.simplify();
-    if (!n2.sqrt_terms().empty()) return std::nullopt;
-    const ExactSum dist = mul(ExactSum::sqrt_of(g1 * g2 / n2.rational_part()), cross_xv(e->d, sub(p, e->p)));
+    const std::optional<mpq_class> n2 = line_length2(w);
+    if (!n2) return std::nullopt;
+    const ExactSum dist = mul(ExactSum::sqrt_of(g1 * g2 / *n2), cross_xv(e->d, sub(p, e->p)));
     r += e->inner > 0 ? dist : q(0) - dist;
   }
   r.simplify();
@@ -729,7 +806,7 @@ int Certifier::compare_times(std::uint32_t w1, const Target& x1, std::uint32_t w
     return s;
   }
   const bool same_target = x1.point == x2.point && x1.vertex == x2.vertex;
-  if (same_target && same_expression(w1, w2, x1)) {
+  if (same_target && (same_expression(w1, w2, x1) || relayed_along_edge(w1, w2, x1) || relayed_along_edge(w2, w1, x1))) {
     ++counts.structural_equal;
     return 0;
   }

@@ -11,7 +11,9 @@
 //  1. filter: Interval arithmetic on the windows' double discs;
 //  2. structural: identical expressions are equal (the same pseudo-source through the same
 //     sequence of frame changes, Window::anchor; a bound vertex that every later triangle
-//     of the chain contains);
+//     of the chain contains); along an edge, a point source S on it and the source it
+//     relays at an edge point p (sigma = S's time at p) beyond which x lies, seen from S
+//     (|x - S| = |x - p| + |p - S|: one value, even where p is known by a bracket only);
 //  3. exact: windows of a rational pseudo-source whose chain crosses only rational
 //     unfoldings (planar sheets, flat patches, cube-like meshes) are re-evaluated in
 //     rational local coordinates, times as ExactSum (exact sign, ties included);
@@ -146,6 +148,9 @@ class Certifier {
   // the line's length) is rational or denests.
   std::optional<ExactSum> exact_time(std::uint32_t w, const Target& x);
   const ExactSum* exact_sigma(std::uint32_t pseudo);
+  // |d|^2 in the frame's metric of a line window's exact direction d, when rational (or
+  // proved equal to its border edge's squared length).
+  std::optional<mpq_class> line_length2(std::uint32_t w);
   // Time expressions (windows.h): Arb and exact values, and the staged comparison
   // (kUndecided when no stage decides).
   Ball expr_ball(std::uint32_t expr);
@@ -162,6 +167,7 @@ class Certifier {
   void trim_memos();  // only between decisions: pointers into the memo stay valid within one
   bool same_expression(std::uint32_t w1, std::uint32_t w2, const Target& x) const;
   bool same_point_source(std::uint32_t pa, std::uint32_t pb) const;
+  bool relayed_along_edge(std::uint32_t relay, std::uint32_t w, const Target& x) const;
   bool bound_fixed(std::uint32_t w, int j, std::uint32_t v) const;
   std::optional<ExactVector> target_uv(std::uint32_t f, const Target& x) const;
   int exact_side(const ExactWindow& e, int j, const Target& x) const;
