@@ -190,6 +190,12 @@ EdgeCrossings isolate_crossings(const Unfolding& u, const WindowStore& s, Certif
     out.equal = true;
     return out;
   }
+  // One function along the edge (the same source reached through different unfoldings,
+  // proved from exact data): no sign change anywhere.
+  if (identical_along_edge(u, s, cert, edge, wa, wb)) {
+    out.equal = true;
+    return out;
+  }
   if (const std::optional<std::vector<ExactSum>> c = crossing_candidates(u, s, cert, edge, wa, wb)) {
     std::uint32_t undecided = 0;
     if (exact_isolation(f, *c, lo, hi, &found, &undecided)) {

@@ -17,6 +17,8 @@
 // (deciding: escalating to max_bits). A bracket found is narrowed by bisection while the
 // double enclosures decide (to about 2^-44 of the edge), so its midpoint orders it among
 // the other breakpoints.
+// Identical fronts (their exact data equal, junction_kinks.h identical_along_edge): f = 0
+// on the whole line, no crossing (`equal`).
 // Ties along a stretch: f is sigma_a + sqrt(P_a) - sigma_b - sqrt(P_b) with P quadratic in l
 // (or has a plane wave, linear in l), so squaring twice leaves a polynomial of degree <= 4:
 // f proved 0 at five distinct points makes it vanish identically, and then f is 0 on the

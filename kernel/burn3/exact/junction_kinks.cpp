@@ -222,6 +222,23 @@ std::optional<ExactSum> exact_crossing(const EdgeTime& p, const EdgeTime& q, con
 
 }  // namespace
 
+bool identical_along_edge(const Unfolding& u, const WindowStore& s, Certifier& cert, std::uint32_t edge,
+                          std::uint32_t wa, std::uint32_t wb) {
+  const auto p = edge_time(u, s, cert, edge, wa);
+  const auto q = p ? edge_time(u, s, cert, edge, wb) : std::nullopt;
+  if (!p || !q || p->line != q->line) return false;
+  // Each difference proved 0 (the double enclosure rejects the others at once).
+  auto zero = [](const ExactSum& a, const ExactSum& b) {
+    if (!a.constant_terms().empty() || !b.constant_terms().empty()) return false;
+    const ExactSum d = a - b;
+    const int fast = certified_sign(d.approx());
+    if (fast == 1 || fast == -1) return false;
+    return exact_sign(d) == 0;
+  };
+  if (p->line) return zero(p->c0, q->c0) && zero(p->c1, q->c1);
+  return p->l2 == q->l2 && zero(p->beta, q->beta) && zero(p->sigma, q->sigma) && zero(p->gamma, q->gamma);
+}
+
 std::optional<std::vector<ExactSum>> crossing_candidates(const Unfolding& u, const WindowStore& s, Certifier& cert,
                                                          std::uint32_t edge, std::uint32_t wa, std::uint32_t wb) {
   const auto p = edge_time(u, s, cert, edge, wa);

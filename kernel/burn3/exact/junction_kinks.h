@@ -73,6 +73,12 @@ KinkParameter kink_parameter(const Unfolding& u, const WindowStore& s, Certifier
 // exact window data (or past the exact stage's size limits).
 std::optional<std::vector<ExactSum>> crossing_candidates(const Unfolding& u, const WindowStore& s, Certifier& cert,
                                                          std::uint32_t edge, std::uint32_t wa, std::uint32_t wb);
+// Whether the two windows' times along the whole edge line are one function, proved from
+// their exact data (equal offsets and equal squared distances sigma, gamma, beta, |E|^2 in
+// their frames, or equal c0, c1 for plane waves: the same virtual source seen from the
+// edge); false where not proved (no exact data, or different).
+bool identical_along_edge(const Unfolding& u, const WindowStore& s, Certifier& cert, std::uint32_t edge,
+                          std::uint32_t wa, std::uint32_t wb);
 // The point a + l (b - a) of the edge (a, b), exactly.
 ExactPoint3 edge_point_at(const MedialComplex& mc, std::uint32_t edge, const mpq_class& l);
 KinkParameter ray_parameter(const Unfolding& u, const WindowStore& s, Certifier& cert, std::uint32_t edge,
