@@ -23,6 +23,10 @@
 // (or has a plane wave, linear in l), so squaring twice leaves a polynomial of degree <= 4:
 // f proved 0 at five distinct points makes it vanish identically, and then f is 0 on the
 // whole line (the fronts are one expression along E) and has no crossing.
+// Two fronts whose difference Arb bounds by 2^-64 on the whole range (or on a box no test
+// settles) are a tie there: either order moves the (k-1)-th arrival by at most that (order
+// statistics are 1-Lipschitz in the sup norm), so no crossing is claimed and the box is
+// counted `negligible`, not undecided (tripod-s2: 30 pairs on singular edges ~1e-17 long).
 // What no stage settles (a box at the depth or node budget, an end sign undecided at
 // max_bits) is counted in `undecided`, and a sign change across it, if certified, is kept
 // as a crossing bracket; the caller counts `undecided` as uncertified decisions.
@@ -49,7 +53,7 @@ struct EdgeCrossings {
   std::vector<CrossingBracket> roots;
   std::uint32_t undecided = 0;  // boxes or signs no stage settled
   bool equal = false;           // f proved 0 on the whole line, or of one sign (a front thrown by the other)
-  std::uint32_t negligible = 0; // ties within 2^-300 at a range end or a corner (a breakpoint there)
+  std::uint32_t negligible = 0; // ties within 2^-64 at a range end, on a box or on the whole range
   std::uint32_t boxes = 0;      // boxes examined (cost)
 };
 

@@ -76,6 +76,18 @@ bool tangent(ExactBurning& eb, const Slopes& d, const WindowPropagation::Junctio
   return starts_on_front(eb, sw.left, sw.right) || starts_on_front(eb, sw.right, sw.left);
 }
 
+// A corner certified between two windows of one triangle of which one is proved to start
+// on the other's front (junction_tangents.h: b >= a on the whole plane, equal only along a
+// ray) cannot be a corner of A at a point where a(p) = b(p): there b - a has its minimum and
+// the slopes agree. So such a switch is no point of continuity of the computed A (two
+// record ends of one front ordered by their double parameters, a sliver between them
+// realised by neither): not classified, never called a kink.
+bool thrown_by_the_other(ExactBurning& eb, const Slopes& d, const WindowPropagation::JunctionSwitch& sw) {
+  const WindowStore& s = eb.propagation().store();
+  if (d.corner == kUndecided || s.windows[sw.left].triangle != s.windows[sw.right].triangle) return false;
+  return starts_on_front(eb, sw.left, sw.right) || starts_on_front(eb, sw.right, sw.left);
+}
+
 std::optional<JunctionPoint::Kind> classify(const Slopes& d, bool same, bool tangent) {
   using K = JunctionPoint::Kind;
   if (d.corner == 1) return K::Kink;
@@ -120,7 +132,8 @@ JunctionPoints junction_points(ExactBurning& eb) {
     // One front through one sheet side, split between two windows by the mesh: BT runs on
     // smoothly and no front meets another there.
     if (same && s.windows[sw.left].triangle == s.windows[sw.right].triangle) continue;
-    const std::optional<JunctionPoint::Kind> kind = classify(d, same, !same && tangent(eb, d, sw));
+    std::optional<JunctionPoint::Kind> kind = classify(d, same, !same && tangent(eb, d, sw));
+    if (kind && *kind != JunctionPoint::Kind::Tangent && thrown_by_the_other(eb, d, sw)) kind.reset();
     if (!kind) {
       ++out.unclassified;
       continue;

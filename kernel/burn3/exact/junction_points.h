@@ -25,7 +25,12 @@
 //    runs on smoothly (a Linear border edge's plane wave continued by the circle about its
 //    border vertex, or a circle by the circle of a vertex it ignited): no corner, so neither a
 //    kink nor a quench, and not a merge of two fronts either; listed as `tangents`;
-//  - unclassified otherwise (a sign no stage certified; counted, never guessed).
+//  - unclassified otherwise (a sign no stage certified; counted, never guessed), and where
+//    a corner is certified between two windows of one triangle one of which is proved to
+//    start on the other's front: b >= a with equality only along a ray leaves no corner
+//    where a(p) = b(p), so such a switch is a discontinuity of the computed A (tripod-s2: two
+//    record ends of one plane wave 1e-15 apart, ordered by their double parameters, with the
+//    circle of its border vertex realising the sliver between them), never a kink.
 // Each point is given exactly where the data is exact: lambda as a sum of square roots (the
 // edge point's closed form, junction_kinks.h) and BT as an ExactSum (Certifier::
 // exact_expr); else as certified enclosures. x, bt and error are doubles with |x_i - exact|

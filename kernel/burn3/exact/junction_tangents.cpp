@@ -89,8 +89,10 @@ class Prover {
     for (std::uint32_t y = a_; y != kNoIndex; y = s_.windows[y].parent) {
       if (!same_carriage(y)) continue;
       if (cert_.front_id(y) == fw && u_.same_frame(s_.windows[y].triangle, s_.windows[w].triangle)) return true;
-      for (std::uint32_t z = w; z != kNoIndex && carried(w, z).empty(); z = s_.windows[z].parent)
+      for (std::uint32_t z = w; z != kNoIndex && carried(w, z).empty(); z = s_.windows[z].parent) {
         if (ancestor_or_self(z, y) && carried(y, z).empty()) return true;
+        if (sibling_roots_at_q(z, y)) return true;
+      }
     }
     return false;
   }
@@ -101,6 +103,19 @@ class Prover {
     const auto& eq = s_.edge_points[q_ & ~kEdgePointBound].equal_windows;
     if (eq[0] == kNoIndex || (w != eq[0] && w != eq[1])) return false;
     return window_term(w == eq[0] ? eq[1] : eq[0]);
+  }
+  // z and y are first windows of one pseudo-source P in triangles that both hold Q: each
+  // is sigma + |Q - P| measured in its own triangle's plane, which holds P and Q (a vertex
+  // source's triangles hold the vertex, an edge point's the edge), so z(Q) = y(Q).
+  bool sibling_roots_at_q(std::uint32_t z, std::uint32_t y) const {
+    const Window &Z = s_.windows[z], &Y = s_.windows[y];
+    return Z.root() && Y.root() && Z.pseudo == Y.pseudo && holds_q(Z.triangle) && holds_q(Y.triangle);
+  }
+  bool holds_q(std::uint32_t t) const {
+    const ComplexTriangle& tr = mc_.triangle(t);
+    for (int k = 0; k < 3; ++k)
+      if (is_edge_point(q_) ? tr.e[k] == s_.edge_points[q_ & ~kEdgePointBound].edge : tr.v[k] == q_) return true;
+    return false;
   }
   bool ancestor_or_self(std::uint32_t z, std::uint32_t y) const {
     for (; y != kNoIndex; y = s_.windows[y].parent)

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <limits>
 #include <stdexcept>
 
 #include "burn3/exact/window_values.h"
@@ -759,6 +760,19 @@ std::array<int, 2> Certifier::edge_difference_signs(std::uint32_t w1, std::uint3
   int value = ball_sign(time_along(a, X) - time_along(b, X));
   if (value != 1 && value != -1) value = ball_sign(time_along(a, m) - time_along(b, m) + slope * (X - m));  // centred
   return {value, ball_sign(slope)};
+}
+
+double Certifier::edge_difference_bound(std::uint32_t w1, std::uint32_t w2, std::uint32_t edge, const mpq_class& lo,
+                                        const mpq_class& hi, long bits) {
+  BallPrecision guard(bits);
+  const Along a = along_edge(w1, edge), b = along_edge(w2, edge);
+  const Ball X = hull(ball_of(lo), ball_of(hi)), m = ball_of((lo + hi) / 2);
+  const Interval naive = (time_along(a, X) - time_along(b, X)).to_interval();
+  const Interval centred =
+      (time_along(a, m) - time_along(b, m) + (rate_along(a, X) - rate_along(b, X)) * (X - m)).to_interval();
+  auto mag = [](const Interval& d) { return std::max(-d.lo, d.hi); };
+  const double r = std::min(mag(naive), mag(centred));
+  return std::isnan(r) ? std::numeric_limits<double>::infinity() : r;
 }
 
 int Certifier::side_if_certified(std::uint32_t w, int j, const Target& x, bool arb_first) {

@@ -105,6 +105,10 @@ class Certifier {
   // crossings' isolation, edge_crossings.h).
   std::array<int, 2> edge_difference_signs(std::uint32_t w1, std::uint32_t w2, std::uint32_t edge, const mpq_class& lo,
                                            const mpq_class& hi, long bits);
+  // An upper bound of |time(w1) - time(w2)| over the whole parameter box [lo, hi] of `edge`,
+  // from the same Arb enclosures at `bits` (inf where they are unbounded).
+  double edge_difference_bound(std::uint32_t w1, std::uint32_t w2, std::uint32_t edge, const mpq_class& lo,
+                               const mpq_class& hi, long bits);
   // A window's front along an edge a + l (b - a) of its triangle, in its frame (A + l D),
   // at the current BallPrecision.
   struct Along {
