@@ -133,6 +133,23 @@ struct Difference {
   }
 };
 
+// r a first window of an edge point Q of E (on E's line) whose offset is w's time at Q
+// (w the window named by r's time expression, or the other window of Q's defining
+// crossing, equal to it at Q): along E, r = w(Q) + |x - Q| >= w(x), since w's time along E
+// is 1-Lipschitz in arc length (a unit gradient in its frame): r - w has one sign on the
+// whole line (Huygens along the edge; Q is where w burned the edge, 4.2.1).
+bool relayed_from(const WindowStore& s, std::uint32_t edge, std::uint32_t r, std::uint32_t w) {
+  const Window& R = s.windows[r];
+  if (!R.root()) return false;
+  const PseudoSource& ps = s.pseudo[R.pseudo];
+  if (ps.origin != SourceOrigin::EdgePoint || ps.time == kNoIndex || s.edge_points[ps.data].edge != edge) return false;
+  const TimeExpr& te = s.times[ps.time];
+  if (te.kind != TimeExpr::Kind::WindowAt || te.b != (ps.data | kEdgePointBound)) return false;
+  if (te.a == w) return true;
+  const auto& eq = s.edge_points[ps.data].equal_windows;
+  return (eq[0] == te.a && eq[1] == w) || (eq[1] == te.a && eq[0] == w);
+}
+
 bool opposite(int sa, int sb) { return (sa == 1 && sb == -1) || (sa == -1 && sb == 1); }
 bool decided(int s) { return s != kUndecided; }
 
@@ -189,6 +206,10 @@ EdgeCrossings isolate_crossings(const Unfolding& u, const WindowStore& s, Certif
   // One window thrown by the other's front (junction_tangents.h): b >= a on the whole
   // plane of their triangle, no sign change.
   if (A.triangle == B.triangle && (starts_on_front(u, s, cert, wa, wb) || starts_on_front(u, s, cert, wb, wa))) {
+    out.equal = true;
+    return out;
+  }
+  if (relayed_from(s, edge, wa, wb) || relayed_from(s, edge, wb, wa)) {
     out.equal = true;
     return out;
   }
@@ -298,13 +319,14 @@ EdgeCrossings isolate_crossings(const Unfolding& u, const WindowStore& s, Certif
       }
       // Arb on the whole box: exclusion or monotonicity, else undecided.
       int verdict = kUndecided;
+      double bound = std::numeric_limits<double>::infinity();  // |f| on the box, at the last level
       for (long bits = 128; bits <= cert.max_bits() && verdict == kUndecided; bits *= 2) {
-        const auto g = cert.edge_difference_signs(wa, wb, edge, x.a, x.b, bits);
+        const auto g = cert.edge_difference_signs(wa, wb, edge, x.a, x.b, bits, &bound);
         if (g[0] == 1 || g[0] == -1) verdict = 0;
         else if (g[1] == 1 || g[1] == -1) verdict = 1;
       }
       if (verdict == 1) monotone(Interval(0.0));
-      else if (verdict == kUndecided && cert.edge_difference_bound(wa, wb, edge, x.a, x.b, cert.max_bits()) <= kNegligible)
+      else if (verdict == kUndecided && bound <= kNegligible)
         ++out.negligible;  // within 2^-64 on this box: either order moves A by at most that
       else if (verdict == kUndecided) {
         ++out.undecided;

@@ -17,6 +17,9 @@
 // (deciding: escalating to max_bits). A bracket found is narrowed by bisection while the
 // double enclosures decide (to about 2^-44 of the edge), so its midpoint orders it among
 // the other breakpoints.
+// A source relayed on E (a first window r of an edge point Q of E whose offset is w's time
+// at Q, or the time at Q of the window equal to w there by Q's defining crossing):
+// r = w(Q) + |x - Q| >= w(x) along E (w is 1-Lipschitz in arc length), one sign (`equal`).
 // Identical fronts (their exact data equal, junction_kinks.h identical_along_edge): f = 0
 // on the whole line, no crossing (`equal`).
 // Ties along a stretch: f is sigma_a + sqrt(P_a) - sigma_b - sqrt(P_b) with P quadratic in l

@@ -229,7 +229,8 @@ bool Certifier::same_point_source(std::uint32_t pa, std::uint32_t pb) const {
 }
 
 // `relay` a first window of an edge point p of x's edge E whose offset is the time at p of
-// `src` (or of a window equal to it at p by p's defining equation), a first window of a point source S on E (a vertex of E or a caller's point on it),
+// `src` (or of a window equal to it at p by p's defining equation), a first window of a point
+// source S on E (a vertex of E, a caller's point on it, or another edge point of E),
 // and `w` a first window of S too, all in triangles containing E: at x on E with p between S
 // and x (decided on p's certified enclosure), time(w, x) = sigma + |x - S| = sigma + |p - S|
 // + |x - p| = time(relay, x), each distance a straight segment of E (the relayed source of a
@@ -260,33 +261,41 @@ bool Certifier::relayed_along_edge(std::uint32_t relay, std::uint32_t w, const T
     const auto& te3 = mc.triangle(t->triangle).e;
     if (std::find(te3.begin(), te3.end(), x.edge) == te3.end()) return false;
   }
-  // S's parameter on E.
+  // S's parameter on E: a rational, or the certified enclosure of an edge point of E (a
+  // kink or a stretch end relayed in turn).
   const PseudoSource& ps = s_.pseudo[a.pseudo];
   const auto& ev = mc.edge(x.edge).v;
-  mpq_class ls;
+  mpq_class sl, sh;
   if (ps.origin == SourceOrigin::Vertex && (ps.vertex == ev[0] || ps.vertex == ev[1])) {
-    ls = ps.vertex == ev[0] ? 0 : 1;
+    sl = sh = ps.vertex == ev[0] ? 0 : 1;
   } else if (ps.origin == SourceOrigin::GivenPoint) {
     const ExactPoint3 &va = mc.vertex(ev[0]).exact, &vb = mc.vertex(ev[1]).exact, &q = s_.given[ps.data].point;
     if (!(cross(vb - va, q - va) == ExactPoint3{})) return false;
-    ls = dot(q - va, vb - va) / dot(vb - va, vb - va);
-    if (ls < 0 || ls > 1) return false;
+    sl = sh = dot(q - va, vb - va) / dot(vb - va, vb - va);
+    if (sl < 0 || sl > 1) return false;
+  } else if (ps.origin == SourceOrigin::EdgePoint && s_.edge_points[ps.data].edge == x.edge) {
+    if (!edge_point_bounds(s_.edge_points[ps.data], &sl, &sh)) return false;
   } else {
     return false;
   }
   // p's certified enclosure [pl, ph].
   mpq_class pl, ph;
+  if (!edge_point_bounds(ep, &pl, &ph)) return false;
+  const mpq_class& lx = *x.lambda;
+  return (sl >= ph && lx <= pl) || (sh <= pl && lx >= ph);
+}
+
+bool Certifier::edge_point_bounds(const EdgePoint& ep, mpq_class* lo, mpq_class* hi) const {
   if (ep.exact >= 0 && s_.exact_times[ep.exact].sqrt_terms().empty() && s_.exact_times[ep.exact].constant_terms().empty()) {
-    pl = ph = s_.exact_times[ep.exact].rational_part();
+    *lo = *hi = s_.exact_times[ep.exact].rational_part();
   } else if (ep.bracketed) {
-    pl = ep.lo, ph = ep.hi;
+    *lo = ep.lo, *hi = ep.hi;
   } else if (std::isfinite(ep.lambda.lo) && std::isfinite(ep.lambda.hi)) {
-    pl = ep.lambda.lo, ph = ep.lambda.hi;
+    *lo = ep.lambda.lo, *hi = ep.lambda.hi;
   } else {
     return false;
   }
-  const mpq_class& lx = *x.lambda;
-  return (ls >= ph && lx <= pl) || (ls <= pl && lx >= ph);
+  return true;
 }
 
 bool Certifier::same_expression(std::uint32_t w1, std::uint32_t w2, const Target& x) const {
@@ -708,11 +717,17 @@ std::optional<Certifier::EdgeRoot> Certifier::ray_root_on_edge(std::uint32_t w, 
 }
 
 
+// Memoised per (frame, edge, precision): the edge's ends in a frame never change.
 Certifier::Along Certifier::along_edge(std::uint32_t w, std::uint32_t edge) {
   const std::uint32_t t = s_.windows[w].triangle;
-  Along a{evaluate(w, true), u_.edge_param_ball(t, edge, mpq_class(0)), {}};
-  a.D = ball_sub(u_.edge_param_ball(t, edge, mpq_class(1)), a.A);
-  return a;
+  const MemoKey key{u_.frame(t), edge, static_cast<std::uint64_t>(BallPrecision::bits())};
+  auto it = edge_memo_.find(key);
+  if (it == edge_memo_.end()) {
+    if (edge_memo_.size() > 200000) edge_memo_.clear();
+    const BallVec2 A = u_.edge_param_ball(t, edge, mpq_class(0));
+    it = edge_memo_.emplace(key, std::array<BallVec2, 2>{A, ball_sub(u_.edge_param_ball(t, edge, mpq_class(1)), A)}).first;
+  }
+  return Along{evaluate(w, true), it->second[0], it->second[1]};
 }
 
 namespace {
@@ -752,27 +767,29 @@ std::optional<Certifier::EdgeRoot> Certifier::crossing_root_on_edge(std::uint32_
 }
 
 std::array<int, 2> Certifier::edge_difference_signs(std::uint32_t w1, std::uint32_t w2, std::uint32_t edge,
-                                                    const mpq_class& lo, const mpq_class& hi, long bits) {
+                                                    const mpq_class& lo, const mpq_class& hi, long bits, double* bound) {
   BallPrecision guard(bits);
   const Along a = along_edge(w1, edge), b = along_edge(w2, edge);
   const Ball X = hull(ball_of(lo), ball_of(hi)), m = ball_of((lo + hi) / 2);
   const Ball slope = rate_along(a, X) - rate_along(b, X);
-  int value = ball_sign(time_along(a, X) - time_along(b, X));
-  if (value != 1 && value != -1) value = ball_sign(time_along(a, m) - time_along(b, m) + slope * (X - m));  // centred
+  const Ball naive = time_along(a, X) - time_along(b, X);
+  int value = ball_sign(naive);
+  const bool centred = value != 1 && value != -1;
+  const Ball c = centred || bound ? time_along(a, m) - time_along(b, m) + slope * (X - m) : Ball(0.0);
+  if (centred) value = ball_sign(c);
+  if (bound) {
+    auto mag = [](const Interval& d) { return std::max(-d.lo, d.hi); };
+    const double r = std::min(mag(naive.to_interval()), mag(c.to_interval()));
+    *bound = std::isnan(r) ? std::numeric_limits<double>::infinity() : r;
+  }
   return {value, ball_sign(slope)};
 }
 
 double Certifier::edge_difference_bound(std::uint32_t w1, std::uint32_t w2, std::uint32_t edge, const mpq_class& lo,
                                         const mpq_class& hi, long bits) {
-  BallPrecision guard(bits);
-  const Along a = along_edge(w1, edge), b = along_edge(w2, edge);
-  const Ball X = hull(ball_of(lo), ball_of(hi)), m = ball_of((lo + hi) / 2);
-  const Interval naive = (time_along(a, X) - time_along(b, X)).to_interval();
-  const Interval centred =
-      (time_along(a, m) - time_along(b, m) + (rate_along(a, X) - rate_along(b, X)) * (X - m)).to_interval();
-  auto mag = [](const Interval& d) { return std::max(-d.lo, d.hi); };
-  const double r = std::min(mag(naive), mag(centred));
-  return std::isnan(r) ? std::numeric_limits<double>::infinity() : r;
+  double r = 0.0;
+  edge_difference_signs(w1, w2, edge, lo, hi, bits, &r);
+  return r;
 }
 
 int Certifier::side_if_certified(std::uint32_t w, int j, const Target& x, bool arb_first) {

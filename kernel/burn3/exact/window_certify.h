@@ -103,8 +103,9 @@ class Certifier {
   // box [lo, hi] of `edge` (an edge of both triangles), in Arb at `bits`: {sign f, sign f'},
   // each kUndecided where its ball holds 0 (the exclusion and monotonicity proofs of the
   // crossings' isolation, edge_crossings.h).
+  // bound (optional): an upper bound of |f| over the box from the same enclosures.
   std::array<int, 2> edge_difference_signs(std::uint32_t w1, std::uint32_t w2, std::uint32_t edge, const mpq_class& lo,
-                                           const mpq_class& hi, long bits);
+                                           const mpq_class& hi, long bits, double* bound = nullptr);
   // An upper bound of |time(w1) - time(w2)| over the whole parameter box [lo, hi] of `edge`,
   // from the same Arb enclosures at `bits` (inf where they are unbounded).
   double edge_difference_bound(std::uint32_t w1, std::uint32_t w2, std::uint32_t edge, const mpq_class& lo,
@@ -172,6 +173,8 @@ class Certifier {
   bool same_expression(std::uint32_t w1, std::uint32_t w2, const Target& x) const;
   bool same_point_source(std::uint32_t pa, std::uint32_t pb) const;
   bool relayed_along_edge(std::uint32_t relay, std::uint32_t w, const Target& x) const;
+  // An edge point's parameter in rationals [lo, hi] (exact, its bracket, or its enclosure).
+  bool edge_point_bounds(const EdgePoint& ep, mpq_class* lo, mpq_class* hi) const;
   bool bound_fixed(std::uint32_t w, int j, std::uint32_t v) const;
   std::optional<ExactVector> target_uv(std::uint32_t f, const Target& x) const;
   int exact_side(const ExactWindow& e, int j, const Target& x) const;
@@ -204,6 +207,7 @@ class Certifier {
   mutable std::unordered_map<MemoKey, BallVec2, MemoHash> ball_cache_;   // (frame, point key, bits)
   std::unordered_map<long, std::unordered_map<std::uint32_t, Ball>> time_memo_;  // bits -> TimeExpr -> ball
   std::unordered_map<MemoKey, WindowBall, MemoHash> chain_memo_;  // (window, source vertex, bits and offset)
+  std::unordered_map<MemoKey, std::array<BallVec2, 2>, MemoHash> edge_memo_;  // (frame, edge, bits): A, D
   std::unordered_map<std::uint32_t, std::unique_ptr<ExactWindow>> exact_memo_;
   std::unordered_map<std::uint32_t, std::unique_ptr<ExactSum>> exact_time_memo_;
 };
