@@ -16,7 +16,7 @@ namespace grassfire {
 namespace {
 
 constexpr int kMaxDepth = 48;            // boxes down to 2^-48 of the range
-constexpr std::uint32_t kNodeBudget = 64;
+constexpr std::uint32_t kNodeBudget = 256;  // boxes per pair before Arb decides the rest
 constexpr std::size_t kEqualPoints = 5;  // zeros that prove f = 0 (degree <= 4 after squaring)
 constexpr int kNarrowSteps = 44;
 constexpr double kNegligible = 0x1p-64;  // a tie's width below every reported error (see negligible())
