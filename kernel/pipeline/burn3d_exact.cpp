@@ -150,7 +150,7 @@ BurnOutcome burn_by_exact(const BurnRequest& request) {
                 {"uncertified", c.uncertified},
                 {"query_candidates", q.candidates},
                 {"query_widened", q.widened},
-                {"max_vertex_bt_error", max_error},
+                {"max_vertex_bt_error", c.uncertified > 0 ? nlohmann::json("inf") : nlohmann::json(max_error)},
                 {"events", event_report(eb.propagation().stats(), junction)},
                 {"kinks", point_report(junction.kinks)},
                 {"merges", point_report(junction.merges)},
