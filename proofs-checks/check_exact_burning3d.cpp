@@ -92,15 +92,7 @@ RawComplex random_planar_sheet(std::uint32_t seed) {
 // (mutants3d.h; every sample point lies in a sheet, none in a closed subcomplex that the
 // mutants could pick).
 void mutate(const CheckContext& ctx, std::vector<Interval>& bt) {
-  std::vector<double> mid(bt.size());
-  for (std::size_t i = 0; i < bt.size(); ++i) mid[i] = bt[i].mid();
-  std::vector<double> mutated = mid;
-  mutate_burning_times(ctx, mutated, [](std::size_t) { return true; }, [](std::size_t) { return false; });
-  for (std::size_t i = 0; i < bt.size(); ++i) {
-    if (mutated[i] == mid[i]) continue;
-    const double shift = mutated[i] - mid[i];
-    bt[i] = std::isinf(mutated[i]) ? Interval::infinity() : Interval(bt[i].lo + shift, bt[i].hi + shift);
-  }
+  mutate_enclosures(ctx, bt, [](std::size_t) { return true; }, [](std::size_t) { return false; });
 }
 
 struct ExactTallies {
@@ -152,7 +144,7 @@ bool check_sheet(const CheckContext& ctx, std::uint32_t seed, ExactTallies& t) {
   for (std::uint32_t v = 0; v < mc.vertex_count(); v += vertex_stride) points.push_back(locator.locate(mc.vertex(v).exact));
   for (std::uint32_t f = 0; f < mc.triangle_count(); f += triangle_stride)
     points.push_back(point_in_triangle(mc, f, interior_weights(rng)));
-  ExactBurning eb(mc);
+  ExactBurning eb(mc, engine_options(ctx));
   eb.add_border_ignition();
   eb.run();
   t.uncertified += eb.certification().uncertified;
@@ -186,7 +178,7 @@ void check_mesh(const CheckContext& ctx, const std::string& name, std::uint32_t 
   std::mt19937 rng(seed);
   const auto faces = static_cast<std::uint32_t>(mesh.triangles.size());
   std::uniform_int_distribution<std::uint32_t> face(0, faces - 1);
-  ExactBurning eb(mc);
+  ExactBurning eb(mc, engine_options(ctx));
   SmspGeodesics reference(mesh);
   // Sources inside a face, inside an edge and at a vertex, each with its t0 in [0, 3/4].
   const int k = std::uniform_int_distribution<int>(1, 7)(rng);
@@ -278,6 +270,7 @@ MutantList exact_mutants() {
   MutantList all = burning_mutants(), output;
   for (const MutantInfo& m : all)
     if (m.name == "bt-bump" || m.name == "bt-dip" || m.name == "bt-infinite") output.push_back(m);
+  for (const MutantInfo& m : engine_mutants()) output.push_back(m);
   return output;
 }
 

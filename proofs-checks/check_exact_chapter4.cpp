@@ -392,7 +392,7 @@ void run_instance(const CheckContext& ctx, const Instance3& in, CorpusRun& c) {
                " singular edges (the junction rule is not yet fast enough on them for this report)";
     return;
   }
-  ExactBurning eb(in.mc);
+  ExactBurning eb(in.mc, engine_options(ctx));
   eb.add_border_ignition();
   eb.run();
   c.uncertified += eb.certification().uncertified;
@@ -483,6 +483,7 @@ MutantList chapter4_mutants() {
   for (const MutantInfo& m : burning_mutants())
     if (m.name == "bt-bump" || m.name == "bt-dip" || m.name == "bt-infinite" || m.name == "closed-burns")
       output.push_back(m);
+  for (const MutantInfo& m : engine_mutants()) output.push_back(m);
   return output;
 }
 

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 
 namespace grassfire::checks {
 namespace {
@@ -37,7 +38,31 @@ class NotMonotone : public BurnRuleOverride {
   bool burns(const LinkArrivals& a) const override { return a.rule && a.sectors_arrived < a.sectors; }
 };
 
+constexpr EngineMutant kEngineMutants[] = {EngineMutant::kth_arrival,     EngineMutant::first_arrival,
+                                           EngineMutant::no_kink_emission, EngineMutant::mirrored_rotation,
+                                           EngineMutant::sampled_crossings, EngineMutant::double_bending};
+
 }  // namespace
+
+MutantList engine_mutants() {
+  const char* what[] = {
+      "the exact engine: a singular edge with k sides burns at the k-th arrival (Definition 9: the (k-1)-th)",
+      "the exact engine: a singular edge burns at its first arrival",
+      "the exact engine: kink points of the junction rule emit no point source",
+      "the exact engine: pieces continued across a singular edge enter mirrored through the edge's line",
+      "the exact engine: crossings of two arrivals along an edge found by 32 samples (no certified isolation)",
+      "the exact engine: whether a fan bends decided by a double sum of atan2 with a 1e-6 margin"};
+  MutantList out;
+  for (std::size_t i = 0; i < std::size(kEngineMutants); ++i) out.push_back({engine_mutant_name(kEngineMutants[i]), what[i]});
+  return out;
+}
+
+ExactBurningOptions engine_options(const CheckContext& ctx) {
+  ExactBurningOptions o;
+  for (const EngineMutant m : kEngineMutants)
+    if (ctx.mutant == engine_mutant_name(m)) o.mutant = m;
+  return o;
+}
 
 MutantList burning_mutants() {
   return {
@@ -91,6 +116,18 @@ void mutate_burning_times(const CheckContext& ctx, std::vector<double>& bt, cons
   if (ctx.mutated("bt-bump")) x += largest;
   if (ctx.mutated("bt-dip")) x /= 2;
   if (ctx.mutated("bt-infinite")) x = DiscreteBurning::kInfinity;
+}
+
+void mutate_enclosures(const CheckContext& ctx, std::vector<Interval>& bt, const std::function<bool(std::size_t)>& in_sheet,
+                       const std::function<bool(std::size_t)>& closed) {
+  std::vector<double> mid(bt.size());
+  for (std::size_t i = 0; i < bt.size(); ++i) mid[i] = bt[i].mid();
+  std::vector<double> m = mid;
+  mutate_burning_times(ctx, m, in_sheet, closed);
+  for (std::size_t i = 0; i < bt.size(); ++i) {
+    if (m[i] == mid[i]) continue;
+    bt[i] = std::isinf(m[i]) ? Interval::infinity() : Interval(bt[i].lo + m[i] - mid[i], bt[i].hi + m[i] - mid[i]);
+  }
 }
 
 }  // namespace grassfire::checks

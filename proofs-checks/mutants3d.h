@@ -22,7 +22,9 @@
 #include <vector>
 
 #include "burn3/discrete/discrete_burning.h"
+#include "burn3/exact/window_propagation.h"
 #include "check_registry.h"
+#include "number/interval.h"
 
 namespace grassfire::checks {
 
@@ -33,9 +35,20 @@ std::unique_ptr<BurnRuleOverride> engine_rule(const CheckContext& ctx, double sp
 // The rule of the discrete burning sets (Definition 9): replaced by rule-not-monotone only.
 std::unique_ptr<BurnRuleOverride> definition_rule(const CheckContext& ctx);
 
+// Engine mutants of the exact engine (burn3/exact/engine_mutant.h), named engine-...: they
+// break the engine's own decisions (the junction rule's arrival rank, kink emission, the
+// rotation into the other sheets, crossings by samples, the bending test in doubles), not
+// its output. engine_options gives the options of the context's mutant (none otherwise).
+MutantList engine_mutants();
+ExactBurningOptions engine_options(const CheckContext& ctx);
+
 // Applies an output mutant to bt (one value per graph point). in_sheet(i): point i lies in
 // M2; closed(i): point i lies in the maximal closed subcomplex.
 void mutate_burning_times(const CheckContext& ctx, std::vector<double>& bt, const std::function<bool(std::size_t)>& in_sheet,
                           const std::function<bool(std::size_t)>& closed);
+// The same on certified enclosures (an exact engine's): the mutated value's shift moves the
+// whole enclosure (an infinite value makes it infinite).
+void mutate_enclosures(const CheckContext& ctx, std::vector<Interval>& bt, const std::function<bool(std::size_t)>& in_sheet,
+                       const std::function<bool(std::size_t)>& closed);
 
 }  // namespace grassfire::checks

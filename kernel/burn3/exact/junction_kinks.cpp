@@ -3,6 +3,7 @@
 
 #include <cmath>
 #include <functional>
+#include <memory>
 #include <stdexcept>
 
 #include "burn3/exact/window_values.h"
@@ -11,14 +12,14 @@
 
 namespace grassfire {
 
-namespace {
-
-using XV = Certifier::ExactVector;
-
-ExactPoint3 point_on(const MedialComplex& mc, std::uint32_t edge, const mpq_class& l) {
+ExactPoint3 edge_point_at(const MedialComplex& mc, std::uint32_t edge, const mpq_class& l) {
   const ExactPoint3& a = mc.vertex(mc.edge(edge).v[0]).exact;
   return a + l * (mc.vertex(mc.edge(edge).v[1]).exact - a);
 }
+
+namespace {
+
+using XV = Certifier::ExactVector;
 
 
 // A certified bracket [l1, l2] around `at` where sign_at changes sign (each sign certified,
@@ -30,18 +31,22 @@ struct Bracket {
   mpq_class lo, hi;
   bool ok = false;
 };
+// [lo, hi] with certified opposite signs at its ends narrowed by bisection (slo: the sign at lo).
+Bracket narrowed(const std::function<int(const mpq_class&)>& sign_at, mpq_class lo, mpq_class hi, int slo) {
+  for (int i = 0; i < 100; ++i) {
+    const mpq_class mid((lo + hi) / 2);
+    const int sm = sign_at(mid);
+    if (sm == kUndecided || sm == 0) break;
+    (sm == slo ? lo : hi) = mid;
+  }
+  return {lo, hi, true};
+}
 Bracket bracket(const std::function<int(const mpq_class&)>& sign_at, double at) {
   for (const double delta : {1e-6, 1e-9, 1e-3, 1e-12}) {
     mpq_class lo(std::max(0.0, at - delta)), hi(std::min(1.0, at + delta));
     const int slo = sign_at(lo), shi = sign_at(hi);
     if (slo == kUndecided || shi == kUndecided || slo == 0 || shi == 0 || slo == shi) continue;
-    for (int i = 0; i < 100; ++i) {
-      const mpq_class mid((lo + hi) / 2);
-      const int sm = sign_at(mid);
-      if (sm == kUndecided || sm == 0) break;
-      (sm == slo ? lo : hi) = mid;
-    }
-    return {lo, hi, true};
+    return narrowed(sign_at, lo, hi, slo);
   }
   return {};
 }
@@ -82,10 +87,9 @@ std::optional<EdgeTime> edge_time(const Unfolding& u, const WindowStore& s, Cert
     return t;
   }
   // distance to the line = inner * cross(D, X - p) * sqrt(g1 g2 / |D|^2) (window_certify.cpp)
-  ExactSum n2 = scaled(mul(e->d[0], e->d[0]), g1) + scaled(mul(e->d[1], e->d[1]), g2);
-  n2.simplify();
-  if (!n2.sqrt_terms().empty() || !n2.constant_terms().empty()) return std::nullopt;
-  ExactSum k = ExactSum::sqrt_of(g1 * g2 / n2.rational_part());
+  const std::optional<mpq_class> n2 = cert.line_length2(w);
+  if (!n2) return std::nullopt;
+  ExactSum k = ExactSum::sqrt_of(g1 * g2 / *n2);
   k.simplify();
   if (e->inner < 0) k.scale(-1);
   const XV ap{ExactSum::rational(a[0]) - e->p[0], ExactSum::rational(a[1]) - e->p[1]};
@@ -149,7 +153,10 @@ std::vector<ExactSum> quadratic_roots(const Field& f, const Multiquadratic& a, c
   return {mid.to_exact_sum() - r, mid.to_exact_sum() + r};
 }
 
-std::optional<ExactSum> exact_crossing(const EdgeTime& p, const EdgeTime& q, const Bracket& br) {
+// Every root of time_p - time_q along the edge line is a root of the polynomial left after
+// squaring (at most two: a quadratic in lambda); returns those roots (simplified), or none
+// when the data is too large for the exact stage.
+std::optional<std::vector<ExactSum>> candidate_roots(const EdgeTime& p, const EdgeTime& q) {
   Field f;
   std::size_t total = 0;
   for (const EdgeTime* t : {&p, &q}) {
@@ -181,13 +188,20 @@ std::optional<ExactSum> exact_crossing(const EdgeTime& p, const EdgeTime& q, con
                               m * m - f.q(4) * D2 * f.of(q.gamma));
     }
   }
+  for (ExactSum& r : roots) r.simplify();
+  return roots;
+}
+
+std::optional<ExactSum> exact_crossing(const EdgeTime& p, const EdgeTime& q, const Bracket& br) {
+  std::optional<std::vector<ExactSum>> candidates = candidate_roots(p, q);
+  if (!candidates) return std::nullopt;
+  std::vector<ExactSum>& roots = *candidates;
   // The crossing is the only candidate inside the certified bracket.
   // Roots with a certified constant (a square root that does not denest) are placed by
   // their enclosure only, and not kept as exact values (exact_sign cannot take them).
   std::optional<ExactSum> found;
   bool irrational = false;
   for (ExactSum& r : roots) {
-    r.simplify();
     int in;
     if (r.constant_terms().empty()) {
       in = exact_sign(r - ExactSum::rational(br.lo)) > 0 && exact_sign(ExactSum::rational(br.hi) - r) > 0;
@@ -207,6 +221,35 @@ std::optional<ExactSum> exact_crossing(const EdgeTime& p, const EdgeTime& q, con
 }
 
 }  // namespace
+
+bool identical_along_edge(const Unfolding& u, const WindowStore& s, Certifier& cert, std::uint32_t edge,
+                          std::uint32_t wa, std::uint32_t wb) {
+  const auto p = edge_time(u, s, cert, edge, wa);
+  const auto q = p ? edge_time(u, s, cert, edge, wb) : std::nullopt;
+  if (!p || !q || p->line != q->line) return false;
+  // Each difference proved 0 (the double enclosure rejects the others at once).
+  auto zero = [](const ExactSum& a, const ExactSum& b) {
+    if (!a.constant_terms().empty() || !b.constant_terms().empty()) return false;
+    const ExactSum d = a - b;
+    const int fast = certified_sign(d.approx());
+    if (fast == 1 || fast == -1) return false;
+    return exact_sign(d) == 0;
+  };
+  if (p->line) return zero(p->c0, q->c0) && zero(p->c1, q->c1);
+  return p->l2 == q->l2 && zero(p->beta, q->beta) && zero(p->sigma, q->sigma) && zero(p->gamma, q->gamma);
+}
+
+std::optional<std::vector<ExactSum>> crossing_candidates(const Unfolding& u, const WindowStore& s, Certifier& cert,
+                                                         std::uint32_t edge, std::uint32_t wa, std::uint32_t wb) {
+  const auto p = edge_time(u, s, cert, edge, wa);
+  const auto q = p ? edge_time(u, s, cert, edge, wb) : std::nullopt;
+  if (!p || !q) return std::nullopt;
+  try {
+    return candidate_roots(*p, *q);
+  } catch (const std::length_error&) {  // past the field's generator limit
+    return std::nullopt;
+  }
+}
 
 std::vector<double> approx_crossings(const Unfolding& u, const WindowStore& s, std::uint32_t edge, std::uint32_t wa,
                                      std::uint32_t wb, double lo, double hi) {
@@ -238,32 +281,13 @@ std::vector<double> approx_crossings(const Unfolding& u, const WindowStore& s, s
   return roots;
 }
 
-KinkParameter kink_parameter(const Unfolding& u, const WindowStore& s, Certifier& cert, std::uint32_t edge,
-                             std::uint32_t wa, std::uint32_t wb, double at) {
-  const MedialComplex& mc = u.complex();
-  // Where the difference of the two times is proved monotone with one root in [lo0, hi0]
-  // (Certifier::crossing_root_on_edge), its sign at the bisection points there outside the
-  // root's enclosure is that root's side (what compare_times would certify there); points
-  // inside the enclosure, or outside [lo0, hi0], are compared as before.
-  const double lo0 = std::max(0.0, at - 1e-6), hi0 = std::min(1.0, at + 1e-6);
-  const std::optional<Certifier::EdgeRoot> root = cert.crossing_root_on_edge(wa, wb, edge, lo0, hi0, 256);
-  const mpq_class qlo(lo0), qhi(hi0);
-  const Bracket br = bracket(
-      [&](const mpq_class& l) {
-        if (root && qlo <= l && l <= qhi) {
-          if (l < root->lo) return -root->slope;
-          if (l > root->hi) return root->slope;
-        }
-        const ExactPoint3 p = point_on(mc, edge, l);
-        const Target x{kNoIndex, &p, 0, edge, &l};
-        return cert.compare_times(wa, x, wb, x, true);
-      },
-      at);
+namespace {
+
+// The crossing's parameter from a certified bracket: its rational enclosure, and the exact
+// root of the squared equation that is the only candidate inside it, where one is found.
+KinkParameter crossing_in(const Unfolding& u, const WindowStore& s, Certifier& cert, std::uint32_t edge,
+                          std::uint32_t wa, std::uint32_t wb, const Bracket& br) {
   KinkParameter k;
-  if (!br.ok) {
-    k.lambda = Interval(at);
-    return k;
-  }
   k.certified = true;
   k.lambda = rational_enclosure(br.lo, br.hi);
   k.bracket = std::array<mpq_class, 2>{br.lo, br.hi};
@@ -280,6 +304,59 @@ KinkParameter kink_parameter(const Unfolding& u, const WindowStore& s, Certifier
     k.lambda = {std::max(k.lambda.lo, e.lo), std::min(k.lambda.hi, e.hi)};
   }
   return k;
+}
+
+// The sign of time(wa) - time(wb) at the edge point l: outside the Newton enclosure of a
+// root proved unique on [lo0, hi0] (Certifier::crossing_root_on_edge), that root's side;
+// elsewhere the staged comparison.
+std::function<int(const mpq_class&)> crossing_sign(const Unfolding& u, Certifier& cert, std::uint32_t edge,
+                                                   std::uint32_t wa, std::uint32_t wb, double lo0, double hi0) {
+  auto root = std::make_shared<std::optional<Certifier::EdgeRoot>>(
+      lo0 < hi0 ? cert.crossing_root_on_edge(wa, wb, edge, lo0, hi0, 256) : std::nullopt);
+  const mpq_class qlo(lo0), qhi(hi0);
+  const MedialComplex& mc = u.complex();
+  return [=, &cert, &mc](const mpq_class& l) {
+    if (*root && qlo <= l && l <= qhi) {
+      if (l < (*root)->lo) return -(*root)->slope;
+      if (l > (*root)->hi) return (*root)->slope;
+    }
+    const ExactPoint3 p = edge_point_at(mc, edge, l);
+    const Target x{kNoIndex, &p, 0, edge, &l};
+    return cert.compare_times(wa, x, wb, x, true);
+  };
+}
+
+}  // namespace
+
+KinkParameter kink_parameter(const Unfolding& u, const WindowStore& s, Certifier& cert, std::uint32_t edge,
+                             std::uint32_t wa, std::uint32_t wb, double at) {
+  const Bracket br =
+      bracket(crossing_sign(u, cert, edge, wa, wb, std::max(0.0, at - 1e-6), std::min(1.0, at + 1e-6)), at);
+  if (!br.ok) {
+    KinkParameter k;
+    k.lambda = Interval(at);
+    return k;
+  }
+  return crossing_in(u, s, cert, edge, wa, wb, br);
+}
+
+KinkParameter kink_parameter(const Unfolding& u, const WindowStore& s, Certifier& cert, std::uint32_t edge,
+                             std::uint32_t wa, std::uint32_t wb, const mpq_class& lo, const mpq_class& hi) {
+  if (lo == hi) {  // a proved zero at a rational
+    KinkParameter k;
+    k.certified = true;
+    k.lambda = enclose(lo);
+    k.bracket = std::array<mpq_class, 2>{lo, hi};
+    k.exact = ExactSum::rational(lo);
+    return k;
+  }
+  const auto sign_at = crossing_sign(u, cert, edge, wa, wb, lo.get_d(), hi.get_d());
+  const int slo = sign_at(lo);
+  if (slo != 1 && slo != -1) {  // certified by the isolation at max_bits; not again at 256 bits
+    KinkParameter k = crossing_in(u, s, cert, edge, wa, wb, {lo, hi, true});
+    return k;
+  }
+  return crossing_in(u, s, cert, edge, wa, wb, narrowed(sign_at, lo, hi, slo));
 }
 
 KinkParameter ray_parameter(const Unfolding& u, const WindowStore& s, Certifier& cert, std::uint32_t edge,
@@ -333,7 +410,7 @@ KinkParameter ray_parameter(const Unfolding& u, const WindowStore& s, Certifier&
       [&](const mpq_class& l) {
         if (root && l < root->lo) return -root->slope;
         if (root && l > root->hi) return root->slope;
-        const ExactPoint3 p = point_on(mc, edge, l);
+        const ExactPoint3 p = edge_point_at(mc, edge, l);
         return cert.side_if_certified(w, j, Target{kNoIndex, &p, 0, edge, &l}, true);  // undecided: the bisection stops
       },
       at);

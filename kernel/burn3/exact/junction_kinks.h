@@ -5,7 +5,8 @@
 // Computes, for an edge E = v[0] v[1] and windows of triangles on E (parameter lambda along
 // E, in each window's own frame, which contains E):
 //  - approx_crossings: the parameters in (lo, hi) where two windows' times along E cross,
-//    by sign changes on a fixed sample and bisection (doubles: they only order breakpoints);
+//    by sign changes on a fixed sample and bisection (kept only for the engine mutant
+//    sampled_crossings, engine_mutant.h; the engine isolates crossings by edge_crossings.h);
 //  - kink_parameter: one crossing located exactly. A window's time along E is
 //    sigma + sqrt(gamma + 2 beta lambda + L2 lambda^2) (a point source) or c0 + c1 lambda (a
 //    plane wave), so sigma1 + |x - s1| = sigma2 + |x - s2| becomes, after squaring twice, a
@@ -63,6 +64,23 @@ std::vector<double> approx_crossings(const Unfolding& u, const WindowStore& s, s
                                      std::uint32_t wb, double lo, double hi);
 KinkParameter kink_parameter(const Unfolding& u, const WindowStore& s, Certifier& cert, std::uint32_t edge,
                              std::uint32_t wa, std::uint32_t wb, double at);
+// The same from a certified bracket [lo, hi] of the crossing (edge_crossings.h; lo == hi: a
+// proved zero at that rational), narrowed by certified bisection.
+KinkParameter kink_parameter(const Unfolding& u, const WindowStore& s, Certifier& cert, std::uint32_t edge,
+                             std::uint32_t wa, std::uint32_t wb, const mpq_class& lo, const mpq_class& hi);
+// Every parameter where the two windows' times along the edge line are equal, among the
+// (at most two) roots of the polynomial left after squaring, as exact sums; none without
+// exact window data (or past the exact stage's size limits).
+std::optional<std::vector<ExactSum>> crossing_candidates(const Unfolding& u, const WindowStore& s, Certifier& cert,
+                                                         std::uint32_t edge, std::uint32_t wa, std::uint32_t wb);
+// Whether the two windows' times along the whole edge line are one function, proved from
+// their exact data (equal offsets and equal squared distances sigma, gamma, beta, |E|^2 in
+// their frames, or equal c0, c1 for plane waves: the same virtual source seen from the
+// edge); false where not proved (no exact data, or different).
+bool identical_along_edge(const Unfolding& u, const WindowStore& s, Certifier& cert, std::uint32_t edge,
+                          std::uint32_t wa, std::uint32_t wb);
+// The point a + l (b - a) of the edge (a, b), exactly.
+ExactPoint3 edge_point_at(const MedialComplex& mc, std::uint32_t edge, const mpq_class& l);
 KinkParameter ray_parameter(const Unfolding& u, const WindowStore& s, Certifier& cert, std::uint32_t edge,
                             std::uint32_t w, std::uint32_t bound_vertex, double at);
 

@@ -6,6 +6,7 @@
 
 #include "burn3/exact/junction_tangents.h"
 #include "burn3/exact/sources.h"
+#include "geometry3/exact_predicates3.h"
 #include "number/ball.h"
 
 namespace grassfire {
@@ -36,7 +37,18 @@ Slopes certified_slopes(Certifier& cert, const MedialComplex& mc, const WindowSt
   Slopes r;
   for (long bits = 128; bits <= max_bits; bits *= 2) {
     BallPrecision guard(bits);
-    const Ball a = slope(cert, mc, s, sw.left, sw.edge, sw.point), b = slope(cert, mc, s, sw.right, sw.edge, sw.point);
+    Ball a = slope(cert, mc, s, sw.left, sw.edge, sw.point);
+    Ball b = slope(cert, mc, s, sw.right, sw.edge2 == kNoIndex ? sw.edge : sw.edge2,
+                   sw.edge2 == kNoIndex ? sw.point : sw.point2);
+    if (sw.edge2 != kNoIndex) {
+      // At a vertex v: both per unit length, along the curve from edge into edge2.
+      const auto &e1 = mc.edge(sw.edge).v, &e2 = mc.edge(sw.edge2).v;
+      const std::uint32_t v = (e1[0] == e2[0] || e1[0] == e2[1]) ? e1[0] : e1[1];
+      const Ball l1 = sqrt(ball_of(squared_distance(mc.vertex(e1[0]).exact, mc.vertex(e1[1]).exact)));
+      const Ball l2 = sqrt(ball_of(squared_distance(mc.vertex(e2[0]).exact, mc.vertex(e2[1]).exact)));
+      a = (v == e1[1] ? a : -a) / l1;
+      b = (v == e2[0] ? b : -b) / l2;
+    }
     if (r.left == kUndecided) r.left = a.sign();
     if (r.right == kUndecided) r.right = b.sign();
     if (r.corner == kUndecided) r.corner = (b - a).sign();
@@ -46,7 +58,9 @@ Slopes certified_slopes(Certifier& cert, const MedialComplex& mc, const WindowSt
 }
 
 // a and b are one function along the edge: equal times at both ends (and at the switch).
+// Never at a vertex switch (two edges: not one function along one line).
 bool same_front(Certifier& cert, const MedialComplex& mc, const WindowPropagation::JunctionSwitch& sw) {
+  if (sw.edge2 != kNoIndex) return false;
   for (std::uint32_t v : mc.edge(sw.edge).v) {
     const Target x{v, nullptr};
     if (cert.compare_times(sw.left, x, sw.right, x) != 0) return false;
@@ -62,11 +76,25 @@ bool tangent(ExactBurning& eb, const Slopes& d, const WindowPropagation::Junctio
   return starts_on_front(eb, sw.left, sw.right) || starts_on_front(eb, sw.right, sw.left);
 }
 
+// A corner certified between two windows of one triangle of which one is proved to start
+// on the other's front (junction_tangents.h: b >= a on the whole plane, equal only along a
+// ray) cannot be a corner of A at a point where a(p) = b(p): there b - a has its minimum and
+// the slopes agree. So such a switch is no point of continuity of the computed A (two
+// record ends of one front ordered by their double parameters, a sliver between them
+// realised by neither): not classified, never called a kink.
+bool thrown_by_the_other(ExactBurning& eb, const Slopes& d, const WindowPropagation::JunctionSwitch& sw) {
+  const WindowStore& s = eb.propagation().store();
+  if (d.corner == kUndecided || s.windows[sw.left].triangle != s.windows[sw.right].triangle) return false;
+  return starts_on_front(eb, sw.left, sw.right) || starts_on_front(eb, sw.right, sw.left);
+}
+
 std::optional<JunctionPoint::Kind> classify(const Slopes& d, bool same, bool tangent) {
   using K = JunctionPoint::Kind;
   if (d.corner == 1) return K::Kink;
   if (d.corner == -1) {
-    if (d.left == 1 && d.right == -1) return K::Quench;
+    // The fronts meet (one running along E into one arriving broadside counts: a' > 0 = b').
+    if (d.left >= 0 && d.right <= 0 && d.left != kUndecided && d.right != kUndecided && (d.left == 1 || d.right == -1))
+      return K::Quench;
     if (d.left == -1 || d.right == 1) return K::Merge;
     return std::nullopt;
   }
@@ -96,11 +124,16 @@ JunctionPoints junction_points(ExactBurning& eb) {
   const long max_bits = 512;
   for (const auto& sw : switches) {
     const Slopes d = certified_slopes(cert, mc, s, sw, max_bits);
+    // At a vertex: one pseudo-source's front continued from one edge's triangle into the
+    // other's (equal slopes): not a switch.
+    if (sw.edge2 != kNoIndex && d.corner == kUndecided && s.windows[sw.left].pseudo == s.windows[sw.right].pseudo)
+      continue;
     const bool same = d.corner == kUndecided && same_front(cert, mc, sw);
     // One front through one sheet side, split between two windows by the mesh: BT runs on
     // smoothly and no front meets another there.
     if (same && s.windows[sw.left].triangle == s.windows[sw.right].triangle) continue;
-    const std::optional<JunctionPoint::Kind> kind = classify(d, same, !same && tangent(eb, d, sw));
+    std::optional<JunctionPoint::Kind> kind = classify(d, same, !same && tangent(eb, d, sw));
+    if (kind && *kind != JunctionPoint::Kind::Tangent && thrown_by_the_other(eb, d, sw)) kind.reset();
     if (!kind) {
       ++out.unclassified;
       continue;

@@ -25,13 +25,21 @@
 //    runs on smoothly (a Linear border edge's plane wave continued by the circle about its
 //    border vertex, or a circle by the circle of a vertex it ignited): no corner, so neither a
 //    kink nor a quench, and not a merge of two fronts either; listed as `tangents`;
-//  - unclassified otherwise (a sign no stage certified; counted, never guessed).
+//  - unclassified otherwise (a sign no stage certified; counted, never guessed), and where
+//    a corner is certified between two windows of one triangle one of which is proved to
+//    start on the other's front: b >= a with equality only along a ray leaves no corner
+//    where a(p) = b(p), so such a switch is a discontinuity of the computed A (tripod-s2: two
+//    record ends of one plane wave 1e-15 apart, ordered by their double parameters, with the
+//    circle of its border vertex realising the sliver between them), never a kink.
 // Each point is given exactly where the data is exact: lambda as a sum of square roots (the
 // edge point's closed form, junction_kinks.h) and BT as an ExactSum (Certifier::
 // exact_expr); else as certified enclosures. x, bt and error are doubles with |x_i - exact|
 // <= error and |bt - BT(p)| <= error.
-// Switches at vertices (between two edges of a curve) are not listed: the link rule decides
-// those points (vertex_burning.cpp) and the event log lists them. Quench lines inside
+// Switches at vertices where a curve runs on from one singular edge into another (no link
+// rule there) are classified the same way, with both slopes per unit length along the curve
+// (the board and fin whose curve runs at direction (3/5, 4/5) has its kink s* = 5 at a vertex).
+// Switches at vertices with a link rule (singular points, segments) are not listed: the link
+// rule decides those points (vertex_burning.cpp) and the event log lists them. Quench lines inside
 // sheets (where two windows meet) are curves, not points, and not listed.
 // Contract: eb has run. Complexity: O(switches) Arb evaluations of two windows' chains at
 // 128..max_bits bits, plus 2 staged comparisons per switch whose slopes Arb cannot separate

@@ -15,8 +15,8 @@ using Crossing = std::array<std::uint32_t, 3>;  // edge, triangle entered, trian
 
 class Prover {
  public:
-  Prover(ExactBurning& eb, std::uint32_t a, std::uint32_t b)
-      : u_(eb.unfolding()), s_(eb.propagation().store()), cert_(eb.certifier()), mc_(eb.complex()), a_(a), b_(b) {}
+  Prover(const Unfolding& u, const WindowStore& s, Certifier& cert, std::uint32_t a, std::uint32_t b)
+      : u_(u), s_(s), cert_(cert), mc_(u.complex()), a_(a), b_(b) {}
 
   bool run() {
     const Window& B = s_.windows[b_];
@@ -89,8 +89,10 @@ class Prover {
     for (std::uint32_t y = a_; y != kNoIndex; y = s_.windows[y].parent) {
       if (!same_carriage(y)) continue;
       if (cert_.front_id(y) == fw && u_.same_frame(s_.windows[y].triangle, s_.windows[w].triangle)) return true;
-      for (std::uint32_t z = w; z != kNoIndex && carried(w, z).empty(); z = s_.windows[z].parent)
+      for (std::uint32_t z = w; z != kNoIndex && carried(w, z).empty(); z = s_.windows[z].parent) {
         if (ancestor_or_self(z, y) && carried(y, z).empty()) return true;
+        if (sibling_roots_at_q(z, y)) return true;
+      }
     }
     return false;
   }
@@ -101,6 +103,19 @@ class Prover {
     const auto& eq = s_.edge_points[q_ & ~kEdgePointBound].equal_windows;
     if (eq[0] == kNoIndex || (w != eq[0] && w != eq[1])) return false;
     return window_term(w == eq[0] ? eq[1] : eq[0]);
+  }
+  // z and y are first windows of one pseudo-source P in triangles that both hold Q: each
+  // is sigma + |Q - P| measured in its own triangle's plane, which holds P and Q (a vertex
+  // source's triangles hold the vertex, an edge point's the edge), so z(Q) = y(Q).
+  bool sibling_roots_at_q(std::uint32_t z, std::uint32_t y) const {
+    const Window &Z = s_.windows[z], &Y = s_.windows[y];
+    return Z.root() && Y.root() && Z.pseudo == Y.pseudo && holds_q(Z.triangle) && holds_q(Y.triangle);
+  }
+  bool holds_q(std::uint32_t t) const {
+    const ComplexTriangle& tr = mc_.triangle(t);
+    for (int k = 0; k < 3; ++k)
+      if (is_edge_point(q_) ? tr.e[k] == s_.edge_points[q_ & ~kEdgePointBound].edge : tr.v[k] == q_) return true;
+    return false;
   }
   bool ancestor_or_self(std::uint32_t z, std::uint32_t y) const {
     for (; y != kNoIndex; y = s_.windows[y].parent)
@@ -131,6 +146,11 @@ class Prover {
 
 }  // namespace
 
-bool starts_on_front(ExactBurning& eb, std::uint32_t a, std::uint32_t b) { return Prover(eb, a, b).run(); }
+bool starts_on_front(ExactBurning& eb, std::uint32_t a, std::uint32_t b) {
+  return Prover(eb.unfolding(), eb.propagation().store(), eb.certifier(), a, b).run();
+}
+bool starts_on_front(const Unfolding& u, const WindowStore& s, Certifier& cert, std::uint32_t a, std::uint32_t b) {
+  return Prover(u, s, cert, a, b).run();
+}
 
 }  // namespace grassfire

@@ -44,5 +44,7 @@ namespace grassfire {
 // True when b is a point window whose offset is proved equal to a's time at b's source
 // (then b >= a on t's plane, touching along a ray: a tangent handover wherever b(p) = a(p)).
 bool starts_on_front(ExactBurning& eb, std::uint32_t a, std::uint32_t b);
+// The same during the propagation (the crossings' isolation: then b - a >= 0 has no sign change).
+bool starts_on_front(const Unfolding& u, const WindowStore& s, Certifier& cert, std::uint32_t a, std::uint32_t b);
 
 }  // namespace grassfire

@@ -62,33 +62,31 @@ int arb_fan_angle(const MedialComplex& mc, const Sector& s) {
   return 0;
 }
 
-// The same, fast: the corner angles' sum Theta in doubles only locates Theta within
-// (limit - pi, limit + pi) (atan2 errs by a few ulps; the margin 1e-6 is 10^8 times more);
-// the product of the unit complex numbers e^{i theta}, in Interval arithmetic, then decides
-// the side by the sign of its imaginary part (rigorous). 0 when that does not decide.
-int interval_fan_angle(const Unfolding& u, const Sector& s) {
+// The corner vectors a = A - apex, b = B - apex of triangle t's corner at the apex.
+void corner_vectors(const Unfolding& u, const Sector& s, std::uint32_t t, std::array<Interval, 3>* a,
+                    std::array<Interval, 3>* b) {
   const MedialComplex& mc = u.complex();
-  const double limit = s.closed ? 2 * M_PI : M_PI;
-  auto corner = [&](std::uint32_t t, std::array<Interval, 3>* a, std::array<Interval, 3>* b) {
-    const auto es = edges_at(mc.triangle(t), s.apex);
-    const auto& o = u.vertex_interval(s.apex);
-    const auto& pa = u.vertex_interval(other_end(mc, es[0], s.apex));
-    const auto& pb = u.vertex_interval(other_end(mc, es[1], s.apex));
-    for (int k = 0; k < 3; ++k) (*a)[k] = pa[k] - o[k], (*b)[k] = pb[k] - o[k];
-  };
-  double theta = 0.0;
-  for (std::uint32_t t : s.triangles) {
-    std::array<Interval, 3> a, b;
-    corner(t, &a, &b);
-    const double ax = a[0].mid(), ay = a[1].mid(), az = a[2].mid(), bx = b[0].mid(), by = b[1].mid(), bz = b[2].mid();
-    const double cx = ay * bz - az * by, cy = az * bx - ax * bz, cz = ax * by - ay * bx;
-    theta += std::atan2(std::sqrt(cx * cx + cy * cy + cz * cz), ax * bx + ay * by + az * bz);
-  }
-  if (std::fabs(theta - limit) > 1e-6) return theta > limit ? 1 : -1;
+  const auto es = edges_at(mc.triangle(t), s.apex);
+  const auto& o = u.vertex_interval(s.apex);
+  const auto& pa = u.vertex_interval(other_end(mc, es[0], s.apex));
+  const auto& pb = u.vertex_interval(other_end(mc, es[1], s.apex));
+  for (int k = 0; k < 3; ++k) (*a)[k] = pa[k] - o[k], (*b)[k] = pb[k] - o[k];
+}
+
+// The same, fast and rigorous: the product z = prod e^{i theta_j} of the corners' unit
+// complex numbers (cos theta_j = a.b / |a||b|, sin theta_j = |a x b| / |a||b| >= 0) in
+// Interval arithmetic, with Theta's quadrant tracked along the product: each corner adds
+// theta_j in (0, pi), so the partial sum moves from quadrant n to one of n, n + 1, n + 2
+// (three quadrants, distinct mod 4), which the certified signs of z's real and imaginary
+// parts name. Theta's quadrant then places it against pi (quadrant index >= 2) or 2 pi
+// (>= 4). 0 when a sign is not certified (z on an axis: Theta at a multiple of pi / 2, an
+// exact pi among them; Arb and the caller decide).
+int interval_fan_angle(const Unfolding& u, const Sector& s) {
   Interval re(1.0), im(0.0);
+  int quadrant = 0;  // Theta in [quadrant pi / 2, (quadrant + 1) pi / 2)
   for (std::uint32_t t : s.triangles) {
     std::array<Interval, 3> a, b;
-    corner(t, &a, &b);
+    corner_vectors(u, s, t, &a, &b);
     const Interval dot = a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
     const Interval cx = a[1] * b[2] - a[2] * b[1], cy = a[2] * b[0] - a[0] * b[2], cz = a[0] * b[1] - a[1] * b[0];
     const Interval cr = sqrt(square(cx) + square(cy) + square(cz));
@@ -97,17 +95,35 @@ int interval_fan_angle(const Unfolding& u, const Sector& s) {
     const Interval c = dot / n, sn = cr / n;
     const Interval r2 = re * c - im * sn, i2 = re * sn + im * c;
     re = r2, im = i2;
+    const int sr = certified_sign(re), si = certified_sign(im);
+    if ((sr != 1 && sr != -1) || (si != 1 && si != -1)) return 0;
+    const int q = si > 0 ? (sr > 0 ? 0 : 1) : (sr < 0 ? 2 : 3);  // quadrant mod 4
+    int next = quadrant;
+    while ((next & 3) != q) ++next;
+    quadrant = next;  // within quadrant + 2: theta_j < pi
   }
-  const int si = certified_sign(im);
-  if (si != 1 && si != -1) return 0;
-  // Theta in (limit - pi, limit + pi): above the limit iff sin(Theta) has the sign of
-  // sin(limit + 0) seen from above: + for 2 pi, - for pi.
-  return s.closed ? si : -si;
+  const int limit = s.closed ? 4 : 2;
+  return quadrant >= limit ? 1 : -1;
+}
+
+// engine-double-bending (engine_mutant.h): the corner angles' sum in doubles against the
+// limit, decided at a margin of 1e-6 (the rule before the certified one), else bends.
+int double_fan_angle(const Unfolding& u, const Sector& s) {
+  const double limit = s.closed ? 2 * M_PI : M_PI;
+  double theta = 0.0;
+  for (std::uint32_t t : s.triangles) {
+    std::array<Interval, 3> a, b;
+    corner_vectors(u, s, t, &a, &b);
+    const double ax = a[0].mid(), ay = a[1].mid(), az = a[2].mid(), bx = b[0].mid(), by = b[1].mid(), bz = b[2].mid();
+    const double cx = ay * bz - az * by, cy = az * bx - ax * bz, cz = ax * by - ay * bx;
+    theta += std::atan2(std::sqrt(cx * cx + cy * cy + cz * cz), ax * bx + ay * by + az * bz);
+  }
+  return std::fabs(theta - limit) > 1e-6 ? (theta > limit ? 1 : -1) : 1;
 }
 
 }  // namespace
 
-SectorGeometry sector_geometry(const Unfolding& u) {
+SectorGeometry sector_geometry(const Unfolding& u, EngineMutant mutant) {
   const MedialComplex& mc = u.complex();
   SectorGeometry g;
   g.corner_sector.assign(3 * mc.triangle_count(), kNoIndex);
@@ -122,6 +138,10 @@ SectorGeometry sector_geometry(const Unfolding& u) {
     const std::uint32_t f0 = u.frame(s.triangles[0]);
     if (std::all_of(s.triangles.begin(), s.triangles.end(), [&](std::uint32_t t) { return u.frame(t) == f0; })) {
       g.bends[k] = !s.closed && planar_open_fan_bends(u, s);
+      continue;
+    }
+    if (mutant == EngineMutant::double_bending) {
+      g.bends[k] = double_fan_angle(u, s) >= 0;
       continue;
     }
     int c = interval_fan_angle(u, s);

@@ -10,11 +10,11 @@
 //  - fans inside one coplanar patch (unfolding.h): a closed fan is flat (exactly 2 pi); an open fan turns
 //    from its first end edge to its last, and its angle exceeds pi iff that turn is
 //    reflex, decided by exact rational orientation (a straight border has exactly pi);
-//  - other fans: the corner angles' sum Theta against pi or 2 pi: the sum in doubles places
-//    Theta within pi of the limit (atan2 errs by a few ulps, the margin is 1e-6), then the
-//    sign of the imaginary part of the product of the unit complex numbers of the corners,
-//    in Interval arithmetic, decides; if that cannot, Arb (atan2 at 64, 128, 256 bits);
-//    a sum that no stage separates from the limit is taken to bend.
+//  - other fans: the corner angles' sum Theta against pi or 2 pi: the product of the unit
+//    complex numbers of the corners in Interval arithmetic, Theta's quadrant tracked along
+//    it by certified signs (each corner adds less than pi), decides; if that cannot, Arb
+//    (atan2 at 64, 128, 256 bits); a sum that no stage separates from the limit is taken to
+//    bend (counted: undecided_angles). No double decides (the mutant double_bending does).
 // Also the map from a triangle corner to its sector.
 // Contract: a validated MedialComplex. Complexity: O(corners) Interval operations (Arb
 // only for fans whose angle equals the limit or nearly).
@@ -23,6 +23,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "burn3/exact/engine_mutant.h"
 #include "burn3/exact/unfolding.h"
 
 namespace grassfire {
@@ -33,6 +34,6 @@ struct SectorGeometry {
   std::uint64_t undecided_angles = 0;        // fans taken to bend because no precision decided
 };
 
-SectorGeometry sector_geometry(const Unfolding& u);
+SectorGeometry sector_geometry(const Unfolding& u, EngineMutant mutant = EngineMutant::none);
 
 }  // namespace grassfire

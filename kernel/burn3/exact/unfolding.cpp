@@ -268,7 +268,16 @@ BallVec2 Unfolding::edge_param_ball(std::uint32_t t, std::uint32_t edge, const m
   }
   const auto& c = it->second;
   const auto s = frame_scale_ball(t);
-  return {ball_of(mpq_class(c[0] + l * c[1])) / s[0], ball_of(mpq_class(c[2] + l * c[3])) / s[1]};
+  // c0 + l c1 as one fraction, not reduced (no gcd: its value is all ball_of reads).
+  auto affine = [&l](const mpq_class& c0, const mpq_class& c1) {
+    mpq_class q;
+    mpz_class num = c0.get_num() * c1.get_den() * l.get_den() + l.get_num() * c1.get_num() * c0.get_den();
+    mpz_class den = c0.get_den() * c1.get_den() * l.get_den();
+    mpz_swap(mpq_numref(q.get_mpq_t()), num.get_mpz_t());
+    mpz_swap(mpq_denref(q.get_mpq_t()), den.get_mpz_t());
+    return ball_of(q);
+  };
+  return {affine(c[0], c[1]) / s[0], affine(c[2], c[3]) / s[1]};
 }
 
 BallVec2 Unfolding::vertex_ball(std::uint32_t t, std::uint32_t v) const {

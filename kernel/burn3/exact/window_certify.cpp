@@ -2,7 +2,9 @@
 #include "burn3/exact/window_certify.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstring>
+#include <limits>
 #include <stdexcept>
 
 #include "burn3/exact/window_values.h"
@@ -224,6 +226,76 @@ bool Certifier::same_point_source(std::uint32_t pa, std::uint32_t pb) const {
     return a.origin == SourceOrigin::Vertex || a.origin == SourceOrigin::GivenPoint || a.origin == SourceOrigin::EdgePoint;
   return a.origin == SourceOrigin::Vertex && b.origin == SourceOrigin::Vertex && a.vertex == b.vertex &&
          a.time == b.time && a.time != kNoIndex;
+}
+
+// `relay` a first window of an edge point p of x's edge E whose offset is the time at p of
+// `src` (or of a window equal to it at p by p's defining equation), a first window of a point
+// source S on E (a vertex of E, a caller's point on it, or another edge point of E),
+// and `w` a first window of S too, all in triangles containing E: at x on E with p between S
+// and x (decided on p's certified enclosure), time(w, x) = sigma + |x - S| = sigma + |p - S|
+// + |x - p| = time(relay, x), each distance a straight segment of E (the relayed source of a
+// kink or a stretch end, 4.2.1, beyond it along the edge).
+bool Certifier::relayed_along_edge(std::uint32_t relay, std::uint32_t w, const Target& x) const {
+  if (!x.point || x.edge == kNoIndex || !x.lambda) return false;
+  const Window &b = s_.windows[relay], &a = s_.windows[w];
+  if (!b.root() || !a.root()) return false;
+  const PseudoSource& pb = s_.pseudo[b.pseudo];
+  if (pb.origin != SourceOrigin::EdgePoint || pb.time == kNoIndex) return false;
+  const EdgePoint& ep = s_.edge_points[pb.data];
+  if (ep.edge != x.edge) return false;
+  const TimeExpr& te = s_.times[pb.time];
+  if (te.kind != TimeExpr::Kind::WindowAt || te.b != (pb.data | kEdgePointBound)) return false;
+  // The window whose time at p is the offset, or the other window of p's defining equation
+  // (a certified crossing: the two times are equal at p).
+  auto of_s = [&](std::uint32_t v) {
+    return v != kNoIndex && s_.windows[v].root() && same_point_source(s_.windows[v].pseudo, a.pseudo);
+  };
+  std::uint32_t from = kNoIndex;
+  if (of_s(te.a)) from = te.a;
+  for (int k = 0; k < 2 && from == kNoIndex; ++k)
+    if (ep.equal_windows[k] == te.a && of_s(ep.equal_windows[1 - k])) from = ep.equal_windows[1 - k];
+  if (from == kNoIndex) return false;
+  const Window& src = s_.windows[from];
+  const MedialComplex& mc = u_.complex();
+  for (const Window* t : {&a, &b, &src}) {
+    const auto& te3 = mc.triangle(t->triangle).e;
+    if (std::find(te3.begin(), te3.end(), x.edge) == te3.end()) return false;
+  }
+  // S's parameter on E: a rational, or the certified enclosure of an edge point of E (a
+  // kink or a stretch end relayed in turn).
+  const PseudoSource& ps = s_.pseudo[a.pseudo];
+  const auto& ev = mc.edge(x.edge).v;
+  mpq_class sl, sh;
+  if (ps.origin == SourceOrigin::Vertex && (ps.vertex == ev[0] || ps.vertex == ev[1])) {
+    sl = sh = ps.vertex == ev[0] ? 0 : 1;
+  } else if (ps.origin == SourceOrigin::GivenPoint) {
+    const ExactPoint3 &va = mc.vertex(ev[0]).exact, &vb = mc.vertex(ev[1]).exact, &q = s_.given[ps.data].point;
+    if (!(cross(vb - va, q - va) == ExactPoint3{})) return false;
+    sl = sh = dot(q - va, vb - va) / dot(vb - va, vb - va);
+    if (sl < 0 || sl > 1) return false;
+  } else if (ps.origin == SourceOrigin::EdgePoint && s_.edge_points[ps.data].edge == x.edge) {
+    if (!edge_point_bounds(s_.edge_points[ps.data], &sl, &sh)) return false;
+  } else {
+    return false;
+  }
+  // p's certified enclosure [pl, ph].
+  mpq_class pl, ph;
+  if (!edge_point_bounds(ep, &pl, &ph)) return false;
+  const mpq_class& lx = *x.lambda;
+  return (sl >= ph && lx <= pl) || (sh <= pl && lx >= ph);
+}
+
+bool Certifier::edge_point_bounds(const EdgePoint& ep, mpq_class* lo, mpq_class* hi) const {
+  if (ep.exact >= 0 && s_.exact_times[ep.exact].sqrt_terms().empty() && s_.exact_times[ep.exact].constant_terms().empty()) {
+    *lo = *hi = s_.exact_times[ep.exact].rational_part();
+  } else if (ep.bracketed) {
+    *lo = ep.lo, *hi = ep.hi;
+  } else if (std::isfinite(ep.lambda.lo) && std::isfinite(ep.lambda.hi)) {
+    *lo = ep.lambda.lo, *hi = ep.lambda.hi;
+  } else {
+    return false;
+  }
+  return true;
 }
 
 bool Certifier::same_expression(std::uint32_t w1, std::uint32_t w2, const Target& x) const {
@@ -516,6 +588,22 @@ int Certifier::exact_side(const ExactWindow& e, int j, const Target& x) const {
   return -e.inner * exact_sign(metric_dot(e.d, sub(p, e.image[j]), u_.g1(e.frame), u_.g2(e.frame)));
 }
 
+std::optional<mpq_class> Certifier::line_length2(std::uint32_t w) {
+  const ExactWindow* e = exact_window(w);
+  if (!e || !e->line) return std::nullopt;
+  ExactSum n2 = metric_dot(e->d, e->d, u_.g1(e->frame), u_.g2(e->frame));
+  n2.simplify();
+  if (n2.sqrt_terms().empty() && n2.constant_terms().empty()) return n2.rational_part();
+  // Irrational crossings leave sums of square roots that the simplification does not fold:
+  // d is the border edge's vector carried by isometries, so |d|^2 is its squared length,
+  // proved here by exact comparison (not assumed).
+  const PseudoSource& ps = s_.pseudo[s_.windows[w].pseudo];
+  if (ps.origin != SourceOrigin::BorderPlane || ps.exact < 0 || !n2.constant_terms().empty()) return std::nullopt;
+  const mpq_class len2 = edge_length2(s_.exact[ps.exact].edge);
+  if (exact_sign(n2 - ExactSum::rational(len2)) != 0) return std::nullopt;
+  return len2;
+}
+
 std::optional<ExactSum> Certifier::exact_time(std::uint32_t w, const Target& x) {
   const ExactWindow* e = exact_window(w);
   if (!e) return std::nullopt;
@@ -539,10 +627,9 @@ std::optional<ExactSum> Certifier::exact_time(std::uint32_t w, const Target& x) 
     }
   } else {
     // distance to the line = inner * cross(d, X - p) * sqrt(g1 g2 / |d|^2)
-    ExactSum n2 = metric_dot(e->d, e->d, g1, g2);
-    n2.simplify();
-    if (!n2.sqrt_terms().empty()) return std::nullopt;
-    const ExactSum dist = mul(ExactSum::sqrt_of(g1 * g2 / n2.rational_part()), cross_xv(e->d, sub(p, e->p)));
+    const std::optional<mpq_class> n2 = line_length2(w);
+    if (!n2) return std::nullopt;
+    const ExactSum dist = mul(ExactSum::sqrt_of(g1 * g2 / *n2), cross_xv(e->d, sub(p, e->p)));
     r += e->inner > 0 ? dist : q(0) - dist;
   }
   r.simplify();
@@ -630,45 +717,79 @@ std::optional<Certifier::EdgeRoot> Certifier::ray_root_on_edge(std::uint32_t w, 
 }
 
 
+// Memoised per (frame, edge, precision): the edge's ends in a frame never change.
+Certifier::Along Certifier::along_edge(std::uint32_t w, std::uint32_t edge) {
+  const std::uint32_t t = s_.windows[w].triangle;
+  const MemoKey key{u_.frame(t), edge, static_cast<std::uint64_t>(BallPrecision::bits())};
+  auto it = edge_memo_.find(key);
+  if (it == edge_memo_.end()) {
+    if (edge_memo_.size() > 200000) edge_memo_.clear();
+    const BallVec2 A = u_.edge_param_ball(t, edge, mpq_class(0));
+    it = edge_memo_.emplace(key, std::array<BallVec2, 2>{A, ball_sub(u_.edge_param_ball(t, edge, mpq_class(1)), A)}).first;
+  }
+  return Along{evaluate(w, true), it->second[0], it->second[1]};
+}
+
+namespace {
+using Along = Certifier::Along;
+Ball time_along(const Along& a, const Ball& l) {  // time_ball at the edge point l
+  return time_at(a.b, BallVec2{a.A.x + l * a.D.x, a.A.y + l * a.D.y});
+}
+Ball rate_along(const Along& a, const Ball& l) {  // its derivative in l
+  if (a.b.plane) return a.b.source.x * a.D.x + a.b.source.y * a.D.y;
+  const BallVec2 d{a.A.x + l * a.D.x - a.b.source.x, a.A.y + l * a.D.y - a.b.source.y};
+  return (d.x * a.D.x + d.y * a.D.y) / sqrt(d.x * d.x + d.y * d.y);
+}
+}  // namespace
+
 std::optional<Certifier::EdgeRoot> Certifier::crossing_root_on_edge(std::uint32_t w1, std::uint32_t w2,
                                                                     std::uint32_t edge, double lo, double hi,
                                                                     long bits) {
   BallPrecision guard(bits);
-  struct Along {
-    WindowBall b;
-    BallVec2 A, D;  // the edge a + l (b - a) in the window's frame: A + l D
-  };
-  auto along = [&](std::uint32_t w) {
-    const std::uint32_t t = s_.windows[w].triangle;
-    Along a{evaluate(w, true), u_.edge_param_ball(t, edge, mpq_class(0)), {}};
-    a.D = ball_sub(u_.edge_param_ball(t, edge, mpq_class(1)), a.A);
-    return a;
-  };
-  const Along a = along(w1), b = along(w2);
-  auto time = [](const Along& a, const Ball& l) {  // time_ball at the edge point l
-    return time_at(a.b, BallVec2{a.A.x + l * a.D.x, a.A.y + l * a.D.y});
-  };
-  auto rate = [](const Along& a, const Ball& l) {  // its derivative in l
-    if (a.b.plane) return a.b.source.x * a.D.x + a.b.source.y * a.D.y;
-    const BallVec2 d{a.A.x + l * a.D.x - a.b.source.x, a.A.y + l * a.D.y - a.b.source.y};
-    return (d.x * a.D.x + d.y * a.D.y) / sqrt(d.x * d.x + d.y * d.y);
-  };
+  const Along a = along_edge(w1, edge), b = along_edge(w2, edge);
   Ball X = Ball::from_interval(Interval{lo, hi});
-  const Ball dX = rate(a, X) - rate(b, X);
+  const Ball dX = rate_along(a, X) - rate_along(b, X);
   const int slope = dX.sign();
   if (slope != 1 && slope != -1) return std::nullopt;
-  if ((time(a, Ball(lo)) - time(b, Ball(lo))).sign() != -slope || (time(a, Ball(hi)) - time(b, Ball(hi))).sign() != slope)
+  if ((time_along(a, Ball(lo)) - time_along(b, Ball(lo))).sign() != -slope ||
+      (time_along(a, Ball(hi)) - time_along(b, Ball(hi))).sign() != slope)
     return std::nullopt;
   // f is monotone on X with a sign change: one root, which every Newton image contains.
   for (int i = 0; i < 8; ++i) {
     Ball m;
     arb_get_mid_arb(m.get(), X.get());
-    const Ball n = m - (time(a, m) - time(b, m)) / (rate(a, X) - rate(b, X));
+    const Ball n = m - (time_along(a, m) - time_along(b, m)) / (rate_along(a, X) - rate_along(b, X));
     Ball y;
     if (!arb_intersection(y.get(), X.get(), n.get(), bits)) return std::nullopt;
     X = y;
   }
   return rational_root(X, slope, bits);
+}
+
+std::array<int, 2> Certifier::edge_difference_signs(std::uint32_t w1, std::uint32_t w2, std::uint32_t edge,
+                                                    const mpq_class& lo, const mpq_class& hi, long bits, double* bound) {
+  BallPrecision guard(bits);
+  const Along a = along_edge(w1, edge), b = along_edge(w2, edge);
+  const Ball X = hull(ball_of(lo), ball_of(hi)), m = ball_of((lo + hi) / 2);
+  const Ball slope = rate_along(a, X) - rate_along(b, X);
+  const Ball naive = time_along(a, X) - time_along(b, X);
+  int value = ball_sign(naive);
+  const bool centred = value != 1 && value != -1;
+  const Ball c = centred || bound ? time_along(a, m) - time_along(b, m) + slope * (X - m) : Ball(0.0);
+  if (centred) value = ball_sign(c);
+  if (bound) {
+    auto mag = [](const Interval& d) { return std::max(-d.lo, d.hi); };
+    const double r = std::min(mag(naive.to_interval()), mag(c.to_interval()));
+    *bound = std::isnan(r) ? std::numeric_limits<double>::infinity() : r;
+  }
+  return {value, ball_sign(slope)};
+}
+
+double Certifier::edge_difference_bound(std::uint32_t w1, std::uint32_t w2, std::uint32_t edge, const mpq_class& lo,
+                                        const mpq_class& hi, long bits) {
+  double r = 0.0;
+  edge_difference_signs(w1, w2, edge, lo, hi, bits, &r);
+  return r;
 }
 
 int Certifier::side_if_certified(std::uint32_t w, int j, const Target& x, bool arb_first) {
@@ -706,15 +827,17 @@ int Certifier::side_if_certified(std::uint32_t w, int j, const Target& x, bool a
   return arb_first ? kUndecided : arb();
 }
 
-int Certifier::compare_times(std::uint32_t w1, const Target& x1, std::uint32_t w2, const Target& x2, bool arb_first) {
+int Certifier::compare_times(std::uint32_t w1, const Target& x1, std::uint32_t w2, const Target& x2, bool arb_first,
+                             bool deciding) {
   trim_memos();
+  const long cap = deciding ? max_bits_ : prune_bits_;
   const int s = certified_sign(time_interval(w1, x1) - time_interval(w2, x2));
   if (s != kUndecided) {
     ++counts.filter;
     return s;
   }
   const bool same_target = x1.point == x2.point && x1.vertex == x2.vertex;
-  if (same_target && same_expression(w1, w2, x1)) {
+  if (same_target && (same_expression(w1, w2, x1) || relayed_along_edge(w1, w2, x1) || relayed_along_edge(w2, w1, x1))) {
     ++counts.structural_equal;
     return 0;
   }
@@ -730,7 +853,7 @@ int Certifier::compare_times(std::uint32_t w1, const Target& x1, std::uint32_t w
     }
   }
   const int flip = fa < fb ? 1 : -1;
-  const MemoKey key{tag(kTimes, std::min(fa, fb)) | cap_code(prune_bits_), std::max(fa, fb), where};
+  const MemoKey key{tag(kTimes, std::min(fa, fb)) | cap_code(cap), std::max(fa, fb), where};
   if (keyed)
     if (const std::optional<int> m = recall(key)) return *m == kUndecided ? *m : flip * *m;
   auto done = [&](int r) {
@@ -738,7 +861,7 @@ int Certifier::compare_times(std::uint32_t w1, const Target& x1, std::uint32_t w
     return r == kUndecided ? remember(key, r) : remember(key, flip * r) * flip;
   };
   auto arb_level = [&] { return ball_sign(time_ball(w1, x1) - time_ball(w2, x2)); };
-  auto arb = [&] { return escalate(prune_bits_, arb_level); };
+  auto arb = [&] { return escalate(cap, arb_level); };
   // Arb's first level before the exact stage (as in side_if_certified).
   if (const int a = arb_first ? arb() : escalate(128, arb_level); a != kUndecided) return done(a);
   if (exact_window(w1) && exact_window(w2)) {
@@ -750,7 +873,7 @@ int Certifier::compare_times(std::uint32_t w1, const Target& x1, std::uint32_t w
     }
   }
   const int r = arb_first ? kUndecided : arb();
-  if (r == kUndecided) ++counts.kept_undecided;
+  if (r == kUndecided && !deciding) ++counts.kept_undecided;
   return done(r);
 }
 

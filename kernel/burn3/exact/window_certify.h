@@ -11,7 +11,9 @@
 //  1. filter: Interval arithmetic on the windows' double discs;
 //  2. structural: identical expressions are equal (the same pseudo-source through the same
 //     sequence of frame changes, Window::anchor; a bound vertex that every later triangle
-//     of the chain contains);
+//     of the chain contains); along an edge, a point source S on it and the source it
+//     relays at an edge point p (sigma = S's time at p) beyond which x lies, seen from S
+//     (|x - S| = |x - p| + |p - S|: one value, even where p is known by a bracket only);
 //  3. exact: windows of a rational pseudo-source whose chain crosses only rational
 //     unfoldings (planar sheets, flat patches, cube-like meshes) are re-evaluated in
 //     rational local coordinates, times as ExactSum (exact sign, ties included);
@@ -74,7 +76,11 @@ class Certifier {
   // arb_first: the Arb stage before the exact one (bisections: thousands of decisions near a
   // point that Arb settles at once, where the exact sums of long rationals cost far more).
   int side_if_certified(std::uint32_t w, int j, const Target& x, bool arb_first = false);
-  int compare_times(std::uint32_t w1, const Target& x1, std::uint32_t w2, const Target& x2, bool arb_first = false);
+  // deciding: the outcome decides BT (the junction rule's order of arrivals), so the Arb
+  // stage escalates to max_bits and an undecided outcome is the caller's to count as
+  // `uncertified`; otherwise it only prunes (prune_bits; undecided counts kept_undecided).
+  int compare_times(std::uint32_t w1, const Target& x1, std::uint32_t w2, const Target& x2, bool arb_first = false,
+                    bool deciding = false);
   // Where w's ray j meets `edge` (an edge of w's triangle), from the Arb stage of
   // side_if_certified: its side function at the edge point a + l (b - a) is affine in l,
   // g0 + l g1, so one evaluation (at `bits`) gives a rational interval [lo, hi] holding the
@@ -93,6 +99,25 @@ class Certifier {
   // its lo, both within [lo, hi]); nullopt where any of this is not certified.
   std::optional<EdgeRoot> crossing_root_on_edge(std::uint32_t w1, std::uint32_t w2, std::uint32_t edge, double lo,
                                                 double hi, long bits);
+  // The signs of f = time(w1) - time(w2) and of its derivative f' over the whole parameter
+  // box [lo, hi] of `edge` (an edge of both triangles), in Arb at `bits`: {sign f, sign f'},
+  // each kUndecided where its ball holds 0 (the exclusion and monotonicity proofs of the
+  // crossings' isolation, edge_crossings.h).
+  // bound (optional): an upper bound of |f| over the box from the same enclosures.
+  std::array<int, 2> edge_difference_signs(std::uint32_t w1, std::uint32_t w2, std::uint32_t edge, const mpq_class& lo,
+                                           const mpq_class& hi, long bits, double* bound = nullptr);
+  // An upper bound of |time(w1) - time(w2)| over the whole parameter box [lo, hi] of `edge`,
+  // from the same Arb enclosures at `bits` (inf where they are unbounded).
+  double edge_difference_bound(std::uint32_t w1, std::uint32_t w2, std::uint32_t edge, const mpq_class& lo,
+                               const mpq_class& hi, long bits);
+  // A window's front along an edge a + l (b - a) of its triangle, in its frame (A + l D),
+  // at the current BallPrecision.
+  struct Along {
+    WindowBall b;
+    BallVec2 A, D;
+  };
+  Along along_edge(std::uint32_t w, std::uint32_t edge);
+  long max_bits() const { return max_bits_; }
   int compare_directions(std::uint32_t w1, std::uint32_t w2, std::uint32_t v);
   // The identity of w's front (equal ids: the same source image and offset in the same
   // frame, as same_expression decides), and of a time expression (equal ids: one value).
@@ -128,6 +153,9 @@ class Certifier {
   // the line's length) is rational or denests.
   std::optional<ExactSum> exact_time(std::uint32_t w, const Target& x);
   const ExactSum* exact_sigma(std::uint32_t pseudo);
+  // |d|^2 in the frame's metric of a line window's exact direction d, when rational (or
+  // proved equal to its border edge's squared length).
+  std::optional<mpq_class> line_length2(std::uint32_t w);
   // Time expressions (windows.h): Arb and exact values, and the staged comparison
   // (kUndecided when no stage decides).
   Ball expr_ball(std::uint32_t expr);
@@ -144,6 +172,9 @@ class Certifier {
   void trim_memos();  // only between decisions: pointers into the memo stay valid within one
   bool same_expression(std::uint32_t w1, std::uint32_t w2, const Target& x) const;
   bool same_point_source(std::uint32_t pa, std::uint32_t pb) const;
+  bool relayed_along_edge(std::uint32_t relay, std::uint32_t w, const Target& x) const;
+  // An edge point's parameter in rationals [lo, hi] (exact, its bracket, or its enclosure).
+  bool edge_point_bounds(const EdgePoint& ep, mpq_class* lo, mpq_class* hi) const;
   bool bound_fixed(std::uint32_t w, int j, std::uint32_t v) const;
   std::optional<ExactVector> target_uv(std::uint32_t f, const Target& x) const;
   int exact_side(const ExactWindow& e, int j, const Target& x) const;
@@ -176,6 +207,7 @@ class Certifier {
   mutable std::unordered_map<MemoKey, BallVec2, MemoHash> ball_cache_;   // (frame, point key, bits)
   std::unordered_map<long, std::unordered_map<std::uint32_t, Ball>> time_memo_;  // bits -> TimeExpr -> ball
   std::unordered_map<MemoKey, WindowBall, MemoHash> chain_memo_;  // (window, source vertex, bits and offset)
+  std::unordered_map<MemoKey, std::array<BallVec2, 2>, MemoHash> edge_memo_;  // (frame, edge, bits): A, D
   std::unordered_map<std::uint32_t, std::unique_ptr<ExactWindow>> exact_memo_;
   std::unordered_map<std::uint32_t, std::unique_ptr<ExactSum>> exact_time_memo_;
 };

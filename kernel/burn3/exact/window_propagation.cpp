@@ -17,7 +17,7 @@ constexpr double kInf = std::numeric_limits<double>::infinity();
 }  // namespace
 
 WindowPropagation::WindowPropagation(const Unfolding& u, const ExactBurningOptions& o)
-    : u_(u), mc_(u.complex()), o_(o), cert_(u, s_, o.max_bits), sectors_(sector_geometry(u)) {
+    : u_(u), mc_(u.complex()), o_(o), cert_(u, s_, o.max_bits), sectors_(sector_geometry(u, o.mutant)) {
   occupier_.assign(3 * mc_.triangle_count(), kNoIndex);
   const std::size_t S = mc_.sectors().size();
   best_time_.assign(S, kNoIndex);
@@ -504,6 +504,19 @@ void WindowPropagation::enter_child(std::uint32_t w, std::uint32_t E, std::uint3
       c.offset = W.offset;
     }
     c.image = {m.apply(b0.image), m.apply(b1.image)};
+    if (o_.mutant == EngineMutant::mirrored_rotation && mc_.edge(E).stratum == EdgeStratum::Singular) {
+      // engine-mirrored-rotation: the source reflected through the edge's line in t2's frame
+      // (the front enters from t2's own side; checks only, the certified stages disagree).
+      const auto& ev = mc_.edge(E).v;
+      const DiscPoint A = u_.vertex_image(t2, ev[0]), B = u_.vertex_image(t2, ev[1]);
+      const double dx = B.x - A.x, dy = B.y - A.y, n = std::sqrt(dx * dx + dy * dy);
+      auto mirror = [&](double x, double y, bool vec) {
+        const double rx = vec ? x : x - A.x, ry = vec ? y : y - A.y, k = 2 * (rx * dx + ry * dy) / (n * n);
+        return std::array<double, 2>{(vec ? 0 : A.x) + k * dx - rx, (vec ? 0 : A.y) + k * dy - ry};
+      };
+      const auto q = mirror(c.source.x, c.source.y, W.plane());
+      c.source = DiscPoint{q[0], q[1], c.source.r * 2 + 1e-12};
+    }
     if (m.reflect) {
       std::swap(c.bound[0], c.bound[1]);
       std::swap(c.bound_depth[0], c.bound_depth[1]);

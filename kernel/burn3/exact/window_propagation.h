@@ -37,10 +37,12 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <limits>
 #include <queue>
 #include <vector>
 
+#include "burn3/exact/engine_mutant.h"
 #include "burn3/exact/sector_geometry.h"
 #include "burn3/exact/window_certify.h"
 #include "burn3/exact/window_values.h"
@@ -54,6 +56,7 @@ struct ExactBurningOptions {
   // no junction rule runs. Not Definition 9: an upper bound of BT (fire from the curves is left out).
   bool singular_walls = false;
   long max_bits = 512;                // Arb precision cap of the certified stages
+  EngineMutant mutant = EngineMutant::none;  // checks only: a deliberate breakage (engine_mutant.h)
   std::uint64_t max_windows = 400'000'000;  // iteration bound (std::runtime_error beyond)
 };
 
@@ -79,6 +82,12 @@ struct PropagationStats {
   std::uint64_t kinks = 0;            // kink points: point sources where the (k-1)-th arrival switches
   std::uint64_t stretch_ends = 0;     // ends of burned stretches next to unburned ones
   std::uint64_t uncertified_breaks = 0;  // piece ends located only by an enclosure no stage certified
+  // Junction decisions no stage certified at max_bits (each also counted in the certifier's
+  // `uncertified`): pairs of records whose crossings were not all isolated, orders of
+  // arrivals and coverages at a point of an elementary interval.
+  std::uint64_t uncertified_crossings = 0;
+  std::uint64_t uncertified_orders = 0;
+  std::uint64_t crossing_boxes = 0;   // boxes examined by the crossings' isolation (cost)
   double seconds = 0.0;
 };
 
@@ -107,12 +116,17 @@ class WindowPropagation {
   bool is_link_rule_vertex(std::uint32_t v) const { return link_of_[v] != kNoIndex; }
   bool walls() const { return o_.singular_walls; }
   // After run(): the switch points of the singular edges' (k-1)-th arrival, from each edge's
-  // final pieces: an interior point of the edge where the realising record changes between
-  // two burned pieces (edge_junction.cpp; classified by junction_points.h). `point` is an
+  // final pieces: a point of the edge (inside it, or a vertex where the curve runs on into
+  // another singular edge) where the realising record changes between two burned pieces (edge_junction.cpp; classified by junction_points.h). `point` is an
   // edge point (exact parameter where a closed form exists), `left` and `right` the windows
   // realising the arrival just below and just above its parameter, `time` BT there.
+  // At a vertex v of a singular curve (two singular edges at v, no link rule there): `edge`
+  // and `point` are the edge arriving at v and its end point at v (`left` realises A on it),
+  // `edge2` and `point2` the edge leaving v and its end point (`right` realises A there);
+  // kNoIndex for a switch inside one edge.
   struct JunctionSwitch {
     std::uint32_t edge, point, left, right, time;
+    std::uint32_t edge2 = kNoIndex, point2 = kNoIndex;
   };
   std::vector<JunctionSwitch> junction_switches();
 
@@ -158,6 +172,7 @@ class WindowPropagation {
     std::uint32_t side;     // the window's triangle (one sheet side of the edge)
     std::array<Bound, 2> end;
     std::array<double, 2> at;
+    std::array<double, 2> at_err{0.0, 0.0};  // |true parameter - at| <= at_err (the discs' radii)
     bool on_edge = false;   // its source lies on the edge (emits into every side already)
     bool grazing = false;   // a wedge ray runs along the edge: nothing to emit beyond the edge
     std::array<Interval, 4> line{};  // A.x, A.y, B.x - A.x, B.y - A.y: the edge in the window's frame
@@ -177,6 +192,8 @@ class WindowPropagation {
   struct Crossing {
     Break at;
     std::uint32_t a, b;  // the records
+    bool bracketed = false;  // [lo, hi] holds the crossing (edge_crossings.h); else sampled
+    mpq_class lo, hi;
   };
   struct JunctionState {
     std::vector<std::uint32_t> records;
@@ -224,6 +241,7 @@ class WindowPropagation {
   void process_junction(std::uint32_t edge, double key);
   std::vector<Break> junction_breaks(std::uint32_t edge, const std::vector<std::uint32_t>& recs);
   std::uint32_t realising_record(std::uint32_t edge, const std::vector<std::uint32_t>& recs, double at);
+  int record_covers(std::uint32_t edge, std::uint32_t r, double at, const std::function<const Target&()>& x);
   std::vector<Piece> junction_pieces(std::uint32_t edge);
   double piece_time_lo(std::uint32_t edge, const Piece& p) const;
   std::vector<Piece> unemitted_parts(const JunctionState& st, const Piece& p) const;
