@@ -101,44 +101,86 @@ AlphaComplex::AlphaComplex(const BallSet& balls, const RegularTriangulation& rt)
     approx_weight_.push_back(enclose(balls.squared_radii[i]));
   }
   const std::size_t total = rt.vertices.size() + rt.edges.size() + rt.triangles.size() + rt.tetrahedra.size();
-  index_.reserve(total);
   simplices_.reserve(total);
-  for (std::uint32_t v : rt.vertices) add_simplex({v, kNone, kNone, kNone}, 0);
-  for (const auto& e : rt.edges) add_simplex({e[0], e[1], kNone, kNone}, 1);
-  for (const auto& t : rt.triangles) add_simplex({t[0], t[1], t[2], kNone}, 2);
-  for (const auto& t : rt.tetrahedra) add_simplex(t, 3);
+  add_simplices(rt);
   hidden_ = ball_count_ - rt.vertices.size();
-  for (std::uint32_t s = 0; s < simplices_.size(); ++s) {
-    const PowerSimplex& p = simplices_[s];
-    for (int drop = 0; p.dim > 0 && drop <= p.dim; ++drop) {
-      std::array<std::uint32_t, 4> face{kNone, kNone, kNone, kNone};
-      for (int k = 0, m = 0; k <= p.dim; ++k)
-        if (k != drop) face[m++] = p.balls[k];
-      const std::uint32_t f = find(face, p.dim - 1);
-      if (f == kNone) throw std::logic_error("union alpha complex: a face is missing from the triangulation");
-      simplices_[f].cofaces.push_back(s);
+  // The cofaces of each face, in increasing simplex order: every (facet, simplex) pair of
+  // dimension d, sorted, walked against the sorted faces of dimension d - 1.
+  std::vector<std::pair<std::array<std::uint32_t, 4>, std::uint32_t>> facets;
+  for (int dim = 1; dim <= 3; ++dim) {
+    facets.clear();
+    facets.reserve(by_dim_[dim].size() * static_cast<std::size_t>(dim + 1));
+    for (std::uint32_t s : by_dim_[dim]) {
+      const PowerSimplex& p = simplices_[s];
+      for (int drop = 0; drop <= dim; ++drop) {
+        std::array<std::uint32_t, 4> face{kNone, kNone, kNone, kNone};
+        for (int k = 0, m = 0; k <= dim; ++k)
+          if (k != drop) face[m++] = p.balls[k];
+        facets.push_back({face, s});
+      }
+    }
+    std::sort(facets.begin(), facets.end());
+    const auto& faces = index_[dim - 1];
+    std::size_t f = 0;
+    for (std::size_t i = 0; i < facets.size();) {
+      while (f < faces.size() && faces[f].first < facets[i].first) ++f;
+      if (f == faces.size() || faces[f].first != facets[i].first)
+        throw std::logic_error("union alpha complex: a face is missing from the triangulation");
+      std::size_t j = i;
+      while (j < facets.size() && facets[j].first == facets[i].first) ++j;
+      std::vector<std::uint32_t>& cofaces = simplices_[faces[f].second].cofaces;
+      cofaces.reserve(j - i);
+      for (; i < j; ++i) cofaces.push_back(facets[i].second);
     }
   }
   approximate_centres();
   compute_rho();
 }
 
-void AlphaComplex::add_simplex(const std::array<std::uint32_t, 4>& balls, int dim) {
-  PowerSimplex p;
-  p.balls = balls;
-  std::sort(p.balls.begin(), p.balls.begin() + dim + 1);
-  p.dim = dim;
-  const auto id = static_cast<std::uint32_t>(simplices_.size());
-  if (!index_.emplace(p.balls, id).second) return;
-  simplices_.push_back(std::move(p));
-  by_dim_[dim].push_back(id);
+// The simplices of each dimension in the triangulation's order, a repeated one kept once
+// (its first occurrence), and the sorted index of each dimension.
+void AlphaComplex::add_simplices(const RegularTriangulation& rt) {
+  std::array<std::vector<std::array<std::uint32_t, 4>>, 4> lists;
+  for (std::uint32_t v : rt.vertices) lists[0].push_back({v, kNone, kNone, kNone});
+  for (const auto& e : rt.edges) lists[1].push_back({e[0], e[1], kNone, kNone});
+  for (const auto& t : rt.triangles) lists[2].push_back({t[0], t[1], t[2], kNone});
+  for (const auto& t : rt.tetrahedra) lists[3].push_back(t);
+  for (int dim = 0; dim <= 3; ++dim) {
+    std::vector<std::pair<std::array<std::uint32_t, 4>, std::uint32_t>> order;  // (balls, position)
+    order.reserve(lists[dim].size());
+    for (std::uint32_t i = 0; i < lists[dim].size(); ++i) {
+      std::sort(lists[dim][i].begin(), lists[dim][i].begin() + dim + 1);
+      order.push_back({lists[dim][i], i});
+    }
+    std::sort(order.begin(), order.end());
+    std::vector<bool> repeated(lists[dim].size(), false);
+    for (std::size_t i = 1; i < order.size(); ++i)
+      if (order[i].first == order[i - 1].first) repeated[order[i].second] = true;
+    std::vector<std::uint32_t> id_of(lists[dim].size(), kNone);
+    for (std::uint32_t i = 0; i < lists[dim].size(); ++i) {
+      if (repeated[i]) continue;
+      PowerSimplex p;
+      p.balls = lists[dim][i];
+      p.dim = dim;
+      id_of[i] = static_cast<std::uint32_t>(simplices_.size());
+      simplices_.push_back(std::move(p));
+      by_dim_[dim].push_back(id_of[i]);
+    }
+    auto& index = index_[dim];
+    index.reserve(by_dim_[dim].size());
+    for (const auto& [balls, i] : order)
+      if (!repeated[i]) index.push_back({balls, id_of[i]});
+  }
 }
 
 std::uint32_t AlphaComplex::find(const std::array<std::uint32_t, 4>& balls, int dim) const {
   std::array<std::uint32_t, 4> key{kNone, kNone, kNone, kNone};
   std::copy(balls.begin(), balls.begin() + dim + 1, key.begin());
-  auto it = index_.find(key);
-  return it == index_.end() ? kNone : it->second;
+  const auto& index = index_[dim];
+  auto it = std::lower_bound(index.begin(), index.end(), key,
+                             [](const std::pair<std::array<std::uint32_t, 4>, std::uint32_t>& e,
+                                const std::array<std::uint32_t, 4>& k) { return e.first < k; });
+  return it == index.end() || it->first != key ? kNone : it->second;
 }
 
 // z = c_0 + sum_l lambda_l d_l with 2 (z - c_0) . d_m = |d_m|^2 + w_0 - w_m (equal powers),

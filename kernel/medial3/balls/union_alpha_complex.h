@@ -29,7 +29,7 @@
 #include <array>
 #include <cstdint>
 #include <map>
-#include <unordered_map>
+#include <utility>
 #include <vector>
 
 #include "geometry3/ball_set.h"
@@ -98,7 +98,7 @@ class AlphaComplex {
   std::uint32_t find(const std::array<std::uint32_t, 4>& balls, int dim) const;
 
  private:
-  void add_simplex(const std::array<std::uint32_t, 4>& balls, int dim);
+  void add_simplices(const RegularTriangulation& rt);
   void approximate_centres();
   void compute_rho();
   // Exact signs, after an interval filter: pow_j(z_s) - w_s, and w_a - w_b.
@@ -115,14 +115,9 @@ class AlphaComplex {
   int dimension_ = -1;
   mutable std::vector<PowerSimplex> simplices_;
   std::array<std::vector<std::uint32_t>, 4> by_dim_;
-  struct BallsHash {  // simplices are looked up once per facet: a hash, not a tree
-    std::size_t operator()(const std::array<std::uint32_t, 4>& a) const {
-      std::uint64_t h = 0x9E3779B97F4A7C15ull;
-      for (std::uint32_t x : a) h = (h ^ x) * 0xBF58476D1CE4E5B9ull, h ^= h >> 31;
-      return static_cast<std::size_t>(h);
-    }
-  };
-  std::unordered_map<std::array<std::uint32_t, 4>, std::uint32_t, BallsHash> index_;
+  // Per dimension, (sorted balls, simplex) sorted by balls: find() is a binary search, and
+  // the cofaces come from one sort of the facets (no hash of every facet).
+  std::array<std::vector<std::pair<std::array<std::uint32_t, 4>, std::uint32_t>>, 4> index_;
 };
 
 // pow_i(x) = |x - c_i|^2 - r_i^2.

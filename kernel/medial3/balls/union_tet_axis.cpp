@@ -285,6 +285,67 @@ class Builder {
     return false;
   }
 
+  // The finer test of the fast path: tau split into eight tetrahedra at its edge midpoints
+  // (four at the corners, four around the diagonal m01 m23 of the middle octahedron);
+  // candidate i owns no interior point of tau when each piece has some other candidate j
+  // with f = |x - j|^2 - |x - i|^2 <= 0 at its four corners and < 0 at one of them (f is
+  // affine: then f < 0 on the piece off a proper face, and the cell of i meets the piece
+  // in no interior point; finitely many such pieces cover tau, so i's cell is empty, as
+  // clipping would find). f < 0 is certified by intervals; f = 0 structurally, where
+  // interval tests never succeed: at corner k of tau when i and j are both on the sphere
+  // of ball k (both at distance r_k from its centre), at a midpoint when both are on the
+  // spheres of the edge's two balls. Without the ties, no piece at a corner would ever be
+  // covered for the many candidates on that corner's sphere.
+  // `d2[j][p]` encloses the squared distance from point p (corners 0-3, then the midpoints
+  // m01 m02 m03 m12 m13 m23) to candidate j; `spheres[j]` has bit k when candidate j lies
+  // on the sphere of tau's ball k.
+  struct PieceDistances {
+    std::vector<std::array<Interval, 10>> d2;
+    std::vector<unsigned> spheres;
+  };
+  static constexpr int kPieces[8][4] = {{0, 4, 5, 6}, {1, 4, 7, 8}, {2, 5, 7, 9}, {3, 6, 8, 9},
+                                        {4, 9, 5, 6}, {4, 9, 6, 8}, {4, 9, 8, 7}, {4, 9, 7, 5}};
+  static constexpr int kEdges[6][2] = {{0, 1}, {0, 2}, {0, 3}, {1, 2}, {1, 3}, {2, 3}};
+  PieceDistances piece_distances(const PowerSimplex& tau, const std::array<Box, 4>& corners,
+                                 const std::vector<std::uint32_t>& cand) const {
+    std::array<Box, 10> points;
+    for (int k = 0; k < 4; ++k) points[k] = corners[k];
+    for (int e = 0; e < 6; ++e)
+      for (int k = 0; k < 3; ++k) points[4 + e][k] = half(corners[kEdges[e][0]][k] + corners[kEdges[e][1]][k]);
+    PieceDistances out;
+    out.d2.resize(cand.size());
+    out.spheres.assign(cand.size(), 0);
+    for (std::size_t j = 0; j < cand.size(); ++j) {
+      for (int p = 0; p < 10; ++p) out.d2[j][p] = squared_distance(points[p], boundary_[cand[j]].approx);
+      for (int k = 0; k < 4; ++k)
+        if (contains(boundary_[cand[j]].balls, tau.balls[k])) out.spheres[j] |= 1u << k;
+    }
+    return out;
+  }
+  bool excluded_by_pieces(std::size_t i, const PieceDistances& pd) const {
+    for (const auto& piece : kPieces) {
+      bool covered = false;
+      for (std::size_t j = 0; j < pd.d2.size() && !covered; ++j) {
+        if (j == i) continue;
+        const unsigned both = pd.spheres[i] & pd.spheres[j];
+        bool strict = false;
+        covered = true;
+        for (int q = 0; q < 4 && covered; ++q) {
+          const int p = piece[q];
+          if (pd.d2[j][p].hi < pd.d2[i][p].lo) {
+            strict = true;
+            continue;
+          }
+          const unsigned need = p < 4 ? 1u << p : (1u << kEdges[p - 4][0]) | (1u << kEdges[p - 4][1]);
+          covered = (both & need) == need;
+        }
+        covered = covered && strict;
+      }
+      if (!covered) return false;
+    }
+    return true;
+  }
+
   void process_tetrahedron(const PowerSimplex& tau) {
     ++out_.tetrahedra;
     PlaneSet planes;
@@ -309,9 +370,10 @@ class Builder {
       bool operator<(const Neighbour& o) const { return mid < o.mid || (mid == o.mid && u < o.u); }
     };
     std::vector<Neighbour> order;
+    const PieceDistances pieces = reach_ ? piece_distances(tau, corners, cand) : PieceDistances{};
     for (std::size_t i = 0; i < cand.size(); ++i) {
       const std::uint32_t v = cand[i];
-      if (excluded(i, corner_d2)) continue;
+      if (excluded(i, corner_d2) || (reach_ && excluded_by_pieces(i, pieces))) continue;
       ++out_.cells_clipped;
       order.clear();
       for (std::uint32_t u : cand)
@@ -319,34 +381,76 @@ class Builder {
           const Interval d = squared_distance(boundary_[u].approx, boundary_[v].approx);
           order.push_back({d.mid(), d.lo, u});
         }
-      std::sort(order.begin(), order.end());
+      // Nearest first; a heap, since most cells are emptied after a few clips.
+      auto later = [](const Neighbour& a, const Neighbour& b) { return b < a; };
+      std::make_heap(order.begin(), order.end(), later);
       ConvexCell cell = tet;
-      double reach2 = reach_ ? reach_squared(cell, v) : INFINITY;
-      for (const auto& [d, d_lo, u] : order) {
-        if (d_lo > reach2) {
+      Reach reach = reach_ ? reach_of(cell, v) : Reach{};
+      for (auto end = order.end(); end != order.begin(); --end) {
+        std::pop_heap(order.begin(), end, later);
+        const auto [d, d_lo, u] = *(end - 1);
+        if (d_lo > reach.squared || beyond_ball(reach, v, u)) {
           ++out_.beyond_reach;
           continue;
         }
         ++out_.clips;
         const ConvexCell::Clip c = cell.clip(bisector(planes, cache, v, u));
         if (c == ConvexCell::Clip::Emptied) break;
-        if (c == ConvexCell::Clip::Cut && reach_) reach2 = reach_squared(cell, v);
+        if (c == ConvexCell::Clip::Cut && reach_) reach = reach_of(cell, v);
       }
       record_faces(cell, planes, v);
     }
     out_.stats.merge(planes.stats);
   }
 
-  // (2 R)^2 rounded up, R the largest distance from boundary vertex v to a vertex of the
-  // cell (a certified upper bound): a bisector of v and u with |u - v|^2 > (2 R)^2 leaves
-  // every point x of the cell strictly on v's side, |x - u| >= |u - v| - |x - v| > R >= |x - v|.
-  double reach_squared(const ConvexCell& cell, std::uint32_t v) const {
+  // Two certified reasons why the bisector of boundary vertices v and u cannot touch the
+  // current cell of v (every point of it strictly nearer to v, so the clip would change
+  // nothing, not even a support): (1) `squared` = (2 R)^2 rounded up, R the largest
+  // distance from v to a vertex of the cell: |u - v|^2 > (2 R)^2 gives, for x in the cell,
+  // |x - u| >= |u - v| - |x - v| > R >= |x - v|; (2) a ball B(m, r) around the cell lies
+  // strictly on v's side: for x in it, |x - u|^2 - |x - v|^2 = (v - u) . (2 x - u - v)
+  // >= (v - u) . (2 m - u - v) - 2 r |u - v| > 0. The ball is centred at the middle of the
+  // cell's bounding box, so (2) holds for most far candidates that (1) keeps.
+  struct Reach {
+    double squared = INFINITY;
+    Box centre;      // m, global coordinates
+    double radius = INFINITY;
+  };
+  Reach reach_of(const ConvexCell& cell, std::uint32_t v) const {
     Box local;
     for (int k = 0; k < 3; ++k) local[k] = boundary_[v].approx[k] - Interval(origin_[k]);
+    std::array<double, 3> lo{INFINITY, INFINITY, INFINITY}, hi{-INFINITY, -INFINITY, -INFINITY};
     double r2 = 0;
     for (const CellFace& f : cell.faces())
-      for (std::uint32_t x : f.vertices) r2 = std::max(r2, squared_distance(cell.vertex(x).approx, local).hi);
-    return std::isfinite(r2) ? 4 * r2 : INFINITY;  // x 4 is exact
+      for (std::uint32_t x : f.vertices) {
+        const Box& a = cell.vertex(x).approx;
+        r2 = std::max(r2, squared_distance(a, local).hi);
+        for (int k = 0; k < 3; ++k) lo[k] = std::min(lo[k], a[k].lo), hi[k] = std::max(hi[k], a[k].hi);
+      }
+    Reach r;
+    r.squared = std::isfinite(r2) ? 4 * r2 : INFINITY;  // x 4 is exact
+    Box m;
+    for (int k = 0; k < 3; ++k) m[k] = Interval(0.5 * (lo[k] + hi[k]));
+    double rho2 = 0;
+    for (const CellFace& f : cell.faces())
+      for (std::uint32_t x : f.vertices) rho2 = std::max(rho2, squared_distance(cell.vertex(x).approx, m).hi);
+    if (!std::isfinite(rho2)) return r;
+    r.radius = sqrt(Interval(rho2)).hi;
+    for (int k = 0; k < 3; ++k) r.centre[k] = m[k] + Interval(origin_[k]);
+    return r;
+  }
+  bool beyond_ball(const Reach& r, std::uint32_t v, std::uint32_t u) const {
+    if (!std::isfinite(r.radius)) return false;
+    const Box& a = boundary_[v].approx;
+    const Box& b = boundary_[u].approx;
+    Interval g(0.0), d2(0.0);
+    for (int k = 0; k < 3; ++k) {
+      const Interval e = a[k] - b[k];
+      g += e * (Interval(2) * r.centre[k] - a[k] - b[k]);
+      d2 += square(e);
+    }
+    const Interval margin = g - Interval(2) * Interval(r.radius) * sqrt(d2);
+    return std::isfinite(margin.lo) && margin.lo > 0;
   }
 
   void record_faces(const ConvexCell& cell, PlaneSet& planes, std::uint32_t v) {
