@@ -108,6 +108,7 @@ class AlphaComplex {
   const BallSet* balls_;
   std::vector<std::array<Interval, 3>> approx_ball_;
   std::vector<Interval> approx_weight_;
+  std::vector<bool> canonical_ball_;  // centre and squared radius in GMP's canonical form
   mutable std::size_t exact_count_ = 0;
   std::vector<int> rho_sign_;
   std::vector<bool> in_complex_;
