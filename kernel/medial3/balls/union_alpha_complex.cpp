@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <deque>
 #include <random>
 #include <string>
 #include <limits>
@@ -531,7 +532,7 @@ class DualEdgeFilter {
 
 std::vector<BoundaryVertex> boundary_vertices(const BallSet& b, const AlphaComplex& k, RadicalTable* table,
                                               bool filtered) {
-  std::vector<BoundaryVertex> out;
+  std::deque<BoundaryVertex> found;  // no copies on growth (GMP's rationals move with a throwing move)
   // A point on four or more spheres comes from several triangles.
   auto key_less = [](const std::array<ExactPoint3, 3>& x, const std::array<ExactPoint3, 3>& y) {
     for (int i = 0; i < 3; ++i)
@@ -588,9 +589,12 @@ std::vector<BoundaryVertex> boundary_vertices(const BallSet& b, const AlphaCompl
         v.approx = {enclose(v.z.x) + Interval(side) * enclose(v.n.x) * r, enclose(v.z.y) + Interval(side) * enclose(v.n.y) * r,
                     enclose(v.z.z) + Interval(side) * enclose(v.n.z) * r};
       }
-      out.push_back(v);
+      found.push_back(v);
     }
   }
+  std::vector<BoundaryVertex> out;
+  out.reserve(found.size());
+  for (BoundaryVertex& v : found) out.push_back(std::move(v));
   return out;
 }
 

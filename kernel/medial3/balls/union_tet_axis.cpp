@@ -148,28 +148,42 @@ class Builder {
   }
 
  private:
-  std::vector<std::uint32_t> feature_of(const CellVertex& x) const {
+  // The balls of the smallest face of tau containing x: the intersection of the balls of
+  // the tetrahedron faces through it (0 to 3 balls; none inside tau), without the heap.
+  struct Feature {
+    std::array<std::uint32_t, 3> balls{};
+    std::size_t size = 0;
+  };
+  Feature smallest_face(const CellVertex& x) const {
     bool first = true;
-    std::vector<std::uint32_t> f;
+    Feature f;
     for (std::uint32_t p : x.support) {
       const PlaneInfo& info = info_[p];
       if (info.bisector) continue;
       if (first) {
-        f.assign(info.face.begin(), info.face.end());
+        f.balls = info.face;
+        f.size = 3;
         first = false;
       } else {
-        f.erase(std::remove_if(f.begin(), f.end(), [&](std::uint32_t b) { return !contains(info.face, b); }), f.end());
+        std::size_t m = 0;
+        for (std::size_t i = 0; i < f.size; ++i)
+          if (contains(info.face, f.balls[i])) f.balls[m++] = f.balls[i];
+        f.size = m;
       }
     }
     return f;
   }
+  std::vector<std::uint32_t> feature_of(const CellVertex& x) const {
+    const Feature f = smallest_face(x);
+    return {f.balls.begin(), f.balls.begin() + static_cast<std::ptrdiff_t>(f.size)};
+  }
 
   // The bisector of v and u contains the face through x when every ball of that face has
   // both v and u on its sphere (its centre is then equidistant from them).
-  bool structural(const std::vector<std::uint32_t>& feature, std::uint32_t v, std::uint32_t u) const {
-    if (feature.empty()) return false;
-    for (std::uint32_t b : feature)
-      if (!contains(boundary_[v].balls, b) || !contains(boundary_[u].balls, b)) return false;
+  bool structural(const std::uint32_t* feature, std::size_t size, std::uint32_t v, std::uint32_t u) const {
+    if (size == 0) return false;
+    for (std::size_t i = 0; i < size; ++i)
+      if (!contains(boundary_[v].balls, feature[i]) || !contains(boundary_[u].balls, feature[i])) return false;
     return true;
   }
 
@@ -179,7 +193,7 @@ class Builder {
     if (key.feature.size() == 1) return key;  // a ball centre
     for (std::uint32_t p : x.support) {
       const PlaneInfo& info = info_[p];
-      if (!info.bisector || structural(key.feature, info.v, info.u)) continue;
+      if (!info.bisector || structural(key.feature.data(), key.feature.size(), info.v, info.u)) continue;
       key.equidistant.push_back(info.v);
       key.equidistant.push_back(info.u);
     }
@@ -188,10 +202,9 @@ class Builder {
     return key;
   }
 
-  std::uint32_t bisector(PlaneSet& planes, std::map<std::pair<std::uint32_t, std::uint32_t>, std::uint32_t>& cache,
-                         std::uint32_t v, std::uint32_t u) {
-    auto [it, fresh] = cache.emplace(std::make_pair(v, u), 0);
-    if (!fresh) return it->second;
+  // The plane of the bisector of v and u (kept side: v's), added to this tetrahedron's set;
+  // each ordered pair is asked once per tetrahedron (one cell per v, one clip per u).
+  std::uint32_t bisector(PlaneSet& planes, std::uint32_t v, std::uint32_t u) {
     // |x - v|^2 <= |x - u|^2  <=>  2 (u - v) . x + |v|^2 - |u|^2 <= 0.
     const Box& a = boundary_[v].approx;
     const Box& b = boundary_[u].approx;
@@ -203,9 +216,9 @@ class Builder {
       approx[3] += (a[k] - b[k]) * (a[k] + b[k] - Interval(2 * origin_[k]));
     }
     auto make = [field = field_, v, u]() { return field->bisector(v, u); };
-    it->second = planes.add(CellPlane(make, approx, 0));
+    const std::uint32_t id = planes.add(CellPlane(make, approx, 0));
     info_.push_back({true, {}, v, u});
-    return it->second;
+    return id;
   }
 
   ConvexCell tetrahedron_cell(PlaneSet& planes, const PowerSimplex& tau) {
@@ -354,13 +367,14 @@ class Builder {
     origin_ = {first.x.get_d(), first.y.get_d(), first.z.get_d()};
     const ConvexCell tet = tetrahedron_cell(planes, tau);
     planes.set_structural_zero([this](std::uint32_t p, const CellVertex& x) {
-      return info_[p].bisector && structural(feature_of(x), info_[p].v, info_[p].u);
+      if (!info_[p].bisector) return false;
+      const Feature f = smallest_face(x);
+      return structural(f.balls.data(), f.size, info_[p].v, info_[p].u);
     });
     std::array<Box, 4> corners;
     for (int k = 0; k < 4; ++k) corners[k] = enclose_point(balls_.centers[tau.balls[k]]);
     const std::vector<std::uint32_t> cand = candidates(corners);
     out_.candidates += cand.size();
-    std::map<std::pair<std::uint32_t, std::uint32_t>, std::uint32_t> cache;
     std::vector<std::array<Interval, 4>> corner_d2(cand.size());
     for (std::size_t i = 0; i < cand.size(); ++i)
       for (int c = 0; c < 4; ++c) corner_d2[i][c] = squared_distance(corners[c], boundary_[cand[i]].approx);
@@ -389,12 +403,12 @@ class Builder {
       for (auto end = order.end(); end != order.begin(); --end) {
         std::pop_heap(order.begin(), end, later);
         const auto [d, d_lo, u] = *(end - 1);
-        if (d_lo > reach.squared || beyond_ball(reach, v, u)) {
+        if (d_lo > reach.squared || (reach_ && beyond_ball(cell, &reach, v, u))) {
           ++out_.beyond_reach;
           continue;
         }
         ++out_.clips;
-        const ConvexCell::Clip c = cell.clip(bisector(planes, cache, v, u));
+        const ConvexCell::Clip c = cell.clip(bisector(planes, v, u));
         if (c == ConvexCell::Clip::Emptied) break;
         if (c == ConvexCell::Clip::Cut && reach_) reach = reach_of(cell, v);
       }
@@ -413,43 +427,50 @@ class Builder {
   // cell's bounding box, so (2) holds for most far candidates that (1) keeps.
   struct Reach {
     double squared = INFINITY;
-    Box centre;      // m, global coordinates
+    bool ball = false;  // centre and radius computed (on first need, after each cut)
+    Box centre;         // m, global coordinates
     double radius = INFINITY;
   };
   Reach reach_of(const ConvexCell& cell, std::uint32_t v) const {
     Box local;
     for (int k = 0; k < 3; ++k) local[k] = boundary_[v].approx[k] - Interval(origin_[k]);
-    std::array<double, 3> lo{INFINITY, INFINITY, INFINITY}, hi{-INFINITY, -INFINITY, -INFINITY};
     double r2 = 0;
     for (const CellFace& f : cell.faces())
-      for (std::uint32_t x : f.vertices) {
-        const Box& a = cell.vertex(x).approx;
-        r2 = std::max(r2, squared_distance(a, local).hi);
-        for (int k = 0; k < 3; ++k) lo[k] = std::min(lo[k], a[k].lo), hi[k] = std::max(hi[k], a[k].hi);
-      }
+      for (std::uint32_t x : f.vertices) r2 = std::max(r2, squared_distance(cell.vertex(x).approx, local).hi);
     Reach r;
     r.squared = std::isfinite(r2) ? 4 * r2 : INFINITY;  // x 4 is exact
+    return r;
+  }
+  void bounding_ball(const ConvexCell& cell, Reach* r) const {
+    r->ball = true;
+    std::array<double, 3> lo{INFINITY, INFINITY, INFINITY}, hi{-INFINITY, -INFINITY, -INFINITY};
+    for (const CellFace& f : cell.faces())
+      for (std::uint32_t x : f.vertices)
+        for (int k = 0; k < 3; ++k) {
+          lo[k] = std::min(lo[k], cell.vertex(x).approx[k].lo);
+          hi[k] = std::max(hi[k], cell.vertex(x).approx[k].hi);
+        }
     Box m;
     for (int k = 0; k < 3; ++k) m[k] = Interval(0.5 * (lo[k] + hi[k]));
     double rho2 = 0;
     for (const CellFace& f : cell.faces())
       for (std::uint32_t x : f.vertices) rho2 = std::max(rho2, squared_distance(cell.vertex(x).approx, m).hi);
-    if (!std::isfinite(rho2)) return r;
-    r.radius = sqrt(Interval(rho2)).hi;
-    for (int k = 0; k < 3; ++k) r.centre[k] = m[k] + Interval(origin_[k]);
-    return r;
+    if (!std::isfinite(rho2)) return;
+    r->radius = sqrt(Interval(rho2)).hi;
+    for (int k = 0; k < 3; ++k) r->centre[k] = m[k] + Interval(origin_[k]);
   }
-  bool beyond_ball(const Reach& r, std::uint32_t v, std::uint32_t u) const {
-    if (!std::isfinite(r.radius)) return false;
+  bool beyond_ball(const ConvexCell& cell, Reach* r, std::uint32_t v, std::uint32_t u) const {
+    if (!r->ball) bounding_ball(cell, r);
+    if (!std::isfinite(r->radius)) return false;
     const Box& a = boundary_[v].approx;
     const Box& b = boundary_[u].approx;
     Interval g(0.0), d2(0.0);
     for (int k = 0; k < 3; ++k) {
       const Interval e = a[k] - b[k];
-      g += e * (Interval(2) * r.centre[k] - a[k] - b[k]);
+      g += e * (Interval(2) * r->centre[k] - a[k] - b[k]);
       d2 += square(e);
     }
-    const Interval margin = g - Interval(2) * Interval(r.radius) * sqrt(d2);
+    const Interval margin = g - Interval(2) * Interval(r->radius) * sqrt(d2);
     return std::isfinite(margin.lo) && margin.lo > 0;
   }
 
