@@ -21,8 +21,9 @@
 //    them) and the balls through them do not surround them; a point found from several
 //    triangles (on four or more spheres) is kept once.
 // Contract: balls with positive squared radii (std::invalid_argument otherwise), at least
-// one ball. Complexity: O(n log n) for the triangulation (expected), then O(1) exact
-// rational work per simplex.
+// one ball. Complexity: O(n log n) for the triangulation (expected) and for sorting the
+// simplices and their facets (the face/coface index), then O(1) exact work per simplex
+// (power centres over the integers, union_alpha_complex.cpp).
 // Section: 2.1.1 (union of balls: Attali-Montanvert; Amenta-Kolluri 2001).
 #pragma once
 
