@@ -39,8 +39,15 @@ class PointGrid {
     for (int k = 0; k < 3; ++k) extent = std::max(extent, hi[k] - lo_[k]);
     h_ = std::max(extent / std::max(1.0, std::cbrt(static_cast<double>(points.size()))), 1e-300);
     for (int k = 0; k < 3; ++k) dims_[k] = static_cast<long>((hi[k] - lo_[k]) / h_) + 1;
-    cells_.resize(static_cast<std::size_t>(dims_[0] * dims_[1] * dims_[2]));
-    for (std::uint32_t i = 0; i < points.size(); ++i) cells_[cell_of(points[i].approx)].push_back(i);
+    // Compressed rows: the points of cell c are points_[first_[c] .. first_[c + 1]), in
+    // increasing order.
+    first_.assign(static_cast<std::size_t>(dims_[0] * dims_[1] * dims_[2]) + 1, 0);
+    std::vector<std::size_t> cell(points.size());
+    for (std::uint32_t i = 0; i < points.size(); ++i) ++first_[(cell[i] = cell_of(points[i].approx)) + 1];
+    for (std::size_t c = 1; c < first_.size(); ++c) first_[c] += first_[c - 1];
+    points_.resize(points.size());
+    std::vector<std::size_t> next(first_.begin(), first_.end() - 1);
+    for (std::uint32_t i = 0; i < points.size(); ++i) points_[next[cell[i]]++] = i;
   }
 
   template <class F>
@@ -53,7 +60,8 @@ class PointGrid {
     for (long x = a[0]; x <= b[0]; ++x)
       for (long y = a[1]; y <= b[1]; ++y)
         for (long z = a[2]; z <= b[2]; ++z)
-          for (std::uint32_t i : cells_[static_cast<std::size_t>((x * dims_[1] + y) * dims_[2] + z)]) f(i);
+          for (std::size_t c = static_cast<std::size_t>((x * dims_[1] + y) * dims_[2] + z), i = first_[c]; i < first_[c + 1]; ++i)
+            f(points_[i]);
   }
   double spacing() const { return h_; }
 
@@ -67,7 +75,8 @@ class PointGrid {
   std::array<double, 3> lo_;
   double h_ = 1;
   std::array<long, 3> dims_{1, 1, 1};
-  std::vector<std::vector<std::uint32_t>> cells_;
+  std::vector<std::size_t> first_;
+  std::vector<std::uint32_t> points_;
 };
 
 struct PlaneInfo {
@@ -136,8 +145,10 @@ class Builder {
  public:
   Builder(const BallSet& balls, const AlphaComplex& k, const std::vector<BoundaryVertex>& boundary,
           const RadicalTable& table, bool reach)
-      : balls_(balls), k_(k), boundary_(boundary), grid_(boundary),
-        field_(std::make_shared<const BisectorField>(boundary, table)), reach_(reach) {}
+      : balls_(balls), k_(k), boundary_(boundary), approx_(boundary.size()), grid_(boundary),
+        field_(std::make_shared<const BisectorField>(boundary, table)), reach_(reach) {
+    for (std::size_t i = 0; i < boundary.size(); ++i) approx_[i] = boundary[i].approx;
+  }
 
   TetAxis run() {
     for (std::uint32_t t : k_.of_dimension(3))
@@ -206,8 +217,8 @@ class Builder {
   // each ordered pair is asked once per tetrahedron (one cell per v, one clip per u).
   std::uint32_t bisector(PlaneSet& planes, std::uint32_t v, std::uint32_t u) {
     // |x - v|^2 <= |x - u|^2  <=>  2 (u - v) . x + |v|^2 - |u|^2 <= 0.
-    const Box& a = boundary_[v].approx;
-    const Box& b = boundary_[u].approx;
+    const Box& a = approx_[v];
+    const Box& b = approx_[u];
     // In local coordinates x - o: d + n . o = |v - o|^2 - |u - o|^2 = (v - u) . (v + u - 2 o).
     std::array<Interval, 4> approx;
     approx[3] = Interval(0.0);
@@ -261,7 +272,7 @@ class Builder {
       grid_.visit({centre[0] - r, centre[1] - r, centre[2] - r}, {centre[0] + r, centre[1] + r, centre[2] + r},
                   [&](std::uint32_t u) {
                     double worst = 0;
-                    for (const Box& c : corners) worst = std::max(worst, squared_distance(c, boundary_[u].approx).hi);
+                    for (const Box& c : corners) worst = std::max(worst, squared_distance(c, approx_[u]).hi);
                     b2 = std::min(b2, worst);
                   });
     }
@@ -270,7 +281,7 @@ class Builder {
     grid_.visit({lo[0] - b, lo[1] - b, lo[2] - b}, {hi[0] + b, hi[1] + b, hi[2] + b}, [&](std::uint32_t v) {
       Interval d2(0.0);
       for (int k = 0; k < 3; ++k) {
-        const Box& p = boundary_[v].approx;
+        const Box& p = approx_[v];
         const double gap = std::max({0.0, (Interval(lo[k]) - p[k]).lo, (p[k] - Interval(hi[k])).lo});
         d2 += square(Interval(gap));
       }
@@ -329,7 +340,7 @@ class Builder {
     out.d2.resize(cand.size());
     out.spheres.assign(cand.size(), 0);
     for (std::size_t j = 0; j < cand.size(); ++j) {
-      for (int p = 0; p < 10; ++p) out.d2[j][p] = squared_distance(points[p], boundary_[cand[j]].approx);
+      for (int p = 0; p < 10; ++p) out.d2[j][p] = squared_distance(points[p], approx_[cand[j]]);
       for (int k = 0; k < 4; ++k)
         if (contains(boundary_[cand[j]].balls, tau.balls[k])) out.spheres[j] |= 1u << k;
     }
@@ -377,7 +388,7 @@ class Builder {
     out_.candidates += cand.size();
     std::vector<std::array<Interval, 4>> corner_d2(cand.size());
     for (std::size_t i = 0; i < cand.size(); ++i)
-      for (int c = 0; c < 4; ++c) corner_d2[i][c] = squared_distance(corners[c], boundary_[cand[i]].approx);
+      for (int c = 0; c < 4; ++c) corner_d2[i][c] = squared_distance(corners[c], approx_[cand[i]]);
     struct Neighbour {
       double mid, lo;  // |u - v|^2
       std::uint32_t u;
@@ -392,7 +403,7 @@ class Builder {
       order.clear();
       for (std::uint32_t u : cand)
         if (u != v) {
-          const Interval d = squared_distance(boundary_[u].approx, boundary_[v].approx);
+          const Interval d = squared_distance(approx_[u], approx_[v]);
           order.push_back({d.mid(), d.lo, u});
         }
       // Nearest first; a heap, since most cells are emptied after a few clips.
@@ -433,7 +444,7 @@ class Builder {
   };
   Reach reach_of(const ConvexCell& cell, std::uint32_t v) const {
     Box local;
-    for (int k = 0; k < 3; ++k) local[k] = boundary_[v].approx[k] - Interval(origin_[k]);
+    for (int k = 0; k < 3; ++k) local[k] = approx_[v][k] - Interval(origin_[k]);
     double r2 = 0;
     for (const CellFace& f : cell.faces())
       for (std::uint32_t x : f.vertices) r2 = std::max(r2, squared_distance(cell.vertex(x).approx, local).hi);
@@ -462,8 +473,8 @@ class Builder {
   bool beyond_ball(const ConvexCell& cell, Reach* r, std::uint32_t v, std::uint32_t u) const {
     if (!r->ball) bounding_ball(cell, r);
     if (!std::isfinite(r->radius)) return false;
-    const Box& a = boundary_[v].approx;
-    const Box& b = boundary_[u].approx;
+    const Box& a = approx_[v];
+    const Box& b = approx_[u];
     Interval g(0.0), d2(0.0);
     for (int k = 0; k < 3; ++k) {
       const Interval e = a[k] - b[k];
@@ -565,6 +576,7 @@ class Builder {
   const BallSet& balls_;
   const AlphaComplex& k_;
   const std::vector<BoundaryVertex>& boundary_;
+  std::vector<Box> approx_;  // the boundary vertices' enclosures, contiguous (the hot loops read them)
   PointGrid grid_;
   std::shared_ptr<const BisectorField> field_;
   bool reach_;
