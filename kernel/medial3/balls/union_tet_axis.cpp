@@ -241,8 +241,13 @@ class Builder {
       std::array<int, 3> f;
       for (int k = 0, m = 0; k < 4; ++k)
         if (k != omit) f[m++] = k;
-      if (orientation(c[f[0]], c[f[1]], c[f[2]], c[omit]) > 0) std::swap(f[1], f[2]);  // outward order
-      const ExactPoint3 n = cross(c[f[1]] - c[f[0]], c[f[2]] - c[f[0]]);
+      // Outward order: swapping f[1] and f[2] when the omitted corner lies on the positive
+      // side of (f[0], f[1], f[2]) negates the normal, which is done on the one cross product.
+      ExactPoint3 n = cross(c[f[1]] - c[f[0]], c[f[2]] - c[f[0]]);
+      if (sgn(dot(n, c[omit] - c[f[0]])) > 0) {
+        std::swap(f[1], f[2]);
+        n = {-n.x, -n.y, -n.z};
+      }
       const mpq_class d = -dot(n, c[f[0]]);
       const Interval a = enclose(n.x), b = enclose(n.y), cz = enclose(n.z);
       const std::array<Interval, 4> local{a, b, cz, enclose(d) + a * origin_[0] + b * origin_[1] + cz * origin_[2]};
