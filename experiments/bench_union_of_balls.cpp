@@ -8,7 +8,8 @@
 // vertices, Voronoi cells in the tetrahedra, assembly with rational output). Each N runs
 // in its own child process, so peak memory (VmHWM) is that configuration's. Times are
 // process CPU seconds. CSV on stdout:
-//   balls,regular_triangulation_s,axis_s,ratio,axis_vertices,axis_triangles,peak_mem_mb
+//   balls,regular_triangulation_s,axis_s,ratio,axis_vertices,axis_triangles,peak_mem_mb,load
+// (load: the machine's 1-minute load average when the row was measured, machine_load.h)
 // and, as comment lines, the structure, the filter/exact counters and the profile (CPU
 // seconds per stage of the axis) of each run.
 #include <cstdio>
@@ -17,6 +18,7 @@
 
 #include "medial3/balls/union_of_balls_axis.h"
 #include "support/cpu_clock.h"
+#include "machine_load.h"
 #include "peak_memory.h"
 #include "cli.h"
 
@@ -69,10 +71,11 @@ int run(int argc, char** argv) {
   std::vector<std::size_t> sizes;
   for (int i = 1; i < argc; ++i) sizes.push_back(static_cast<std::size_t>(std::atoll(argv[i])));
   if (sizes.empty()) sizes = {100, 1000, 10000};
-  std::printf("balls,regular_triangulation_s,axis_s,ratio,axis_vertices,axis_triangles,peak_mem_mb\n");
+  std::printf("balls,regular_triangulation_s,axis_s,ratio,axis_vertices,axis_triangles,peak_mem_mb,load\n");
   for (std::size_t n : sizes) {
     const std::vector<double> v = bench::in_child([&] { return measure(n); });
-    std::printf("%zu,%.4f,%.4f,%.1f,%.0f,%.0f,%.1f\n", n, v[0], v[1], v[1] / v[0], v[2], v[3], v.back());
+    std::printf("%zu,%.4f,%.4f,%.1f,%.0f,%.0f,%.1f,%.1f\n", n, v[0], v[1], v[1] / v[0], v[2], v[3], v.back(),
+                bench::machine_load());
     std::printf("# n=%zu: rt cells %.0f, alpha tetrahedra %.0f, boundary vertices %.0f, tet polygons %.0f, segments %.0f, "
                 "sign tests %.0f (filter %.0f, structural %.0f, exact %.0f), max coordinate error %.3g, "
                 "triangulation inside the axis %.3f s, candidates per tetrahedron %.1f, cells clipped per tetrahedron %.1f, "

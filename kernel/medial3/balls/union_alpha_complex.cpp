@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <deque>
 #include <random>
 #include <string>
 #include <limits>
@@ -96,54 +97,105 @@ int sign_with_root(const mpq_class& a, int side, const mpq_class& b, const mpq_c
 
 AlphaComplex::AlphaComplex(const BallSet& balls, const RegularTriangulation& rt)
     : balls_(&balls), ball_count_(balls.centers.size()), dimension_(rt.dimension) {
+  auto canonical = [](const mpq_class& q) {
+    if (sgn(q.get_den()) <= 0) return false;
+    mpz_class g;
+    mpz_gcd(g.get_mpz_t(), mpq_numref(q.get_mpq_t()), mpq_denref(q.get_mpq_t()));
+    return g == 1;
+  };
   for (std::size_t i = 0; i < ball_count_; ++i) {
     approx_ball_.push_back({enclose(balls.centers[i].x), enclose(balls.centers[i].y), enclose(balls.centers[i].z)});
     approx_weight_.push_back(enclose(balls.squared_radii[i]));
+    const ExactPoint3& c = balls.centers[i];
+    canonical_ball_.push_back(canonical(c.x) && canonical(c.y) && canonical(c.z) && canonical(balls.squared_radii[i]));
   }
   const std::size_t total = rt.vertices.size() + rt.edges.size() + rt.triangles.size() + rt.tetrahedra.size();
-  index_.reserve(total);
   simplices_.reserve(total);
-  for (std::uint32_t v : rt.vertices) add_simplex({v, kNone, kNone, kNone}, 0);
-  for (const auto& e : rt.edges) add_simplex({e[0], e[1], kNone, kNone}, 1);
-  for (const auto& t : rt.triangles) add_simplex({t[0], t[1], t[2], kNone}, 2);
-  for (const auto& t : rt.tetrahedra) add_simplex(t, 3);
+  add_simplices(rt);
   hidden_ = ball_count_ - rt.vertices.size();
-  for (std::uint32_t s = 0; s < simplices_.size(); ++s) {
-    const PowerSimplex& p = simplices_[s];
-    for (int drop = 0; p.dim > 0 && drop <= p.dim; ++drop) {
-      std::array<std::uint32_t, 4> face{kNone, kNone, kNone, kNone};
-      for (int k = 0, m = 0; k <= p.dim; ++k)
-        if (k != drop) face[m++] = p.balls[k];
-      const std::uint32_t f = find(face, p.dim - 1);
-      if (f == kNone) throw std::logic_error("union alpha complex: a face is missing from the triangulation");
-      simplices_[f].cofaces.push_back(s);
+  // The cofaces of each face, in increasing simplex order: every (facet, simplex) pair of
+  // dimension d, sorted, walked against the sorted faces of dimension d - 1.
+  std::vector<std::pair<std::array<std::uint32_t, 4>, std::uint32_t>> facets;
+  for (int dim = 1; dim <= 3; ++dim) {
+    facets.clear();
+    facets.reserve(by_dim_[dim].size() * static_cast<std::size_t>(dim + 1));
+    for (std::uint32_t s : by_dim_[dim]) {
+      const PowerSimplex& p = simplices_[s];
+      for (int drop = 0; drop <= dim; ++drop) {
+        std::array<std::uint32_t, 4> face{kNone, kNone, kNone, kNone};
+        for (int k = 0, m = 0; k <= dim; ++k)
+          if (k != drop) face[m++] = p.balls[k];
+        facets.push_back({face, s});
+      }
+    }
+    std::sort(facets.begin(), facets.end());
+    const auto& faces = index_[dim - 1];
+    std::size_t f = 0;
+    for (std::size_t i = 0; i < facets.size();) {
+      while (f < faces.size() && faces[f].first < facets[i].first) ++f;
+      if (f == faces.size() || faces[f].first != facets[i].first)
+        throw std::logic_error("union alpha complex: a face is missing from the triangulation");
+      std::size_t j = i;
+      while (j < facets.size() && facets[j].first == facets[i].first) ++j;
+      std::vector<std::uint32_t>& cofaces = simplices_[faces[f].second].cofaces;
+      cofaces.reserve(j - i);
+      for (; i < j; ++i) cofaces.push_back(facets[i].second);
     }
   }
   approximate_centres();
   compute_rho();
 }
 
-void AlphaComplex::add_simplex(const std::array<std::uint32_t, 4>& balls, int dim) {
-  PowerSimplex p;
-  p.balls = balls;
-  std::sort(p.balls.begin(), p.balls.begin() + dim + 1);
-  p.dim = dim;
-  const auto id = static_cast<std::uint32_t>(simplices_.size());
-  if (!index_.emplace(p.balls, id).second) return;
-  simplices_.push_back(std::move(p));
-  by_dim_[dim].push_back(id);
+// The simplices of each dimension in the triangulation's order, a repeated one kept once
+// (its first occurrence), and the sorted index of each dimension.
+void AlphaComplex::add_simplices(const RegularTriangulation& rt) {
+  std::array<std::vector<std::array<std::uint32_t, 4>>, 4> lists;
+  for (std::uint32_t v : rt.vertices) lists[0].push_back({v, kNone, kNone, kNone});
+  for (const auto& e : rt.edges) lists[1].push_back({e[0], e[1], kNone, kNone});
+  for (const auto& t : rt.triangles) lists[2].push_back({t[0], t[1], t[2], kNone});
+  for (const auto& t : rt.tetrahedra) lists[3].push_back(t);
+  for (int dim = 0; dim <= 3; ++dim) {
+    std::vector<std::pair<std::array<std::uint32_t, 4>, std::uint32_t>> order;  // (balls, position)
+    order.reserve(lists[dim].size());
+    for (std::uint32_t i = 0; i < lists[dim].size(); ++i) {
+      std::sort(lists[dim][i].begin(), lists[dim][i].begin() + dim + 1);
+      order.push_back({lists[dim][i], i});
+    }
+    std::sort(order.begin(), order.end());
+    std::vector<bool> repeated(lists[dim].size(), false);
+    for (std::size_t i = 1; i < order.size(); ++i)
+      if (order[i].first == order[i - 1].first) repeated[order[i].second] = true;
+    std::vector<std::uint32_t> id_of(lists[dim].size(), kNone);
+    for (std::uint32_t i = 0; i < lists[dim].size(); ++i) {
+      if (repeated[i]) continue;
+      PowerSimplex p;
+      p.balls = lists[dim][i];
+      p.dim = dim;
+      id_of[i] = static_cast<std::uint32_t>(simplices_.size());
+      simplices_.push_back(std::move(p));
+      by_dim_[dim].push_back(id_of[i]);
+    }
+    auto& index = index_[dim];
+    index.reserve(by_dim_[dim].size());
+    for (const auto& [balls, i] : order)
+      if (!repeated[i]) index.push_back({balls, id_of[i]});
+  }
 }
 
 std::uint32_t AlphaComplex::find(const std::array<std::uint32_t, 4>& balls, int dim) const {
   std::array<std::uint32_t, 4> key{kNone, kNone, kNone, kNone};
   std::copy(balls.begin(), balls.begin() + dim + 1, key.begin());
-  auto it = index_.find(key);
-  return it == index_.end() ? kNone : it->second;
+  const auto& index = index_[dim];
+  auto it = std::lower_bound(index.begin(), index.end(), key,
+                             [](const std::pair<std::array<std::uint32_t, 4>, std::uint32_t>& e,
+                                const std::array<std::uint32_t, 4>& k) { return e.first < k; });
+  return it == index.end() || it->first != key ? kNone : it->second;
 }
 
 // z = c_0 + sum_l lambda_l d_l with 2 (z - c_0) . d_m = |d_m|^2 + w_0 - w_m (equal powers),
-// solved by Cramer's rule in T (Interval for the filter, mpq_class exactly); false when a
-// pivot is not certainly nonzero.
+// solved by Cramer's rule in T (Interval: the filter; the exact values come from
+// integer_power_centre below, or from T = mpq_class for rationals not in canonical form);
+// false when a pivot is not certainly nonzero.
 template <class T, class P, class W>
 bool solve_power_centre(const std::array<const P*, 4>& c, const std::array<const W*, 4>& w, int dim, std::array<T, 3>* z,
                         T* power) {
@@ -193,20 +245,113 @@ bool solve_power_centre(const std::array<const P*, 4>& c, const std::array<const
   return true;
 }
 
+namespace {
+
+// The same exact power centre and power as solve_power_centre<mpq_class>, computed over
+// the integers: centres scaled by the common denominator D of their coordinates, the
+// weights' differences by a common denominator F, Cramer's rule in integers, and one
+// canonicalisation per output value instead of one per rational operation (the gcds were
+// most of the boundary vertices' time). false for a singular system, as there.
+// With X_i = D c_i, e_l = X_{l+1} - X_0, G = (2 e_l . e_m), R_l = F (|e_l|^2 + D^2 (w_0 - w_{l+1})):
+// lambda = G^-1 R / F, z = (X_0 + sum_l lambda_l e_l) / D, w = |z - c_0|^2 - w_0.
+bool integer_power_centre(const std::array<const ExactPoint3*, 4>& c, const std::array<const mpq_class*, 4>& w, int dim,
+                          std::array<mpq_class, 3>* z, mpq_class* power) {
+  auto coord = [](const ExactPoint3& p, int k) -> const mpq_class& { return k == 0 ? p.x : k == 1 ? p.y : p.z; };
+  mpz_class d = 1;
+  for (int i = 0; i <= dim; ++i)
+    for (int k = 0; k < 3; ++k) mpz_lcm(d.get_mpz_t(), d.get_mpz_t(), mpq_denref(coord(*c[i], k).get_mpq_t()));
+  std::array<std::array<mpz_class, 3>, 4> x;
+  for (int i = 0; i <= dim; ++i)
+    for (int k = 0; k < 3; ++k) {
+      const mpq_class& q = coord(*c[i], k);
+      mpz_divexact(x[i][k].get_mpz_t(), d.get_mpz_t(), mpq_denref(q.get_mpq_t()));
+      x[i][k] *= mpz_class(mpq_numref(q.get_mpq_t()));
+    }
+  std::array<std::array<mpz_class, 3>, 3> e;
+  for (int l = 0; l < dim; ++l)
+    for (int k = 0; k < 3; ++k) e[l][k] = x[l + 1][k] - x[0][k];
+  auto dot = [](const std::array<mpz_class, 3>& a, const std::array<mpz_class, 3>& b) -> mpz_class {
+    return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+  };
+  const mpz_class d2 = d * d;
+  std::array<mpq_class, 3> q;
+  mpz_class f = 1;
+  for (int l = 0; l < dim; ++l) {
+    q[l] = (*w[0] - *w[l + 1]) * mpq_class(d2);
+    mpz_lcm(f.get_mpz_t(), f.get_mpz_t(), mpq_denref(q[l].get_mpq_t()));
+  }
+  std::array<std::array<mpz_class, 3>, 3> g;
+  std::array<mpz_class, 3> r;
+  for (int l = 0; l < dim; ++l) {
+    for (int m = 0; m < dim; ++m) g[l][m] = 2 * dot(e[l], e[m]);
+    mpz_class scaled;
+    mpz_divexact(scaled.get_mpz_t(), f.get_mpz_t(), mpq_denref(q[l].get_mpq_t()));
+    r[l] = f * dot(e[l], e[l]) + scaled * mpz_class(mpq_numref(q[l].get_mpq_t()));
+  }
+  mpz_class det;
+  std::array<mpz_class, 3> n;  // lambda_l = n_l / (det f)
+  if (dim == 1) {
+    det = g[0][0];
+    n[0] = r[0];
+  } else if (dim == 2) {
+    det = g[0][0] * g[1][1] - g[0][1] * g[1][0];
+    n[0] = r[0] * g[1][1] - g[0][1] * r[1];
+    n[1] = g[0][0] * r[1] - r[0] * g[1][0];
+  } else if (dim == 3) {
+    auto det3 = [](const std::array<std::array<mpz_class, 3>, 3>& a) -> mpz_class {
+      return a[0][0] * (a[1][1] * a[2][2] - a[1][2] * a[2][1]) - a[0][1] * (a[1][0] * a[2][2] - a[1][2] * a[2][0]) +
+             a[0][2] * (a[1][0] * a[2][1] - a[1][1] * a[2][0]);
+    };
+    det = det3(g);
+    for (int k = 0; k < 3; ++k) {
+      auto gk = g;
+      for (int row = 0; row < 3; ++row) gk[row][k] = r[row];
+      n[k] = det3(gk);
+    }
+  }
+  if (dim > 0 && sgn(det) == 0) return false;
+  const mpz_class den = dim > 0 ? mpz_class(d * det * f) : d;
+  std::array<mpz_class, 3> sum;  // sum_l n_l e_l: z - c_0 = sum / den
+  for (int k = 0; k < 3; ++k) {
+    sum[k] = 0;
+    for (int l = 0; l < dim; ++l) sum[k] += n[l] * e[l][k];
+    mpq_class value(x[0][k] * (dim > 0 ? mpz_class(det * f) : mpz_class(1)) + sum[k], den);
+    value.canonicalize();
+    (*z)[k] = std::move(value);
+  }
+  mpq_class offset(dot(sum, sum), den * den);
+  offset.canonicalize();
+  *power = offset - *w[0];
+  return true;
+}
+
+}  // namespace
+
 const PowerSimplex& AlphaComplex::exact(std::uint32_t s) const {
   PowerSimplex& p = simplices_[s];
   if (p.exact) return p;
-  std::array<std::array<mpq_class, 3>, 4> c;
-  std::array<const std::array<mpq_class, 3>*, 4> cp{};
+  std::array<const ExactPoint3*, 4> cp{};
   std::array<const mpq_class*, 4> wp{};
   for (int i = 0; i <= p.dim; ++i) {
-    const ExactPoint3& x = balls_->centers[p.balls[i]];
-    c[i] = {x.x, x.y, x.z};
-    cp[i] = &c[i];
+    cp[i] = &balls_->centers[p.balls[i]];
     wp[i] = &balls_->squared_radii[p.balls[i]];
   }
   std::array<mpq_class, 3> z;
-  if (!solve_power_centre<mpq_class>(cp, wp, p.dim, &z, &p.power))
+  bool canonical = true;
+  for (int i = 0; i <= p.dim; ++i) canonical = canonical && canonical_ball_[p.balls[i]];
+  bool solved = false;
+  if (canonical) {
+    solved = integer_power_centre(cp, wp, p.dim, &z, &p.power);
+  } else {  // GMP's rational arithmetic keeps such inputs' form; so does the output
+    std::array<std::array<mpq_class, 3>, 4> c;
+    std::array<const std::array<mpq_class, 3>*, 4> rows{};
+    for (int i = 0; i <= p.dim; ++i) {
+      c[i] = {cp[i]->x, cp[i]->y, cp[i]->z};
+      rows[i] = &c[i];
+    }
+    solved = solve_power_centre<mpq_class>(rows, wp, p.dim, &z, &p.power);
+  }
+  if (!solved)
     throw std::logic_error("union alpha complex: degenerate simplex in the regular triangulation");
   p.centre = {z[0], z[1], z[2]};
   p.approx_centre = {enclose(z[0]), enclose(z[1]), enclose(z[2])};
@@ -387,7 +532,7 @@ class DualEdgeFilter {
 
 std::vector<BoundaryVertex> boundary_vertices(const BallSet& b, const AlphaComplex& k, RadicalTable* table,
                                               bool filtered) {
-  std::vector<BoundaryVertex> out;
+  std::deque<BoundaryVertex> found;  // no copies on growth (GMP's rationals move with a throwing move)
   // A point on four or more spheres comes from several triangles.
   auto key_less = [](const std::array<ExactPoint3, 3>& x, const std::array<ExactPoint3, 3>& y) {
     for (int i = 0; i < 3; ++i)
@@ -444,9 +589,12 @@ std::vector<BoundaryVertex> boundary_vertices(const BallSet& b, const AlphaCompl
         v.approx = {enclose(v.z.x) + Interval(side) * enclose(v.n.x) * r, enclose(v.z.y) + Interval(side) * enclose(v.n.y) * r,
                     enclose(v.z.z) + Interval(side) * enclose(v.n.z) * r};
       }
-      out.push_back(v);
+      found.push_back(v);
     }
   }
+  std::vector<BoundaryVertex> out;
+  out.reserve(found.size());
+  for (BoundaryVertex& v : found) out.push_back(std::move(v));
   return out;
 }
 

@@ -21,15 +21,16 @@
 //    them) and the balls through them do not surround them; a point found from several
 //    triangles (on four or more spheres) is kept once.
 // Contract: balls with positive squared radii (std::invalid_argument otherwise), at least
-// one ball. Complexity: O(n log n) for the triangulation (expected), then O(1) exact
-// rational work per simplex.
+// one ball. Complexity: O(n log n) for the triangulation (expected) and for sorting the
+// simplices and their facets (the face/coface index), then O(1) exact work per simplex
+// (power centres over the integers, union_alpha_complex.cpp).
 // Section: 2.1.1 (union of balls: Attali-Montanvert; Amenta-Kolluri 2001).
 #pragma once
 
 #include <array>
 #include <cstdint>
 #include <map>
-#include <unordered_map>
+#include <utility>
 #include <vector>
 
 #include "geometry3/ball_set.h"
@@ -98,7 +99,7 @@ class AlphaComplex {
   std::uint32_t find(const std::array<std::uint32_t, 4>& balls, int dim) const;
 
  private:
-  void add_simplex(const std::array<std::uint32_t, 4>& balls, int dim);
+  void add_simplices(const RegularTriangulation& rt);
   void approximate_centres();
   void compute_rho();
   // Exact signs, after an interval filter: pow_j(z_s) - w_s, and w_a - w_b.
@@ -108,6 +109,7 @@ class AlphaComplex {
   const BallSet* balls_;
   std::vector<std::array<Interval, 3>> approx_ball_;
   std::vector<Interval> approx_weight_;
+  std::vector<bool> canonical_ball_;  // centre and squared radius in GMP's canonical form
   mutable std::size_t exact_count_ = 0;
   std::vector<int> rho_sign_;
   std::vector<bool> in_complex_;
@@ -115,14 +117,9 @@ class AlphaComplex {
   int dimension_ = -1;
   mutable std::vector<PowerSimplex> simplices_;
   std::array<std::vector<std::uint32_t>, 4> by_dim_;
-  struct BallsHash {  // simplices are looked up once per facet: a hash, not a tree
-    std::size_t operator()(const std::array<std::uint32_t, 4>& a) const {
-      std::uint64_t h = 0x9E3779B97F4A7C15ull;
-      for (std::uint32_t x : a) h = (h ^ x) * 0xBF58476D1CE4E5B9ull, h ^= h >> 31;
-      return static_cast<std::size_t>(h);
-    }
-  };
-  std::unordered_map<std::array<std::uint32_t, 4>, std::uint32_t, BallsHash> index_;
+  // Per dimension, (sorted balls, simplex) sorted by balls: find() is a binary search, and
+  // the cofaces come from one sort of the facets (no hash of every facet).
+  std::array<std::vector<std::pair<std::array<std::uint32_t, 4>, std::uint32_t>>, 4> index_;
 };
 
 // pow_i(x) = |x - c_i|^2 - r_i^2.

@@ -39,8 +39,15 @@ class PointGrid {
     for (int k = 0; k < 3; ++k) extent = std::max(extent, hi[k] - lo_[k]);
     h_ = std::max(extent / std::max(1.0, std::cbrt(static_cast<double>(points.size()))), 1e-300);
     for (int k = 0; k < 3; ++k) dims_[k] = static_cast<long>((hi[k] - lo_[k]) / h_) + 1;
-    cells_.resize(static_cast<std::size_t>(dims_[0] * dims_[1] * dims_[2]));
-    for (std::uint32_t i = 0; i < points.size(); ++i) cells_[cell_of(points[i].approx)].push_back(i);
+    // Compressed rows: the points of cell c are points_[first_[c] .. first_[c + 1]), in
+    // increasing order.
+    first_.assign(static_cast<std::size_t>(dims_[0] * dims_[1] * dims_[2]) + 1, 0);
+    std::vector<std::size_t> cell(points.size());
+    for (std::uint32_t i = 0; i < points.size(); ++i) ++first_[(cell[i] = cell_of(points[i].approx)) + 1];
+    for (std::size_t c = 1; c < first_.size(); ++c) first_[c] += first_[c - 1];
+    points_.resize(points.size());
+    std::vector<std::size_t> next(first_.begin(), first_.end() - 1);
+    for (std::uint32_t i = 0; i < points.size(); ++i) points_[next[cell[i]]++] = i;
   }
 
   template <class F>
@@ -53,7 +60,8 @@ class PointGrid {
     for (long x = a[0]; x <= b[0]; ++x)
       for (long y = a[1]; y <= b[1]; ++y)
         for (long z = a[2]; z <= b[2]; ++z)
-          for (std::uint32_t i : cells_[static_cast<std::size_t>((x * dims_[1] + y) * dims_[2] + z)]) f(i);
+          for (std::size_t c = static_cast<std::size_t>((x * dims_[1] + y) * dims_[2] + z), i = first_[c]; i < first_[c + 1]; ++i)
+            f(points_[i]);
   }
   double spacing() const { return h_; }
 
@@ -67,7 +75,8 @@ class PointGrid {
   std::array<double, 3> lo_;
   double h_ = 1;
   std::array<long, 3> dims_{1, 1, 1};
-  std::vector<std::vector<std::uint32_t>> cells_;
+  std::vector<std::size_t> first_;
+  std::vector<std::uint32_t> points_;
 };
 
 struct PlaneInfo {
@@ -136,8 +145,10 @@ class Builder {
  public:
   Builder(const BallSet& balls, const AlphaComplex& k, const std::vector<BoundaryVertex>& boundary,
           const RadicalTable& table, bool reach)
-      : balls_(balls), k_(k), boundary_(boundary), grid_(boundary),
-        field_(std::make_shared<const BisectorField>(boundary, table)), reach_(reach) {}
+      : balls_(balls), k_(k), boundary_(boundary), approx_(boundary.size()), grid_(boundary),
+        field_(std::make_shared<const BisectorField>(boundary, table)), reach_(reach) {
+    for (std::size_t i = 0; i < boundary.size(); ++i) approx_[i] = boundary[i].approx;
+  }
 
   TetAxis run() {
     for (std::uint32_t t : k_.of_dimension(3))
@@ -148,28 +159,42 @@ class Builder {
   }
 
  private:
-  std::vector<std::uint32_t> feature_of(const CellVertex& x) const {
+  // The balls of the smallest face of tau containing x: the intersection of the balls of
+  // the tetrahedron faces through it (0 to 3 balls; none inside tau), without the heap.
+  struct Feature {
+    std::array<std::uint32_t, 3> balls{};
+    std::size_t size = 0;
+  };
+  Feature smallest_face(const CellVertex& x) const {
     bool first = true;
-    std::vector<std::uint32_t> f;
+    Feature f;
     for (std::uint32_t p : x.support) {
       const PlaneInfo& info = info_[p];
       if (info.bisector) continue;
       if (first) {
-        f.assign(info.face.begin(), info.face.end());
+        f.balls = info.face;
+        f.size = 3;
         first = false;
       } else {
-        f.erase(std::remove_if(f.begin(), f.end(), [&](std::uint32_t b) { return !contains(info.face, b); }), f.end());
+        std::size_t m = 0;
+        for (std::size_t i = 0; i < f.size; ++i)
+          if (contains(info.face, f.balls[i])) f.balls[m++] = f.balls[i];
+        f.size = m;
       }
     }
     return f;
   }
+  std::vector<std::uint32_t> feature_of(const CellVertex& x) const {
+    const Feature f = smallest_face(x);
+    return {f.balls.begin(), f.balls.begin() + static_cast<std::ptrdiff_t>(f.size)};
+  }
 
   // The bisector of v and u contains the face through x when every ball of that face has
   // both v and u on its sphere (its centre is then equidistant from them).
-  bool structural(const std::vector<std::uint32_t>& feature, std::uint32_t v, std::uint32_t u) const {
-    if (feature.empty()) return false;
-    for (std::uint32_t b : feature)
-      if (!contains(boundary_[v].balls, b) || !contains(boundary_[u].balls, b)) return false;
+  bool structural(const std::uint32_t* feature, std::size_t size, std::uint32_t v, std::uint32_t u) const {
+    if (size == 0) return false;
+    for (std::size_t i = 0; i < size; ++i)
+      if (!contains(boundary_[v].balls, feature[i]) || !contains(boundary_[u].balls, feature[i])) return false;
     return true;
   }
 
@@ -179,7 +204,7 @@ class Builder {
     if (key.feature.size() == 1) return key;  // a ball centre
     for (std::uint32_t p : x.support) {
       const PlaneInfo& info = info_[p];
-      if (!info.bisector || structural(key.feature, info.v, info.u)) continue;
+      if (!info.bisector || structural(key.feature.data(), key.feature.size(), info.v, info.u)) continue;
       key.equidistant.push_back(info.v);
       key.equidistant.push_back(info.u);
     }
@@ -188,13 +213,12 @@ class Builder {
     return key;
   }
 
-  std::uint32_t bisector(PlaneSet& planes, std::map<std::pair<std::uint32_t, std::uint32_t>, std::uint32_t>& cache,
-                         std::uint32_t v, std::uint32_t u) {
-    auto [it, fresh] = cache.emplace(std::make_pair(v, u), 0);
-    if (!fresh) return it->second;
+  // The plane of the bisector of v and u (kept side: v's), added to this tetrahedron's set;
+  // each ordered pair is asked once per tetrahedron (one cell per v, one clip per u).
+  std::uint32_t bisector(PlaneSet& planes, std::uint32_t v, std::uint32_t u) {
     // |x - v|^2 <= |x - u|^2  <=>  2 (u - v) . x + |v|^2 - |u|^2 <= 0.
-    const Box& a = boundary_[v].approx;
-    const Box& b = boundary_[u].approx;
+    const Box& a = approx_[v];
+    const Box& b = approx_[u];
     // In local coordinates x - o: d + n . o = |v - o|^2 - |u - o|^2 = (v - u) . (v + u - 2 o).
     std::array<Interval, 4> approx;
     approx[3] = Interval(0.0);
@@ -203,9 +227,9 @@ class Builder {
       approx[3] += (a[k] - b[k]) * (a[k] + b[k] - Interval(2 * origin_[k]));
     }
     auto make = [field = field_, v, u]() { return field->bisector(v, u); };
-    it->second = planes.add(CellPlane(make, approx, 0));
+    const std::uint32_t id = planes.add(CellPlane(make, approx, 0));
     info_.push_back({true, {}, v, u});
-    return it->second;
+    return id;
   }
 
   ConvexCell tetrahedron_cell(PlaneSet& planes, const PowerSimplex& tau) {
@@ -217,8 +241,13 @@ class Builder {
       std::array<int, 3> f;
       for (int k = 0, m = 0; k < 4; ++k)
         if (k != omit) f[m++] = k;
-      if (orientation(c[f[0]], c[f[1]], c[f[2]], c[omit]) > 0) std::swap(f[1], f[2]);  // outward order
-      const ExactPoint3 n = cross(c[f[1]] - c[f[0]], c[f[2]] - c[f[0]]);
+      // Outward order: swapping f[1] and f[2] when the omitted corner lies on the positive
+      // side of (f[0], f[1], f[2]) negates the normal, which is done on the one cross product.
+      ExactPoint3 n = cross(c[f[1]] - c[f[0]], c[f[2]] - c[f[0]]);
+      if (sgn(dot(n, c[omit] - c[f[0]])) > 0) {
+        std::swap(f[1], f[2]);
+        n = {-n.x, -n.y, -n.z};
+      }
       const mpq_class d = -dot(n, c[f[0]]);
       const Interval a = enclose(n.x), b = enclose(n.y), cz = enclose(n.z);
       const std::array<Interval, 4> local{a, b, cz, enclose(d) + a * origin_[0] + b * origin_[1] + cz * origin_[2]};
@@ -248,7 +277,7 @@ class Builder {
       grid_.visit({centre[0] - r, centre[1] - r, centre[2] - r}, {centre[0] + r, centre[1] + r, centre[2] + r},
                   [&](std::uint32_t u) {
                     double worst = 0;
-                    for (const Box& c : corners) worst = std::max(worst, squared_distance(c, boundary_[u].approx).hi);
+                    for (const Box& c : corners) worst = std::max(worst, squared_distance(c, approx_[u]).hi);
                     b2 = std::min(b2, worst);
                   });
     }
@@ -257,7 +286,7 @@ class Builder {
     grid_.visit({lo[0] - b, lo[1] - b, lo[2] - b}, {hi[0] + b, hi[1] + b, hi[2] + b}, [&](std::uint32_t v) {
       Interval d2(0.0);
       for (int k = 0; k < 3; ++k) {
-        const Box& p = boundary_[v].approx;
+        const Box& p = approx_[v];
         const double gap = std::max({0.0, (Interval(lo[k]) - p[k]).lo, (p[k] - Interval(hi[k])).lo});
         d2 += square(Interval(gap));
       }
@@ -285,6 +314,67 @@ class Builder {
     return false;
   }
 
+  // The finer test of the fast path: tau split into eight tetrahedra at its edge midpoints
+  // (four at the corners, four around the diagonal m01 m23 of the middle octahedron);
+  // candidate i owns no interior point of tau when each piece has some other candidate j
+  // with f = |x - j|^2 - |x - i|^2 <= 0 at its four corners and < 0 at one of them (f is
+  // affine: then f < 0 on the piece off a proper face, and the cell of i meets the piece
+  // in no interior point; finitely many such pieces cover tau, so i's cell is empty, as
+  // clipping would find). f < 0 is certified by intervals; f = 0 structurally, where
+  // interval tests never succeed: at corner k of tau when i and j are both on the sphere
+  // of ball k (both at distance r_k from its centre), at a midpoint when both are on the
+  // spheres of the edge's two balls. Without the ties, no piece at a corner would ever be
+  // covered for the many candidates on that corner's sphere.
+  // `d2[j][p]` encloses the squared distance from point p (corners 0-3, then the midpoints
+  // m01 m02 m03 m12 m13 m23) to candidate j; `spheres[j]` has bit k when candidate j lies
+  // on the sphere of tau's ball k.
+  struct PieceDistances {
+    std::vector<std::array<Interval, 10>> d2;
+    std::vector<unsigned> spheres;
+  };
+  static constexpr int kPieces[8][4] = {{0, 4, 5, 6}, {1, 4, 7, 8}, {2, 5, 7, 9}, {3, 6, 8, 9},
+                                        {4, 9, 5, 6}, {4, 9, 6, 8}, {4, 9, 8, 7}, {4, 9, 7, 5}};
+  static constexpr int kEdges[6][2] = {{0, 1}, {0, 2}, {0, 3}, {1, 2}, {1, 3}, {2, 3}};
+  PieceDistances piece_distances(const PowerSimplex& tau, const std::array<Box, 4>& corners,
+                                 const std::vector<std::uint32_t>& cand) const {
+    std::array<Box, 10> points;
+    for (int k = 0; k < 4; ++k) points[k] = corners[k];
+    for (int e = 0; e < 6; ++e)
+      for (int k = 0; k < 3; ++k) points[4 + e][k] = half(corners[kEdges[e][0]][k] + corners[kEdges[e][1]][k]);
+    PieceDistances out;
+    out.d2.resize(cand.size());
+    out.spheres.assign(cand.size(), 0);
+    for (std::size_t j = 0; j < cand.size(); ++j) {
+      for (int p = 0; p < 10; ++p) out.d2[j][p] = squared_distance(points[p], approx_[cand[j]]);
+      for (int k = 0; k < 4; ++k)
+        if (contains(boundary_[cand[j]].balls, tau.balls[k])) out.spheres[j] |= 1u << k;
+    }
+    return out;
+  }
+  bool excluded_by_pieces(std::size_t i, const PieceDistances& pd) const {
+    for (const auto& piece : kPieces) {
+      bool covered = false;
+      for (std::size_t j = 0; j < pd.d2.size() && !covered; ++j) {
+        if (j == i) continue;
+        const unsigned both = pd.spheres[i] & pd.spheres[j];
+        bool strict = false;
+        covered = true;
+        for (int q = 0; q < 4 && covered; ++q) {
+          const int p = piece[q];
+          if (pd.d2[j][p].hi < pd.d2[i][p].lo) {
+            strict = true;
+            continue;
+          }
+          const unsigned need = p < 4 ? 1u << p : (1u << kEdges[p - 4][0]) | (1u << kEdges[p - 4][1]);
+          covered = (both & need) == need;
+        }
+        covered = covered && strict;
+      }
+      if (!covered) return false;
+    }
+    return true;
+  }
+
   void process_tetrahedron(const PowerSimplex& tau) {
     ++out_.tetrahedra;
     PlaneSet planes;
@@ -293,60 +383,111 @@ class Builder {
     origin_ = {first.x.get_d(), first.y.get_d(), first.z.get_d()};
     const ConvexCell tet = tetrahedron_cell(planes, tau);
     planes.set_structural_zero([this](std::uint32_t p, const CellVertex& x) {
-      return info_[p].bisector && structural(feature_of(x), info_[p].v, info_[p].u);
+      if (!info_[p].bisector) return false;
+      const Feature f = smallest_face(x);
+      return structural(f.balls.data(), f.size, info_[p].v, info_[p].u);
     });
     std::array<Box, 4> corners;
     for (int k = 0; k < 4; ++k) corners[k] = enclose_point(balls_.centers[tau.balls[k]]);
     const std::vector<std::uint32_t> cand = candidates(corners);
     out_.candidates += cand.size();
-    std::map<std::pair<std::uint32_t, std::uint32_t>, std::uint32_t> cache;
     std::vector<std::array<Interval, 4>> corner_d2(cand.size());
     for (std::size_t i = 0; i < cand.size(); ++i)
-      for (int c = 0; c < 4; ++c) corner_d2[i][c] = squared_distance(corners[c], boundary_[cand[i]].approx);
+      for (int c = 0; c < 4; ++c) corner_d2[i][c] = squared_distance(corners[c], approx_[cand[i]]);
     struct Neighbour {
       double mid, lo;  // |u - v|^2
       std::uint32_t u;
       bool operator<(const Neighbour& o) const { return mid < o.mid || (mid == o.mid && u < o.u); }
     };
     std::vector<Neighbour> order;
+    const PieceDistances pieces = reach_ ? piece_distances(tau, corners, cand) : PieceDistances{};
     for (std::size_t i = 0; i < cand.size(); ++i) {
       const std::uint32_t v = cand[i];
-      if (excluded(i, corner_d2)) continue;
+      if (excluded(i, corner_d2) || (reach_ && excluded_by_pieces(i, pieces))) continue;
       ++out_.cells_clipped;
       order.clear();
       for (std::uint32_t u : cand)
         if (u != v) {
-          const Interval d = squared_distance(boundary_[u].approx, boundary_[v].approx);
+          const Interval d = squared_distance(approx_[u], approx_[v]);
           order.push_back({d.mid(), d.lo, u});
         }
-      std::sort(order.begin(), order.end());
+      // Nearest first; a heap, since most cells are emptied after a few clips.
+      auto later = [](const Neighbour& a, const Neighbour& b) { return b < a; };
+      std::make_heap(order.begin(), order.end(), later);
       ConvexCell cell = tet;
-      double reach2 = reach_ ? reach_squared(cell, v) : INFINITY;
-      for (const auto& [d, d_lo, u] : order) {
-        if (d_lo > reach2) {
+      Reach reach = reach_ ? reach_of(cell, v) : Reach{};
+      for (auto end = order.end(); end != order.begin(); --end) {
+        std::pop_heap(order.begin(), end, later);
+        const auto [d, d_lo, u] = *(end - 1);
+        if (d_lo > reach.squared || (reach_ && beyond_ball(cell, &reach, v, u))) {
           ++out_.beyond_reach;
           continue;
         }
         ++out_.clips;
-        const ConvexCell::Clip c = cell.clip(bisector(planes, cache, v, u));
+        const ConvexCell::Clip c = cell.clip(bisector(planes, v, u));
         if (c == ConvexCell::Clip::Emptied) break;
-        if (c == ConvexCell::Clip::Cut && reach_) reach2 = reach_squared(cell, v);
+        if (c == ConvexCell::Clip::Cut && reach_) reach = reach_of(cell, v);
       }
       record_faces(cell, planes, v);
     }
     out_.stats.merge(planes.stats);
   }
 
-  // (2 R)^2 rounded up, R the largest distance from boundary vertex v to a vertex of the
-  // cell (a certified upper bound): a bisector of v and u with |u - v|^2 > (2 R)^2 leaves
-  // every point x of the cell strictly on v's side, |x - u| >= |u - v| - |x - v| > R >= |x - v|.
-  double reach_squared(const ConvexCell& cell, std::uint32_t v) const {
+  // Two certified reasons why the bisector of boundary vertices v and u cannot touch the
+  // current cell of v (every point of it strictly nearer to v, so the clip would change
+  // nothing, not even a support): (1) `squared` = (2 R)^2 rounded up, R the largest
+  // distance from v to a vertex of the cell: |u - v|^2 > (2 R)^2 gives, for x in the cell,
+  // |x - u| >= |u - v| - |x - v| > R >= |x - v|; (2) a ball B(m, r) around the cell lies
+  // strictly on v's side: for x in it, |x - u|^2 - |x - v|^2 = (v - u) . (2 x - u - v)
+  // >= (v - u) . (2 m - u - v) - 2 r |u - v| > 0. The ball is centred at the middle of the
+  // cell's bounding box, so (2) holds for most far candidates that (1) keeps.
+  struct Reach {
+    double squared = INFINITY;
+    bool ball = false;  // centre and radius computed (on first need, after each cut)
+    Box centre;         // m, global coordinates
+    double radius = INFINITY;
+  };
+  Reach reach_of(const ConvexCell& cell, std::uint32_t v) const {
     Box local;
-    for (int k = 0; k < 3; ++k) local[k] = boundary_[v].approx[k] - Interval(origin_[k]);
+    for (int k = 0; k < 3; ++k) local[k] = approx_[v][k] - Interval(origin_[k]);
     double r2 = 0;
     for (const CellFace& f : cell.faces())
       for (std::uint32_t x : f.vertices) r2 = std::max(r2, squared_distance(cell.vertex(x).approx, local).hi);
-    return std::isfinite(r2) ? 4 * r2 : INFINITY;  // x 4 is exact
+    Reach r;
+    r.squared = std::isfinite(r2) ? 4 * r2 : INFINITY;  // x 4 is exact
+    return r;
+  }
+  void bounding_ball(const ConvexCell& cell, Reach* r) const {
+    r->ball = true;
+    std::array<double, 3> lo{INFINITY, INFINITY, INFINITY}, hi{-INFINITY, -INFINITY, -INFINITY};
+    for (const CellFace& f : cell.faces())
+      for (std::uint32_t x : f.vertices)
+        for (int k = 0; k < 3; ++k) {
+          lo[k] = std::min(lo[k], cell.vertex(x).approx[k].lo);
+          hi[k] = std::max(hi[k], cell.vertex(x).approx[k].hi);
+        }
+    Box m;
+    for (int k = 0; k < 3; ++k) m[k] = Interval(0.5 * (lo[k] + hi[k]));
+    double rho2 = 0;
+    for (const CellFace& f : cell.faces())
+      for (std::uint32_t x : f.vertices) rho2 = std::max(rho2, squared_distance(cell.vertex(x).approx, m).hi);
+    if (!std::isfinite(rho2)) return;
+    r->radius = sqrt(Interval(rho2)).hi;
+    for (int k = 0; k < 3; ++k) r->centre[k] = m[k] + Interval(origin_[k]);
+  }
+  bool beyond_ball(const ConvexCell& cell, Reach* r, std::uint32_t v, std::uint32_t u) const {
+    if (!r->ball) bounding_ball(cell, r);
+    if (!std::isfinite(r->radius)) return false;
+    const Box& a = approx_[v];
+    const Box& b = approx_[u];
+    Interval g(0.0), d2(0.0);
+    for (int k = 0; k < 3; ++k) {
+      const Interval e = a[k] - b[k];
+      g += e * (Interval(2) * r->centre[k] - a[k] - b[k]);
+      d2 += square(e);
+    }
+    const Interval margin = g - Interval(2) * Interval(r->radius) * sqrt(d2);
+    return std::isfinite(margin.lo) && margin.lo > 0;
   }
 
   void record_faces(const ConvexCell& cell, PlaneSet& planes, std::uint32_t v) {
@@ -440,6 +581,7 @@ class Builder {
   const BallSet& balls_;
   const AlphaComplex& k_;
   const std::vector<BoundaryVertex>& boundary_;
+  std::vector<Box> approx_;  // the boundary vertices' enclosures, contiguous (the hot loops read them)
   PointGrid grid_;
   std::shared_ptr<const BisectorField> field_;
   bool reach_;

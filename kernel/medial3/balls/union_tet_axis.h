@@ -19,7 +19,11 @@
 // points whose interval boxes overlap are compared exactly and merged.
 // Contract: the inputs of one AlphaComplex and its boundary vertices (same RadicalTable).
 // Complexity: per tetrahedron O(|C|^2) clips in the worst case; cells that a nearer
-// candidate excludes at all four corners are skipped without clipping.
+// candidate excludes at all four corners are skipped without clipping, and on the fast
+// path also those excluded piece by piece on the eight tetrahedra of tau's midpoint split
+// (with the exact ties at tau's corners and edges; 5.4 cells clipped per tetrahedron
+// instead of 28.9 on random_ball_set(10^4)), and each cell's clips skip bisectors that
+// certainly miss it (the reach bound and a ball around the cell).
 #pragma once
 
 #include <memory>
