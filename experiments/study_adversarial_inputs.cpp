@@ -2,13 +2,17 @@
 // runs, counting internal messages (docs/design.md 3: valid input never gets an internal
 // invariant message; bad input gets a clear one).
 //
-// Usage: study_adversarial_inputs [--inputs N] [--seconds S] [--kind K]... [--out FILE] [--append]
+// Usage: study_adversarial_inputs [--inputs N] [--seconds S] [--check-every K] [--hang-seconds H]
+//                                 [--kind K]... [--out FILE] [--append]
 // Kinds (each input i is a pure function of the kind and i):
 //  - polygon:<kind> for every kind of shapes/adversarial_polygons.h: the polygon, validated
 //    (invalid ones are generator misses, counted apart), then `edf2d --exact`'s pipeline
-//    (compute_edf2d: exact polygon axis, EDF, measures) and the definition-level check of
-//    the axis (medial2/polygon/polygon_axis_validate.h: R = distance to the boundary at every node,
-//    leaves = convex corners); the diagrams rebuilt by CGAL are counted (fallbacks);
+//    (compute_edf2d: exact polygon axis, EDF, measures) on every input, and the
+//    definition-level check of the axis (medial2/polygon/polygon_axis_validate.h: R =
+//    distance to the boundary at every node, leaves = convex corners) on every K-th input
+//    (default K = 200: the check is exact at every node and edge against every boundary
+//    segment, 10 to 50 times the pipeline's cost; K = 1 checks all); the diagrams rebuilt
+//    by CGAL are counted (fallbacks);
 //  - mesh:near-coplanar: an octahedron whose faces are split at a centroid lifted off the
 //    face by 10^-k of its size (k in 3..15), written as OFF with 17 significant digits;
 //  - mesh:slivers: a tetrahedron whose faces are split at a point 10^-k of the edge length
@@ -23,14 +27,25 @@
 // Outcomes per input: accepted; refused (an exception whose message names the input and
 // carries no internal text: a clear message); internal (std::logic_error other than
 // std::invalid_argument, or a message with internal text: CGAL, assertion, invariant,
-// std::...). Each kind runs until N inputs or S seconds (thread CPU) are spent.
+// std::...). Each kind runs until N inputs (default 10^5; a generator miss is not an input)
+// or S seconds (thread CPU; default no limit) are spent. Crashes and hangs: a fatal signal (SIGSEGV, SIGBUS, SIGFPE, SIGILL,
+// SIGABRT) or one input running more than H seconds (wall clock, default 300) ends the run
+// with exit status 3 and the input's name on stderr, so a run that finishes had neither;
+// the slowest input of each kind (thread CPU seconds) is in the CSV. SIGTERM or SIGINT
+// stops the run after the input running: the kind is written with the inputs it ran (its
+// row marked `stopped`), the kinds after it are not run.
 // Writes one CSV row per kind: kind,inputs,generator_misses,accepted,refused,internal,
-// definition_failures,fallbacks,seconds (default experiments/results/adversarial_inputs.csv)
+// definition_checked,definition_failures,fallbacks,seconds,slowest_input_seconds,stopped
+// (default experiments/results/adversarial_inputs.csv), rewritten after every kind
 // (--append: adds the rows to an existing FILE, so kinds can be run apart) and prints every
 // internal message (first 20 per kind) on stderr.
 #include <unistd.h>
 
+#include <algorithm>
+#include <atomic>
+#include <chrono>
 #include <cmath>
+#include <csignal>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
@@ -41,9 +56,11 @@
 #include <sstream>
 #include <stdexcept>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include "cli.h"
+#include "run_options.h"
 #include "complex3/raw_complex.h"
 #include "support/atomic_file.h"
 #include "io/complex_json.h"
@@ -60,7 +77,8 @@ using namespace grassfire;
 namespace {
 
 constexpr const char* kUsage =
-    "study_adversarial_inputs [--inputs N] [--seconds S] [--kind K]... [--out FILE] [--append]\n"
+    "study_adversarial_inputs [--inputs N] [--seconds S] [--check-every K] [--hang-seconds H] [--kind K]...\n"
+    "                         [--out FILE] [--append]\n"
     "adversarial polygons, meshes and complexes through the edf2d / burn3d pipelines;\n"
     "CSV of outcome counts per kind (default experiments/results/adversarial_inputs.csv)\n";
 
@@ -74,9 +92,9 @@ bool internal_text(const std::string& m) {
 }
 
 struct Tally {
-  std::uint64_t inputs = 0, misses = 0, accepted = 0, refused = 0, internal = 0, definition_failures = 0,
-                fallbacks = 0;
-  double seconds = 0;
+  std::uint64_t inputs = 0, misses = 0, accepted = 0, refused = 0, internal = 0, definition_checked = 0,
+                definition_failures = 0, fallbacks = 0;
+  double seconds = 0, slowest = 0;
 };
 
 std::string digits17(double x) {
@@ -170,6 +188,53 @@ RawComplex singular_book(std::mt19937_64& rng) {
 
 // --- running --------------------------------------------------------------------------
 
+// The input running now, for the crash and hang reports: a fatal signal writes its name
+// and exits 3 (async-signal-safe: write and _exit on a fixed buffer); a thread checks five
+// times a second that no input has run more than the limit (wall clock), else does the same.
+class Watchdog {
+ public:
+  explicit Watchdog(double limit_seconds) : limit_(limit_seconds) {
+    for (int sig : {SIGSEGV, SIGBUS, SIGFPE, SIGILL, SIGABRT}) std::signal(sig, on_signal);
+    for (int sig : {SIGTERM, SIGINT}) std::signal(sig, on_stop);
+    thread_ = std::thread([this] {
+      while (!quit_) {
+        std::this_thread::sleep_for(std::chrono::milliseconds(200));
+        const std::int64_t started = started_ms_.load();
+        if (started >= 0 && now_ms() - started > static_cast<std::int64_t>(limit_ * 1000)) report("hang (over the time limit)");
+      }
+    });
+  }
+  ~Watchdog() {
+    quit_ = true;
+    thread_.join();
+  }
+  void start(const std::string& name) {
+    std::snprintf(current_, sizeof current_, "%s", name.c_str());
+    started_ms_ = now_ms();
+  }
+  void stop() { started_ms_ = -1; }
+  static bool stop_requested() { return stop_requested_ != 0; }
+
+ private:
+  static std::int64_t now_ms() {
+    return std::chrono::duration_cast<std::chrono::milliseconds>(std::chrono::steady_clock::now().time_since_epoch()).count();
+  }
+  static void report(const char* what) {
+    const char* head = "study_adversarial_inputs: ";
+    for (const char* part : {head, what, " at ", static_cast<const char*>(current_), "\n"})
+      if (::write(2, part, std::strlen(part)) < 0) break;
+    ::_exit(3);
+  }
+  static void on_signal(int) { report("crash (fatal signal)"); }
+  static void on_stop(int) { stop_requested_ = 1; }
+  static inline volatile std::sig_atomic_t stop_requested_ = 0;
+  static inline char current_[256] = "(none)";
+  double limit_;
+  std::atomic<std::int64_t> started_ms_{-1};
+  std::atomic<bool> quit_{false};
+  std::thread thread_;
+};
+
 Outcome classify(const std::string& message, bool logic, const std::string& name, std::vector<std::string>& findings) {
   if (!logic && !internal_text(message)) return Outcome::Refused;
   if (findings.size() < 20) findings.push_back(name + ": " + message);
@@ -192,7 +257,7 @@ Outcome guarded(const std::string& name, std::vector<std::string>& findings, F&&
   }
 }
 
-Outcome run_polygon(const std::string& kind, std::uint64_t i, Tally& t, std::vector<std::string>& findings) {
+Outcome run_polygon(const std::string& kind, std::uint64_t i, bool check, Tally& t, std::vector<std::string>& findings) {
   Shape2 s = adversarial_polygon(kind, i);
   return guarded(s.name, findings, [&] {
     validate_shape(s, s.name);
@@ -200,6 +265,8 @@ Outcome run_polygon(const std::string& kind, std::uint64_t i, Tally& t, std::vec
     o.axis = AxisMethod::ExactPolygon;
     const Edf2dResult r = compute_edf2d(s, o);
     t.fallbacks += r.polygon_report.voronoi_fallbacks;
+    if (!check) return;
+    ++t.definition_checked;
     const AxisValidation v = validate_polygon_axis(*r.graph);
     if (!v.ok()) {
       ++t.definition_failures;
@@ -243,24 +310,18 @@ Outcome run_burn3d(const std::string& path, const std::string& text, const Mesh*
 }  // namespace
 
 int run(int argc, char** argv) {
-  std::uint64_t inputs = 100000;
-  double seconds = 60;
-  std::vector<std::string> kinds;
-  std::string out = std::string(GF_PROJECT_DATA) + "/../experiments/results/adversarial_inputs.csv";
-  bool append = false;
-  for (int a = 1; a < argc; ++a) {
-    const std::string arg = argv[a];
-    if (arg == "--append") {
-      append = true;
-      continue;
-    }
-    if (a + 1 >= argc) throw std::invalid_argument("missing value after " + arg);
-    if (arg == "--inputs") inputs = std::stoull(argv[++a]);
-    else if (arg == "--seconds") seconds = std::stod(argv[++a]);
-    else if (arg == "--kind") kinds.push_back(argv[++a]);
-    else if (arg == "--out") out = argv[++a];
-    else throw std::invalid_argument("unknown argument " + arg);
-  }
+  experiments::RunOptionSpec spec{
+      {"--append"}, {"--inputs", "--seconds", "--check-every", "--hang-seconds", "--kind", "--out"}, 0, 0};
+  spec.shard = false;
+  const experiments::RunOptions cmd = experiments::parse_run_options(argc, argv, spec);
+  const std::uint64_t inputs = cmd.count("--inputs", 100000);
+  const double seconds = cmd.number("--seconds", INFINITY);
+  const std::uint64_t check_every = cmd.count("--check-every", 200);
+  const double hang_seconds = cmd.number("--hang-seconds", 300);
+  if (check_every == 0) throw experiments::UsageError("--check-every must be at least 1");
+  std::vector<std::string> kinds = cmd.values("--kind");
+  const std::string out = cmd.text("--out", std::string(GF_PROJECT_DATA) + "/../experiments/results/adversarial_inputs.csv");
+  const bool append = cmd.flag("--append");
   if (kinds.empty()) {
     for (const std::string& k : adversarial_polygon_kinds()) kinds.push_back("polygon:" + k);
     for (const char* k : {"mesh:near-coplanar", "mesh:slivers", "complex:singular-edges"}) kinds.push_back(k);
@@ -272,17 +333,25 @@ int run(int argc, char** argv) {
     if (!old) throw std::invalid_argument("--append: cannot read " + out);
     csv << old.rdbuf();
   } else {
-    csv << "kind,inputs,generator_misses,accepted,refused,internal,definition_failures,fallbacks,seconds\n";
+    csv << "kind,inputs,generator_misses,accepted,refused,internal,definition_checked,definition_failures,fallbacks,"
+           "seconds,slowest_input_seconds,stopped\n";
   }
+  Watchdog watchdog(hang_seconds);
   for (const std::string& kind : kinds) {
+    if (Watchdog::stop_requested()) break;
     Tally t;
     std::vector<std::string> findings;
     const double t0 = thread_seconds();
-    for (std::uint64_t i = 0; i < inputs && thread_seconds() - t0 < seconds; ++i) {
+    // N valid inputs (generator misses do not count), at most 10 N tries.
+    for (std::uint64_t i = 0; t.inputs < inputs && i < 10 * inputs && thread_seconds() - t0 < seconds &&
+                              !Watchdog::stop_requested();
+         ++i) {
       std::mt19937_64 rng(i * 0x9e3779b97f4a7c15ull + std::hash<std::string>{}(kind));
+      watchdog.start(kind + " input " + std::to_string(i));
+      const double input_start = thread_seconds();
       Outcome o;
       if (kind.rfind("polygon:", 0) == 0) {
-        o = run_polygon(kind.substr(8), i, t, findings);
+        o = run_polygon(kind.substr(8), i, i % check_every == 0, t, findings);
       } else if (kind == "mesh:near-coplanar") {
         const Mesh m = near_coplanar_mesh(rng);
         o = run_burn3d(tmp + ".off", off_text(m), &m, findings);
@@ -294,6 +363,8 @@ int run(int argc, char** argv) {
       } else {
         throw std::invalid_argument("unknown kind " + kind);
       }
+      t.slowest = std::max(t.slowest, thread_seconds() - input_start);
+      watchdog.stop();
       if (o == Outcome::Miss) {
         ++t.misses;
         continue;
@@ -306,11 +377,14 @@ int run(int argc, char** argv) {
     t.seconds = thread_seconds() - t0;
     for (const std::string& f : findings) std::cerr << kind << ": " << f << "\n";
     csv << kind << ',' << t.inputs << ',' << t.misses << ',' << t.accepted << ',' << t.refused << ',' << t.internal << ','
-        << t.definition_failures << ',' << t.fallbacks << ',' << t.seconds << "\n";
+        << t.definition_checked << ',' << t.definition_failures << ',' << t.fallbacks << ',' << t.seconds << ','
+        << t.slowest << ',' << (Watchdog::stop_requested() ? "stopped" : "") << "\n";
     std::cout << kind << ": " << t.inputs << " inputs (" << t.misses << " generator misses), " << t.accepted
-              << " accepted, " << t.refused << " refused, " << t.internal << " internal, " << t.definition_failures
-              << " definition failures, " << t.fallbacks << " fallbacks, " << t.seconds << " s\n"
+              << " accepted, " << t.refused << " refused, " << t.internal << " internal, " << t.definition_checked
+              << " checked against the definition, " << t.definition_failures << " definition failures, " << t.fallbacks
+              << " fallbacks, " << t.seconds << " s (slowest input " << t.slowest << " s)\n"
               << std::flush;
+    write_file_atomically(out, csv.str());  // the kinds done so far survive a run stopped later
   }
   for (const char* ext : {".off", ".json"}) std::filesystem::remove(tmp + ext);
   write_file_atomically(out, csv.str());

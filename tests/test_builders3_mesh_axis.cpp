@@ -443,10 +443,11 @@ TEST_CASE("mesh axis skips a thickness round that would add few samples", "[mesh
 }
 
 TEST_CASE("mesh axis sample limit: a round over it stops with a message naming --max-samples", "[mesh_axis]") {
-  // A thin torus whose first sampling (mean edge length) misses its handle: the axis needs a
-  // second, finer round. A limit below that round's samples refuses with the rounds reached
-  // and the option; a limit at them builds the same axis as the default.
-  TriangleMesh3 torus = torus_mesh(2, 0.3, 24, 6);
+  // A torus with a tube of triangular section far thinner than its edges: the first rounds
+  // (216 and 792 samples) leave the axis in pieces, the third has its Betti numbers. A limit
+  // at the first round's samples refuses with the rounds reached and the option; a limit at
+  // the returned round's samples builds the same axis as the default.
+  TriangleMesh3 torus = torus_mesh(2, 0.02, 24, 3);
   torus.source = "thin-torus";
   const MeshAxis a = mesh_medial_axis(torus);
   CHECK(a.axis_betti == BettiNumbers{1, 1, 0});
