@@ -5,9 +5,7 @@
 #include <cmath>
 #include <limits>
 #include <map>
-#include <sstream>
 
-#include "support/atomic_file.h"
 #include "number/exact_sum.h"
 
 namespace grassfire {
@@ -135,21 +133,6 @@ std::vector<SweepEvent> event_log(ExactBurning& eb) {
     return a.kind != b.kind ? a.kind < b.kind : a.id < b.id;
   });
   return log;
-}
-
-void write_refined_vtk(const RefinedBurn& r, const std::string& path) {
-  std::ostringstream o;
-  o.precision(17);
-  o << "# vtk DataFile Version 3.0\ngrassfire exact burning time (refined)\nASCII\nDATASET POLYDATA\nPOINTS "
-    << r.points.size() << " double\n";
-  for (const Vec3d& p : r.points) o << p[0] << ' ' << p[1] << ' ' << p[2] << '\n';
-  o << "POLYGONS " << r.triangles.size() << ' ' << 4 * r.triangles.size() << '\n';
-  for (const auto& t : r.triangles) o << "3 " << t[0] << ' ' << t[1] << ' ' << t[2] << '\n';
-  o << "POINT_DATA " << r.points.size() << "\nSCALARS BT double 1\nLOOKUP_TABLE default\n";
-  for (const CertifiedValue& v : r.bt) o << (std::isfinite(v.value) ? v.value : std::numeric_limits<double>::infinity()) << '\n';
-  o << "SCALARS BT_error double 1\nLOOKUP_TABLE default\n";
-  for (const CertifiedValue& v : r.bt) o << v.error << '\n';
-  write_file_atomically(path, o.str());
 }
 
 }  // namespace grassfire

@@ -5,7 +5,7 @@
 //  - vertex_values: BT and ET = BT - R per vertex, each as a midpoint with a certified
 //    error bound (+infinity where nothing burns);
 //  - refine: every triangle split into n^2 triangles (barycentric grid, n >= 1; shared edge
-//    points once), with BT at every grid point (certified enclosures), for PLY/VTK;
+//    points once), with BT at every grid point (certified enclosures), for io/'s writers;
 //  - iso_lines: for each time t, the segments where the piecewise-linear interpolation of
 //    the refined BT crosses t (marching triangles). The exact iso-line is a union of conic
 //    arcs (one per window); these polylines have their vertices on grid edges, located by
@@ -56,8 +56,5 @@ std::vector<std::vector<Vec3d>> front_at(const RefinedBurn& r, double t);
 
 std::vector<SweepEvent> event_log(ExactBurning& eb);
 const char* to_string(SweepEvent::Kind k);
-
-// Legacy VTK (POLYDATA) of the refined sampling with point scalars BT and BT_error.
-void write_refined_vtk(const RefinedBurn& r, const std::string& path);
 
 }  // namespace grassfire
