@@ -220,7 +220,7 @@ TEST_CASE("medial3d --repair: refusal names the file and the option, and the rep
   CHECK(burn.output.find("repaired by alpha_wrap") != std::string::npos);
 }
 
-TEST_CASE("medial3d --max-samples: over the limit, the refusal names the option; within it, the axis", "[mesh_axis][cli]") {
+TEST_CASE("medial3d --max-samples: a refusal over the limit names the option and the axis is built within it", "[mesh_axis][cli]") {
   using testing::run_cli;
   const std::string path = testing::temp_path("thin_torus.off");
   write_off(torus_mesh(2, 0.02, 24, 3), path);  // its axis needs a round of 5,040 samples
