@@ -365,7 +365,7 @@ TEST_CASE("pieces of one bisector through a collinear vertex: joined lengths, en
   require_equal_to_definition(g, r, edf_by_definition(g));
 }
 
-TEST_CASE("no uncertified decision on wavy circles that had 45 or more (issue 11)", "[symmetry]") {
+TEST_CASE("no uncertified decision on wavy circles that once had 45 or more", "[symmetry]") {
   // The wavy circle of bench_polygon_axis, r(t) = 1000 (1 + 0.1 sin(7t + phase)) at 2000
   // integer vertices: with phase 0 it is mirror-symmetric (thousands of ties proved by
   // class), with phase 0.3 generic (ties between unrelated sums of radicals and arcs).
