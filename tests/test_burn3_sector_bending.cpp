@@ -41,7 +41,7 @@ bool apex_bends(const MedialComplex& mc, EngineMutant mutant, std::uint64_t* und
 
 }  // namespace
 
-TEST_CASE("a closed fan 4e-8 short of 2 pi does not bend; the double-margin rule says it does", "[exact3][bending]") {
+TEST_CASE("a closed fan 4e-8 short of 2 pi does not bend (a double margin of 1e-6 would call it bending)", "[exact3][bending]") {
   const MedialComplex mc = testing::built(flat_pyramid(mpq_class(1, 10000)));
   std::uint64_t undecided = 0;
   CHECK_FALSE(apex_bends(mc, EngineMutant::none, &undecided));
