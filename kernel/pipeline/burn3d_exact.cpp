@@ -92,6 +92,7 @@ nlohmann::json certification_report(const CertificationCounts& c) {
           {"kept_undecided", c.kept_undecided},
           {"memo", c.memo},
           {"uncertified", c.uncertified},
+          {"negligible_ties", c.negligible_ties},
           {"max_bits", c.max_bits}};
 }
 
@@ -127,16 +128,15 @@ BurnOutcome burn_by_exact(const BurnRequest& request) {
   }
   for (std::size_t i = 0; i < request.queries.size(); ++i) {
     const CertifiedValue v = certified_value(eb.burn_time(request.queries[i]));
-    out.query_values.push_back({v.value, std::isfinite(v.value) ? v.error : std::numeric_limits<double>::infinity()});
+    out.query_values.push_back(
+        {v.value, std::isfinite(v.value) ? v.error + decision_error(eb) : std::numeric_limits<double>::infinity()});
     if (request.progress && (i & 1023) == 1023)
       request.progress("queries", static_cast<double>(i + 1) / static_cast<double>(request.queries.size()));
   }
-  // An uncertified decision (a wedge side taken as collinear, a junction order or crossing no
-  // stage settled) may move BT anywhere downstream: no finite bound is claimed then.
-  if (eb.certification().uncertified > 0) {
+  // An uncertified decision may move BT anywhere downstream (no finite bound then: every
+  // error is +infinity); negligible ties add their bound (burn_outputs.h: decision_error).
+  if (eb.certification().uncertified > 0)
     for (double& e : out.vertex_bt_error) e = std::numeric_limits<double>::infinity();
-    for (auto& q : out.query_values) q.bt_error = std::numeric_limits<double>::infinity();
-  }
   double max_error = 0.0;
   for (double e : out.vertex_bt_error)
     if (std::isfinite(e)) max_error = std::max(max_error, e);

@@ -15,13 +15,22 @@ CertifiedValue certified_value(const Interval& i) {
   return {i.mid(), i.radius()};
 }
 
+double decision_error(ExactBurning& eb) {
+  const CertificationCounts& c = eb.certification();
+  if (c.uncertified > 0) return std::numeric_limits<double>::infinity();
+  return static_cast<double>(c.negligible_ties) * 0x1p-64 * (1.0 + 0x1p-50);
+}
+
 VertexBurnValues vertex_values(ExactBurning& eb) {
   const MedialComplex& mc = eb.complex();
+  const double extra = decision_error(eb);
   VertexBurnValues r;
   for (std::uint32_t v = 0; v < mc.vertex_count(); ++v) {
     const Interval bt = eb.vertex_burn_time(v);
     r.bt.push_back(certified_value(bt));
     r.et.push_back(bt.is_infinite() ? certified_value(bt) : certified_value(bt - sqrt(enclose(mc.vertex(v).radius_squared))));
+    for (CertifiedValue* x : {&r.bt.back(), &r.et.back()})
+      if (std::isfinite(x->value)) x->error += extra;
   }
   return r;
 }

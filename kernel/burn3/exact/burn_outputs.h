@@ -3,7 +3,7 @@
 //
 // Computes, from an ExactBurning after run():
 //  - vertex_values: BT and ET = BT - R per vertex, each as a midpoint with a certified
-//    error bound (+infinity where nothing burns);
+//    error bound, decision_error included (value +infinity where nothing burns);
 //  - refine: every triangle split into n^2 triangles (barycentric grid, n >= 1; shared edge
 //    points once), with BT at every grid point (certified enclosures), for io/'s writers;
 //  - iso_lines: for each time t, the segments where the piecewise-linear interpolation of
@@ -32,6 +32,13 @@ struct CertifiedValue {
   double error = 0.0;  // |value - exact| <= error
 };
 CertifiedValue certified_value(const Interval& i);
+
+// What the run's decisions add to the error of every finite value beyond its enclosure:
+// +infinity when a decision is uncertified (no bound is claimed), else the count of
+// negligible ties (two fronts within 2^-64 on a stretch of an edge, no order proved) times
+// 2^-64, rounded up: each moves every later arrival by at most 2^-64, since order
+// statistics and min-plus propagation are 1-Lipschitz (edge_crossings.h).
+double decision_error(ExactBurning& eb);
 
 struct VertexBurnValues {
   std::vector<CertifiedValue> bt, et;

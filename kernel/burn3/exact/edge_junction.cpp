@@ -156,6 +156,7 @@ void WindowPropagation::pair_new_records(std::uint32_t edge) {
       const double mhi = std::min(1.0, hi + std::max(a.at_err[0], a.at_err[1]) + std::max(b.at_err[0], b.at_err[1]));
       const EdgeCrossings c = isolate_crossings(u_, s_, cert_, edge, a.window, b.window, mpq_class(mlo), mpq_class(mhi));
       stats_.crossing_boxes += c.boxes;
+      cert_.counts.negligible_ties += c.negligible;
       if (c.undecided) ++stats_.uncertified_crossings, ++cert_.counts.uncertified;
       if (c.roots.size() > 2) ++stats_.uncertified_crossings, ++cert_.counts.uncertified;  // ids hold two
       for (std::size_t k = 0; k < std::min<std::size_t>(2, c.roots.size()); ++k) {

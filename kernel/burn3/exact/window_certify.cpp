@@ -17,7 +17,7 @@ namespace grassfire {
 void CertificationCounts::merge(const CertificationCounts& o) {
   filter += o.filter, exact += o.exact, arb += o.arb, exact_equal += o.exact_equal;
   structural_equal += o.structural_equal, kept_undecided += o.kept_undecided, uncertified += o.uncertified;
-  memo += o.memo;
+  memo += o.memo, negligible_ties += o.negligible_ties;
   max_bits = std::max(max_bits, o.max_bits);
 }
 

@@ -167,6 +167,9 @@ struct CertificationCounts {
   std::uint64_t structural_equal = 0;  // proved zero by identical expressions
   std::uint64_t kept_undecided = 0; // pruning comparisons left undecided: nothing pruned
   std::uint64_t uncertified = 0;    // wedge decisions no stage certified: taken as collinear
+  std::uint64_t negligible_ties = 0;  // two fronts within 2^-64 on a stretch of an edge, no order
+                                      // proved: each moves BT by at most 2^-64 (edge_crossings.h),
+                                      // added to every bt_error (pipeline/burn3d_exact.cpp)
   std::uint64_t memo = 0;           // comparisons asked before (same fronts, point, cap): repeated
   long max_bits = 0;                // highest Arb precision used
   void merge(const CertificationCounts& o);
