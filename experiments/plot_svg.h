@@ -45,6 +45,13 @@ struct Plot {
 
 // Colours for series i = 0, 1, ...: 16 distinct, print-friendly colours, then hues spaced by
 // the golden angle (so a figure with many series, e.g. the 14 shared meshes, repeats none).
+// The median of a series' samples (NaN for none): what the studies plot per point.
+inline double median(std::vector<double> v) {
+  if (v.empty()) return std::nan("");
+  std::sort(v.begin(), v.end());
+  return v.size() % 2 ? v[v.size() / 2] : (v[v.size() / 2 - 1] + v[v.size() / 2]) / 2;
+}
+
 inline Rgb series_colour(std::size_t i) {
   static const Rgb k[] = {{0.80, 0.10, 0.10}, {0.10, 0.30, 0.80}, {0.10, 0.60, 0.20}, {0.85, 0.50, 0.05},
                           {0.55, 0.15, 0.65}, {0.10, 0.60, 0.65}, {0.45, 0.45, 0.45}, {0.70, 0.35, 0.20},

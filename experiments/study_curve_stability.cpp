@@ -96,12 +96,6 @@ Curves analyse(const TriangleMesh3& mesh, double h, std::size_t max_samples) {
   return c;
 }
 
-double median(std::vector<double> v) {
-  if (v.empty()) return std::nan("");
-  std::sort(v.begin(), v.end());
-  return v.size() % 2 ? v[v.size() / 2] : (v[v.size() / 2 - 1] + v[v.size() / 2]) / 2;
-}
-
 constexpr const char* kUsage =
     "usage: study_curve_stability MESH_DIR [OUT] [--quick] [--seeds K] [--max-samples N] [--shard I/N] [--progress|--quiet]\nhow far the medial curves move when a mesh's surface is perturbed, and whether their topology is kept (5.1.3 for the lower-dimensional forms).\n(CSV columns and details: the header of experiments/study_curve_stability.cpp)\n";
 
@@ -184,13 +178,13 @@ int run(int argc, char** argv) {
     const auto& [mesh, setting, a] = key;
     char line[256];
     std::snprintf(line, sizeof line, "%s,%s,%g,%zu,%.4g,%.4g,%.4g,%d/%d\n", mesh.c_str(), setting.c_str(), a, r.size(),
-                  median(r), *std::max_element(r.begin(), r.end()), median(axis_ratios[key]), kept[key].first,
+                  plot::median(r), *std::max_element(r.begin(), r.end()), plot::median(axis_ratios[key]), kept[key].first,
                   kept[key].second);
     summary << line;
     plot::Series& s = series[{mesh, setting}];
     s.name = mesh + " (" + setting + ")";
     s.x.push_back(a);
-    s.y.push_back(median(r));
+    s.y.push_back(plot::median(r));
     s.dash = setting == "raw" ? "5,3" : "";
   }
   plot::Plot p;

@@ -57,6 +57,7 @@
 #include "support/progress.h"
 #include "cli.h"
 #include "plot_svg.h"
+#include "run_options.h"
 #include "shard.h"
 
 using namespace grassfire;
@@ -144,12 +145,6 @@ Axes analyse(const TriangleMesh3& mesh, double h, double theta, std::size_t max_
   return axes;
 }
 
-double median(std::vector<double> v) {
-  if (v.empty()) return std::nan("");
-  std::sort(v.begin(), v.end());
-  return v.size() % 2 ? v[v.size() / 2] : (v[v.size() / 2 - 1] + v[v.size() / 2]) / 2;
-}
-
 std::vector<std::string> split_commas(const std::string& s) {
   std::vector<std::string> out;
   std::stringstream in(s);
@@ -165,32 +160,15 @@ constexpr const char* kUsage =
     "experiments/study_pruning_stability.cpp)\n";
 
 int run(int argc, char** argv) {
-  const experiments::Shard shard = experiments::take_shard(argc, argv);
-  take_verbosity_flags(argc, argv);
-  if (argc < 2) {
-    std::fputs(kUsage, stderr);
-    return 2;
-  }
-  const std::string dir = argv[1];
-  std::string out = "experiments/results";
-  std::vector<std::string> meshes = {"tripod", "cross", "pipe"};
-  int seeds = 3;
-  double theta = 90;
-  std::size_t max_samples = 200000;
-  for (int i = 2; i < argc; ++i) {
-    const std::string a = argv[i];
-    if (a == "--meshes" && i + 1 < argc)
-      meshes = split_commas(argv[++i]);
-    else if (a == "--seeds" && i + 1 < argc)
-      seeds = std::atoi(argv[++i]);
-    else if (a == "--angle" && i + 1 < argc)
-      theta = std::atof(argv[++i]);
-    else if (a == "--max-samples" && i + 1 < argc)
-      max_samples = std::stoul(argv[++i]);
-    else
-      out = a;
-  }
-  meshes = experiments::shard_of(meshes, shard);
+  const experiments::RunOptions cmd =
+      experiments::parse_run_options(argc, argv, {{}, {"--meshes", "--seeds", "--angle", "--max-samples"}, 1, 2});
+  const experiments::Shard shard = cmd.shard;
+  const std::string dir = cmd.positional[0], out = cmd.positional_or(1, "experiments/results");
+  const int seeds = static_cast<int>(cmd.count("--seeds", 3));
+  const double theta = cmd.number("--angle", 90);
+  const std::size_t max_samples = cmd.count("--max-samples", 200000);
+  const std::vector<std::string> meshes =
+      experiments::shard_of(split_commas(cmd.text("--meshes", "tripod,cross,pipe")), shard);
   std::filesystem::create_directories(out);
   const std::string tmp = out + "/.pruning_stability_axis_" + std::to_string(shard.index) + ".json";
   const std::vector<double> amplitudes = {0.0025, 0.01, 0.04};
@@ -259,12 +237,12 @@ int run(int argc, char** argv) {
     const auto& [mesh, setting, a] = key;
     char line[256];
     std::snprintf(line, sizeof line, "%s,%s,%g,%zu,%.4g,%.4g,%d/%d\n", mesh.c_str(), setting.c_str(), a, r.size(),
-                  median(r), *std::max_element(r.begin(), r.end()), kept[key].first, kept[key].second);
+                  plot::median(r), *std::max_element(r.begin(), r.end()), kept[key].first, kept[key].second);
     summary << line;
     plot::Series& s = series[{mesh, setting}];
     s.name = mesh + " (" + setting + ")";
     s.x.push_back(a);
-    s.y.push_back(median(r));
+    s.y.push_back(plot::median(r));
     s.dash = setting == "raw" ? "6,3" : setting == "angle" ? "2,2" : setting == setting_name(kEtThresholds[0]) ? "" : "10,2,2,2";
   }
   plot::Plot p;

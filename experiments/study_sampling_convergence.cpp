@@ -108,13 +108,6 @@ std::string csv_text(std::string s) {
   return s;
 }
 
-double median(std::vector<double> v) {
-  if (v.empty()) return std::nan("");
-  std::sort(v.begin(), v.end());
-  const std::size_t m = v.size() / 2;
-  return v.size() % 2 ? v[m] : 0.5 * (v[m - 1] + v[m]);
-}
-
 double mean(const std::vector<double>& v) {
   double s = 0;
   for (double x : v) s += x;
@@ -163,7 +156,7 @@ void write_summary(const std::vector<Row>& rows, const std::string& path) {
       const double mx = values[m].empty() ? std::nan("") : *std::max_element(values[m].begin(), values[m].end());
       char buf[256];
       std::snprintf(buf, sizeof buf, "%zu,%s,%zu,%.4g,%.4g,%.4g,%.3f\n", n, kMetrics[m].name, values[m].size(), mu,
-                    median(values[m]), mx, slope);
+                    plot::median(values[m]), mx, slope);
       os << buf;
       prev_mean[m] = mu;
     }
