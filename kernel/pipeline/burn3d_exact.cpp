@@ -121,7 +121,10 @@ BurnOutcome burn_by_exact(const BurnRequest& request) {
   eb.run();
   const double propagation_seconds = eb.propagation().stats().seconds;
   BurnOutcome out;
+  // Every error includes the run's decision error (burn_outputs.h: decision_error): +infinity
+  // after an uncertified decision, which may move BT anywhere downstream.
   const VertexBurnValues values = vertex_values(eb);
+  const double decisions = decision_error(eb);
   for (const CertifiedValue& v : values.bt) {
     out.vertex_bt.push_back(v.value);
     out.vertex_bt_error.push_back(std::isfinite(v.value) ? v.error : std::numeric_limits<double>::infinity());
@@ -129,17 +132,13 @@ BurnOutcome burn_by_exact(const BurnRequest& request) {
   for (std::size_t i = 0; i < request.queries.size(); ++i) {
     const CertifiedValue v = certified_value(eb.burn_time(request.queries[i]));
     out.query_values.push_back(
-        {v.value, std::isfinite(v.value) ? v.error + decision_error(eb) : std::numeric_limits<double>::infinity()});
+        {v.value, std::isfinite(v.value) ? v.error + decisions : std::numeric_limits<double>::infinity()});
     if (request.progress && (i & 1023) == 1023)
       request.progress("queries", static_cast<double>(i + 1) / static_cast<double>(request.queries.size()));
   }
-  // An uncertified decision may move BT anywhere downstream (no finite bound then: every
-  // error is +infinity); negligible ties add their bound (burn_outputs.h: decision_error).
-  if (eb.certification().uncertified > 0)
-    for (double& e : out.vertex_bt_error) e = std::numeric_limits<double>::infinity();
-  double max_error = 0.0;
-  for (double e : out.vertex_bt_error)
-    if (std::isfinite(e)) max_error = std::max(max_error, e);
+  double max_error = 0.0;  // over the vertices that burn (+infinity after an uncertified decision)
+  for (std::size_t v = 0; v < out.vertex_bt.size(); ++v)
+    if (std::isfinite(out.vertex_bt[v])) max_error = std::max(max_error, out.vertex_bt_error[v]);
   const JunctionPoints junction = junction_points(eb);
   const CertificationCounts& c = eb.certification();
   const QueryCounts& q = eb.query_counts();
@@ -150,7 +149,7 @@ BurnOutcome burn_by_exact(const BurnRequest& request) {
                 {"uncertified", c.uncertified},
                 {"query_candidates", q.candidates},
                 {"query_widened", q.widened},
-                {"max_vertex_bt_error", c.uncertified > 0 ? nlohmann::json("inf") : nlohmann::json(max_error)},
+                {"max_vertex_bt_error", std::isfinite(max_error) ? nlohmann::json(max_error) : nlohmann::json("inf")},
                 {"events", event_report(eb.propagation().stats(), junction)},
                 {"kinks", point_report(junction.kinks)},
                 {"merges", point_report(junction.merges)},
