@@ -7,8 +7,9 @@
 // point per edge) and h / 2. Each case runs in a forked child so that its peak resident
 // memory (VmHWM from /proc/self/status) is its own. CSV on stdout:
 // complex,triangles,complex_build_seconds,spacing,steiner_points,graph_points,pushes,seconds,
-// plain_dijkstra_seconds,ratio,peak_memory_kb (seconds: the baseline; complex_build: the
-// exact MedialComplex construction from the RawComplex).
+// plain_dijkstra_seconds,ratio,peak_memory_kb,load (seconds: the baseline; complex_build: the
+// exact MedialComplex construction from the RawComplex; load: the 1-minute load average when
+// the row was measured, machine_load.h).
 // Usage: bench_burn3d_discrete [--quick]
 #include <sys/wait.h>
 #include <unistd.h>
@@ -26,6 +27,7 @@
 #include "burn3/discrete/steiner_graph.h"
 #include "complex3/synthetic_complexes.h"
 #include "cli.h"
+#include "machine_load.h"
 
 using namespace grassfire;
 
@@ -84,11 +86,11 @@ void run_case(const Case& c, double h) {
     const DiscreteBurning d = burn_discrete(mc, {h, 500'000'000});
     const double plain = plain_dijkstra_seconds(mc, h);
     char buf[512];
-    const int n = std::snprintf(buf, sizeof buf, "%s,%zu,%.4f,%.6g,%llu,%llu,%llu,%.4f,%.4f,%.2f,%ld\n",
+    const int n = std::snprintf(buf, sizeof buf, "%s,%zu,%.4f,%.6g,%llu,%llu,%llu,%.4f,%.4f,%.2f,%ld,%.2f\n",
                                 c.name.c_str(), mc.triangle_count(), build, h, static_cast<unsigned long long>(d.stats.steiner_points),
                                 static_cast<unsigned long long>(d.stats.steiner_points + mc.vertex_count()),
                                 static_cast<unsigned long long>(d.stats.pushes), d.stats.seconds, plain,
-                                d.stats.seconds / plain, peak_memory_kb());
+                                d.stats.seconds / plain, peak_memory_kb(), bench::machine_load());
     if (write(fd[1], buf, static_cast<std::size_t>(n)) != n) _exit(1);
     _exit(0);
   }
@@ -120,7 +122,7 @@ int run(int argc, char** argv) {
   for (int n : quick ? std::vector<int>{6, 20} : std::vector<int>{6, 20, 60})
     cases.push_back({"box 7:4:3 n=" + std::to_string(n), [n] { return box_medial_axis(7, 4, 3, n); }, 4.0 / n});
   std::printf("complex,triangles,complex_build_seconds,spacing,steiner_points,graph_points,pushes,seconds,plain_dijkstra_seconds,ratio,"
-              "peak_memory_kb\n");
+              "peak_memory_kb,load\n");
   for (const Case& c : cases)
     for (double h : {c.edge, c.edge / 2}) run_case(c, h);
   return 0;

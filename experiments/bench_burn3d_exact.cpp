@@ -20,7 +20,7 @@
 //  - ratio = exact_s / smsp_s (target of docs/benchmarks.md: <= 0.5 at 10^5 faces).
 // CSV on stdout:
 // mesh,faces,smsp_s,exact_s,ratio,peak_mem_mb,uncertified,complex_s,smsp_peak_mb,windows,max_diff,
-// unfolding_s,propagation_s (exact_s split: the engine's frames and crossings of the
+// unfolding_s,propagation_s,load (load: machine_load.h, when the row was measured; exact_s split: the engine's frames and crossings of the
 // complex, then the event loop; the rest is adding the sources)
 // Usage: bench_burn3d_exact [--max-faces N] [--mesh NAME]   (meshes above N faces are
 // skipped, default 200000; --mesh: only that file of data/meshes)
@@ -40,7 +40,7 @@
 // Times are processor seconds in forked children, the complex built outside both.
 // CSV: axis,triangles,singular_edges,exact_s,uncertified,uncertified_breaks,kinks,merges,
 // quenches,unclassified,tangents (junction_points.h),max_bt,h_1pct,discrete_s,discrete_err,ratio (= exact_s /
-// discrete_s at h_1pct; at the finest h tried when not reached)
+// discrete_s at h_1pct; at the finest h tried when not reached),load (machine_load.h)
 // Usage: bench_burn3d_exact --axes [--quick] [--axis NAME]   (--quick: the two smallest
 // axes; --axis: only the axes whose name contains NAME)
 #include <cmath>
@@ -65,6 +65,7 @@
 #include "io/mesh_io.h"
 #include "cli.h"
 #include "peak_memory.h"
+#include "machine_load.h"
 
 using namespace grassfire;
 
@@ -174,7 +175,7 @@ double max_error(const std::vector<double>& exact, const std::vector<double>& di
 
 int bench_axes(bool quick, const std::string& only) {
   std::printf("axis,triangles,singular_edges,exact_s,uncertified,uncertified_breaks,kinks,merges,quenches,unclassified,"
-              "tangents,max_bt,h_1pct,discrete_s,discrete_err,ratio\n");
+              "tangents,max_bt,h_1pct,discrete_s,discrete_err,ratio,load\n");
   struct Axis {
     std::string name;
     RawComplex raw;
@@ -200,8 +201,8 @@ int bench_axes(bool quick, const std::string& only) {
       exact = bench::in_child([&] { return run_exact_axis(mc); }, a.cpu_limit_s);
     } catch (const std::runtime_error&) {  // killed at the limit
       const std::vector<double> d = bench::in_child([&] { return run_discrete_axis(mc, default_burn_spacing(mc)); });
-      std::printf("%s,%zu,%zu,DNF (>%ld s),,,,,,,,,,%.3f,,\n", a.name.c_str(), mc.triangle_count(),
-                  mc.count(EdgeStratum::Singular), a.cpu_limit_s, d[0]);
+      std::printf("%s,%zu,%zu,DNF (>%ld s),,,,,,,,,,%.3f,,,%.2f\n", a.name.c_str(), mc.triangle_count(),
+                  mc.count(EdgeStratum::Singular), a.cpu_limit_s, d[0], bench::machine_load());
       std::fflush(stdout);
       continue;
     }
@@ -220,11 +221,11 @@ int bench_axes(bool quick, const std::string& only) {
       if (reached || !std::isfinite(err) || err > 0.9 * previous || discrete_s > 60) break;
     }
     if (exact[1] != 0) ++failures;
-    std::printf("%s,%zu,%zu,%.3f,%.0f,%.0f,%.0f,%.0f,%.0f,%.0f,%.0f,%.4g,%s,%.3f,%.3g,%.3f\n", a.name.c_str(), mc.triangle_count(),
+    std::printf("%s,%zu,%zu,%.3f,%.0f,%.0f,%.0f,%.0f,%.0f,%.0f,%.0f,%.4g,%s,%.3f,%.3g,%.3f,%.2f\n", a.name.c_str(), mc.triangle_count(),
                 mc.count(EdgeStratum::Singular), exact[0], exact[1], exact[2], exact[3], exact[4], exact[5], exact[6], exact[7],
                 max_bt,
                 reached ? std::to_string(h).c_str() : ("not reached (" + std::to_string(h) + ")").c_str(), discrete_s, err,
-                exact[0] / discrete_s);
+                exact[0] / discrete_s, bench::machine_load());
     std::fflush(stdout);
   }
   return failures == 0 ? 0 : 1;
@@ -251,7 +252,7 @@ int run(int argc, char** argv) {
     if (!std::strcmp(argv[i], "--mesh")) only = argv[i + 1];
   }
   std::printf("mesh,faces,smsp_s,exact_s,ratio,peak_mem_mb,uncertified,complex_s,smsp_peak_mb,windows,max_diff,"
-              "unfolding_s,propagation_s\n");
+              "unfolding_s,propagation_s,load\n");
   int failures = 0;
   for (const char* name : {"cube.off", "octahedron.off", "tripod.off"}) {
     if (!only.empty() && only != name) continue;
@@ -267,9 +268,9 @@ int run(int argc, char** argv) {
         diff = std::max(diff, std::max(lo - t, t - hi));
       }
       if (!(diff < 1e-9) || exact[2] != 0) ++failures;
-      std::printf("%s,%zu,%.3f,%.3f,%.3f,%.1f,%.0f,%.3f,%.1f,%.0f,%.3g,%.3f,%.3f\n", name, m.triangles.size(), smsp[0],
+      std::printf("%s,%zu,%.3f,%.3f,%.3f,%.1f,%.0f,%.3f,%.1f,%.0f,%.3g,%.3f,%.3f,%.2f\n", name, m.triangles.size(), smsp[0],
                   exact[1], exact[1] / smsp[0], exact.back(), exact[2], exact[0], smsp.back(), exact[3], diff, exact[4],
-                  exact[5]);
+                  exact[5], bench::machine_load());
       std::fflush(stdout);
     }
   }

@@ -20,7 +20,8 @@
 //    check that both return the same point (scan_mismatches).
 // Skipped beyond --baseline-faces (default 50,000): the reference columns (NAN).
 // CSV on stdout: mesh,faces,build_s,validate_s,locate_s,queries,peak_mem_mb,ref_decisions_s,
-//                mismatches,fast_ms_per_query,scan_ms_per_query,scan_mismatches
+//                mismatches,fast_ms_per_query,scan_ms_per_query,scan_mismatches,load
+//                (load: the 1-minute load average when the row was measured, machine_load.h)
 // Usage: bench_complex_build [--quick] [--faces N] [--baseline-faces N] [--queries Q]
 //                            [--scan-queries S]
 //   --quick: about 10^3 faces only (the CTest run); --faces N: only the target N.
@@ -41,6 +42,7 @@
 #include "io/mesh_io.h"
 #include "peak_memory.h"
 #include "cli.h"
+#include "machine_load.h"
 
 using namespace grassfire;
 
@@ -122,7 +124,7 @@ int run(int argc, char** argv) {
     return 2;
   }
   std::printf("mesh,faces,build_s,validate_s,locate_s,queries,peak_mem_mb,ref_decisions_s,mismatches,"
-              "fast_ms_per_query,scan_ms_per_query,scan_mismatches\n");
+              "fast_ms_per_query,scan_ms_per_query,scan_mismatches,load\n");
   std::vector<std::size_t> targets = {1000, 10000, 50000, 100000, 200000};
   if (quick) targets = {1000}, query_count = std::min<std::size_t>(query_count, 1000);
   if (only) targets = {only};
@@ -133,8 +135,8 @@ int run(int argc, char** argv) {
       const std::vector<ExactPoint3> queries = queries_near(m, query_count);
       const bool reference = m.triangles.size() <= baseline_faces;
       const std::vector<double> r = bench::in_child([&] { return run(raw, queries, reference, scan_queries); });
-      std::printf("%s,%zu,%.4f,%.4f,%.4f,%zu,%.1f,%.4f,%.0f,%.4f,%.4f,%.0f\n", name, m.triangles.size(), r[0], r[1], r[2],
-                  queries.size(), r[8], r[3], r[4], r[5], r[6], r[7]);
+      std::printf("%s,%zu,%.4f,%.4f,%.4f,%zu,%.1f,%.4f,%.0f,%.4f,%.4f,%.0f,%.2f\n", name, m.triangles.size(), r[0], r[1], r[2],
+                  queries.size(), r[8], r[3], r[4], r[5], r[6], r[7], bench::machine_load());
       std::fflush(stdout);
       if (r[4] > 0 || r[7] > 0) {
         std::fprintf(stderr, "bench_complex_build: %s: the build or the locator disagrees with its reference\n", name);

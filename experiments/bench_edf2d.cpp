@@ -11,8 +11,9 @@
 // ratio is the one to read). Prints CSV:
 //   samples,delaunay_s,pipeline_s,ratio,delaunay_cpu_s,pipeline_cpu_s,cpu_ratio,peak_mib,
 //   nodes,edges,filter,multiprecision,exact_ties,uncertified,
-//   dt_cpu_s,locate_cpu_s,edges_cpu_s,graph_cpu_s,burn_cpu_s,measures_cpu_s
-// The last six columns are the pipeline's stage profile (thread CPU seconds of the best
+//   dt_cpu_s,locate_cpu_s,edges_cpu_s,graph_cpu_s,burn_cpu_s,measures_cpu_s,load
+// load: the 1-minute load average when the row was measured (machine_load.h).
+// The six columns before it are the pipeline's stage profile (thread CPU seconds of the best
 // repetition): its own triangulation, circumcircles and inside tests, cocircular merging
 // and Voronoi edges, the medial graph, the extended grassfire, ET and ST.
 #include <chrono>
@@ -29,6 +30,7 @@
 #include "io/load_shape.h"
 #include "shapes/resample.h"
 #include "cli.h"
+#include "machine_load.h"
 
 using namespace grassfire;
 
@@ -95,14 +97,14 @@ int run(int argc, char** argv) {
   const Shape2 shape = load_shape(shape_arg);
   std::printf("# shape %s\nsamples,delaunay_s,pipeline_s,ratio,delaunay_cpu_s,pipeline_cpu_s,cpu_ratio,peak_mib,nodes,"
               "edges,filter,multiprecision,exact_ties,uncertified,dt_cpu_s,locate_cpu_s,edges_cpu_s,graph_cpu_s,"
-              "burn_cpu_s,measures_cpu_s\n",
+              "burn_cpu_s,measures_cpu_s,load\n",
               shape.name.c_str());
   for (std::size_t n : sizes) {
     const std::vector<double> v = bench::in_child([&] { return measure(shape, n, repeat); });
     // v: wall dt, wall pipeline, cpu dt, cpu pipeline, 7 counts, 6 stages, peak.
-    std::printf("%zu,%.4f,%.4f,%.3f,%.4f,%.4f,%.3f,%.1f,%.0f,%.0f,%.0f,%.0f,%.0f,%.0f,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f\n", n,
+    std::printf("%zu,%.4f,%.4f,%.3f,%.4f,%.4f,%.3f,%.1f,%.0f,%.0f,%.0f,%.0f,%.0f,%.0f,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f,%.2f\n", n,
                 v[0], v[1], v[1] / v[0], v[2], v[3], v[3] / v[2], v.back(), v[4], v[5], v[6], v[7], v[8], v[9], v[11],
-                v[12], v[13], v[14], v[15], v[16]);
+                v[12], v[13], v[14], v[15], v[16], bench::machine_load());
     std::fflush(stdout);
   }
   return 0;

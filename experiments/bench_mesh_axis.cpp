@@ -12,7 +12,8 @@
 // next, not part of the axis) is timed too, once, in complex_s. CSV on stdout:
 //   mesh,vertices,samples,delaunay_s,axis_s,ratio,peak_mem_mb,betti_solid,betti_axis,
 //   faces,refinements,axis_vertices,axis_triangles,axis_segments,
-//   samples_s,voronoi_delaunay_s,classify_s,extract_s,prune_s,betti_s,assemble_s,complex_s
+//   samples_s,voronoi_delaunay_s,classify_s,extract_s,prune_s,betti_s,assemble_s,complex_s,load
+// (load: the 1-minute load average when the row was measured, machine_load.h)
 // with Betti numbers written b0:b1:b2; the stage seconds are summed over the rounds (the
 // last round's alone are on the comment lines), ratio = axis_s / delaunay_s, complex_s is
 // -1 without --complex; comment lines give the mesh checks' seconds and, per round, the
@@ -30,6 +31,7 @@
 #include "io/mesh_io.h"
 #include "peak_memory.h"
 #include "cli.h"
+#include "machine_load.h"
 
 using namespace grassfire;
 
@@ -114,7 +116,7 @@ int run(int argc, char** argv) {
   }
   std::printf("mesh,vertices,samples,delaunay_s,axis_s,ratio,peak_mem_mb,betti_solid,betti_axis,faces,refinements,"
               "axis_vertices,axis_triangles,axis_segments,samples_s,voronoi_delaunay_s,classify_s,extract_s,prune_s,betti_s,"
-              "assemble_s,complex_s\n");
+              "assemble_s,complex_s,load\n");
   for (const std::string& path : meshes) {
     std::vector<double> v;
     try {
@@ -128,7 +130,7 @@ int run(int argc, char** argv) {
     std::printf("%s,%.0f,%.0f,%.4f,%.4f,%.2f,%.1f,%.0f:%.0f:%.0f,%.0f:%.0f:%.0f,%.0f,%.0f,%.0f,%.0f,%.0f", name.c_str(), v[0], v[1],
                 v[2], v[3], v[4], v[5], v[6], v[7], v[8], v[9], v[10], v[11], v[12], v[13], v[14], v[15], v[16]);
     for (std::size_t i = 17; i < kChecks; ++i) std::printf(",%.4f", v[i]);
-    std::printf("\n");
+    std::printf(",%.2f\n", bench::machine_load());
     const auto rounds = static_cast<std::size_t>(v[kRounds]);
     std::printf("# %s: mesh checks (manifold, solid topology, locator) %.3f s\n", name.c_str(), v[kChecks]);
     for (std::size_t r = 0; r < rounds; ++r) {

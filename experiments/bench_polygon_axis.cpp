@@ -19,7 +19,8 @@
 // (extended_grassfire.h).
 // Output (stdout): CSV segments,shape,boost_s,cgal_sdg_s,axis_s,axis_plus_edf_s,
 // axis_ratio,ratio_to_boost,boost_cpu_s,axis_plus_edf_cpu_s,cpu_ratio,uncertified,
-// peak_mem_mb,ratio_to_decimal,construction; ratio_to_decimal (unrounded and offset rows)
+// peak_mem_mb,ratio_to_decimal,construction,load (the 1-minute load average when the row
+// was measured, machine_load.h); ratio_to_decimal (unrounded and offset rows)
 // = the row's axis_plus_edf_cpu_s / the shifted (decimal) row's of the same size;
 // construction = the one the input policy chose (polygon_axis.h); shape is "symmetric" or "shifted"; axis_ratio = axis_s / boost_s,
 // ratio_to_boost = axis_plus_edf_s / boost_s (wall clock), cpu_ratio the same in thread
@@ -57,6 +58,7 @@
 #include "medial2/polygon/polygon_axis_geometry.h"
 #include "medial2/polygon/polygon_axis_symmetry.h"
 #include "cli.h"
+#include "machine_load.h"
 
 using namespace grassfire;
 
@@ -178,7 +180,7 @@ int run(int argc, char** argv) {
     }
   }
   std::printf("segments,shape,boost_s,cgal_sdg_s,axis_s,axis_plus_edf_s,axis_ratio,ratio_to_boost,boost_cpu_s,"
-              "axis_plus_edf_cpu_s,cpu_ratio,uncertified,peak_mem_mb,ratio_to_decimal,construction\n");
+              "axis_plus_edf_cpu_s,cpu_ratio,uncertified,peak_mem_mb,ratio_to_decimal,construction,load\n");
   for (int n : sizes) {
     double decimal_cpu = 0;
     for (const auto& [shape, phase] :
@@ -221,10 +223,10 @@ int run(int argc, char** argv) {
       const std::string cgal = n <= max_cgal ? std::to_string(row.cgal_s) : "";
       if (std::string(shape) == "shifted") decimal_cpu = row.both_cpu;
       const std::string to_decimal = unrounded || offset ? std::to_string(row.both_cpu / decimal_cpu) : "";
-      std::printf("%d,%s,%.4f,%s,%.4f,%.4f,%.3f,%.3f,%.4f,%.4f,%.3f,%llu,%.1f,%s,%s\n", n, shape, row.boost_s, cgal.c_str(),
+      std::printf("%d,%s,%.4f,%s,%.4f,%.4f,%.3f,%.3f,%.4f,%.4f,%.3f,%llu,%.1f,%s,%s,%.2f\n", n, shape, row.boost_s, cgal.c_str(),
                   row.axis_s, row.both_s, row.axis_s / row.boost_s, row.both_s / row.boost_s, row.boost_cpu, row.both_cpu,
                   row.both_cpu / row.boost_cpu, (unsigned long long)uncertified, peak_mb(), to_decimal.c_str(),
-                  to_string(rep.construction));
+                  to_string(rep.construction), bench::machine_load());
       std::fflush(stdout);
       report_details(n, shape, rep, row, *g, *r);
     }

@@ -15,7 +15,8 @@
 // exact_total_s / boost_s, sampled_ratio = sampled_total_s / dt2_s. Each stage is timed
 // with steady_clock; a failure in either is recorded with its message and the next shape
 // goes on.
-// Output: OUT/shapes_throughput.csv (one row per shape), OUT/shapes_throughput_summary.csv
+// Output: OUT/shapes_throughput.csv (one row per shape, with the 1-minute load average when
+// it was measured, machine_load.h), OUT/shapes_throughput_summary.csv
 // (shapes, failures per pipeline, total, median and max seconds per pipeline and of the
 // two ratios, with the first failure messages), the summary also on stderr.
 // --shard I/N runs every N-th shape and writes its rows only (experiments/shard.h).
@@ -49,6 +50,7 @@
 #include "shard.h"
 #include "cli.h"
 #include "run_options.h"
+#include "machine_load.h"
 
 using namespace grassfire;
 
@@ -67,6 +69,7 @@ struct Row {
   std::uint32_t pr_maxima = 0;
   std::size_t pruned_edges = 0;
   std::string exact_error, sampled_error, load_error;
+  double machine_load = 0;  // when the row was measured (machine_load.h)
 };
 
 // Boost.Polygon alone on the segments of every ring in the exact axis's integer frame.
@@ -216,6 +219,7 @@ int run(int argc, char** argv) {
     } catch (const std::exception& ex) {
       r.load_error = ex.what();
     }
+    r.machine_load = bench::machine_load();
     rows.push_back(r);
   }
   progress.done();
@@ -223,11 +227,11 @@ int run(int argc, char** argv) {
   for (const Row& r : rows) {
     char buf[640];
     std::snprintf(buf, sizeof buf,
-                  "%s,%zu,%zu,%.5f,%.5f,%.5f,%.5f,%.5f,%.5f,%u,%zu,%zu,%.5f,%.5f,%.5f,%.5f,%.5f,%.6f,%.6f,%.3f,%.3f,",
+                  "%s,%zu,%zu,%.5f,%.5f,%.5f,%.5f,%.5f,%.5f,%u,%zu,%zu,%.5f,%.5f,%.5f,%.5f,%.5f,%.6f,%.6f,%.3f,%.3f,%.2f,",
                   csv(r.file).c_str(), r.vertices, r.exact_nodes, r.exact_axis, r.exact_burn, r.exact_measures,
                   r.burn2_measures, r.signatures, r.exact_total, r.pr_maxima, r.pruned_edges, r.sampled_nodes,
                   r.sampled_delaunay, r.sampled_axis, r.sampled_burn, r.sampled_be, r.sampled_total, r.boost, r.dt2,
-                  r.exact_ratio, r.sampled_ratio);
+                  r.exact_ratio, r.sampled_ratio, r.machine_load);
     std::string err = r.load_error;
     if (!r.exact_error.empty()) err += "exact: " + r.exact_error + " ";
     if (!r.sampled_error.empty()) err += "sampled: " + r.sampled_error;
@@ -237,7 +241,7 @@ int run(int argc, char** argv) {
                                 "file,vertices,exact_nodes,exact_axis_s,exact_burn_s,exact_measures_s,burn2_measures_s,"
                                 "signatures_s,exact_total_s,pr_local_maxima,pruned_edges,sampled_nodes,"
                                 "sampled_delaunay_s,sampled_axis_s,sampled_burn_s,sampled_be_s,sampled_total_s,boost_s,dt2_s,"
-                                "exact_ratio,sampled_ratio,error",
+                                "exact_ratio,sampled_ratio,load,error",
                                 lines);
   if (experiments::rows_only(shard, out + "/shapes_throughput.csv")) return 0;
   std::ofstream sum(out + "/shapes_throughput_summary.csv");

@@ -12,7 +12,8 @@
 // from the mesh, without the embedding check, then burn_discrete, whose own seconds are
 // the column burn_s). Then per vertex: gap = BT_discrete - T_cgal (the baseline is
 // an upper bound, so gap >= 0 up to CGAL's rounding). CSV on stdout:
-// mesh,faces,smsp_s,smsp_peak_mb,spacing,discrete_s,burn_s,discrete_peak_mb,gap_min,gap_mean,gap_max
+// mesh,faces,smsp_s,smsp_peak_mb,spacing,discrete_s,burn_s,discrete_peak_mb,gap_min,gap_mean,gap_max,
+// load (the 1-minute load average when the row was measured, machine_load.h)
 // Usage: bench_smsp_baseline [--quick]   (--quick: 10^3 and 10^4 only)
 #include <ctime>
 #include <cmath>
@@ -28,6 +29,7 @@
 #include "io/mesh_io.h"
 #include "peak_memory.h"
 #include "cli.h"
+#include "machine_load.h"
 
 using namespace grassfire;
 
@@ -98,7 +100,7 @@ constexpr const char* kUsage =
 
 int run(int argc, char** argv) {
   const bool quick = argc > 1 && !std::strcmp(argv[1], "--quick");
-  std::printf("mesh,faces,smsp_s,smsp_peak_mb,spacing,discrete_s,burn_s,discrete_peak_mb,gap_min,gap_mean,gap_max\n");
+  std::printf("mesh,faces,smsp_s,smsp_peak_mb,spacing,discrete_s,burn_s,discrete_peak_mb,gap_min,gap_mean,gap_max,load\n");
   for (const char* name : {"cube.off", "tripod.off"})
     for (std::size_t target : {std::size_t{1000}, std::size_t{10000}, std::size_t{100000}}) {
       if (quick && target > 10000) continue;
@@ -111,8 +113,8 @@ int run(int argc, char** argv) {
         const double gap = discrete[2 + v] - smsp[1 + v];
         lo = std::min(lo, gap), hi = std::max(hi, gap), sum += gap;
       }
-      std::printf("%s,%zu,%.3f,%.1f,%.5g,%.3f,%.3f,%.1f,%.3g,%.3g,%.3g\n", name, m.triangles.size(), smsp[0], smsp.back(),
-                  h, discrete[0], discrete[1], discrete.back(), lo, sum / m.vertices.size(), hi);
+      std::printf("%s,%zu,%.3f,%.1f,%.5g,%.3f,%.3f,%.1f,%.3g,%.3g,%.3g,%.2f\n", name, m.triangles.size(), smsp[0], smsp.back(),
+                  h, discrete[0], discrete[1], discrete.back(), lo, sum / m.vertices.size(), hi, bench::machine_load());
       std::fflush(stdout);
     }
   return 0;

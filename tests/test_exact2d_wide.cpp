@@ -16,6 +16,7 @@
 #include "medial2/polygon/polygon_axis.h"
 #include "medial2/polygon/segment_voronoi.h"
 #include "shapes/validate_shape.h"
+#include "binary_frame.h"
 #include "support.h"
 
 using namespace grassfire;
@@ -53,16 +54,6 @@ Shape2 wavy(int n, double cx, double cy, double r, double phase) {
   return ring_shape(ring, "wavy " + std::to_string(n));
 }
 
-// The shape's sites scaled by 2^K, K = minus the smallest lowest-set-bit exponent (exact).
-PolygonSites binary_frame(const Shape2& s) {
-  int low = 1 << 20;
-  for (const Ring& r : s.rings)
-    for (const Point2& p : r.points)
-      for (double x : {p.x, p.y})
-        if (x != 0) low = std::min(low, lowest_bit_exponent(x));
-  return make_sites(s, std::ldexp(1.0, -low));
-}
-
 // A Voronoi diagram as sets of site triples (rotated to start at the smallest site, the
 // counter-clockwise order kept; apexes marked) and of edges (the two sites and the two
 // end vertices' triples, unordered): equal sets = the same topology.
@@ -88,7 +79,7 @@ Canonical canonical(const VoronoiTopology& t) {
 }
 
 void require_same_topology(const Shape2& s) {
-  const PolygonSites sites = binary_frame(s);
+  const PolygonSites sites = testing::binary_frame(s);
   REQUIRE(fits_wide_boost(sites));
   const Canonical b = canonical(boost_segment_voronoi_wide(sites)), c = canonical(cgal_segment_voronoi(sites));
   INFO(s.name);

@@ -48,7 +48,8 @@ std::vector<std::string> without_timings(const std::vector<std::string>& table) 
       auto ends_with = [&](const std::string& tail) {
         return name.size() > tail.size() && name.compare(name.size() - tail.size(), tail.size(), tail) == 0;
       };
-      const bool timing = name == "seconds" || ends_with("_s") || ends_with("_ratio");
+      // The machine load (experiments/machine_load.h) varies between runs like the times.
+      const bool timing = name == "seconds" || name == "load" || ends_with("_s") || ends_with("_ratio");
       joined += (i ? "," : "") + (timing && &line != &table[0] ? std::string("t") : f[i]);
     }
     out.push_back(joined);

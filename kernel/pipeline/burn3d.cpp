@@ -137,7 +137,7 @@ Burn3dRun burn3d(const Burn3dSetup& setup) {
     }
   }
   BurnRequest request{mc, std::move(run.sources), std::move(run.queries), run.spacing, setup.max_points,
-                      [&](const std::string& stage, double done) { progress.fraction(stage, done); }, setup.input,
+                      [&](const std::string& stage, double done, const std::string& detail) { progress.fraction(stage, done, detail); }, setup.input,
                       setup.singular_walls};
   run.outcome = method(request);
   progress.done();

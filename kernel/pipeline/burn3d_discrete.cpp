@@ -17,7 +17,7 @@ BurnOutcome burn_by_discrete(const BurnRequest& request) {
   o.sources = request.sources;
   if (request.progress)
     o.progress = [&](std::uint64_t burned, std::uint64_t total) {
-      request.progress("burning", static_cast<double>(burned) / static_cast<double>(total));
+      request.progress("burning", static_cast<double>(burned) / static_cast<double>(total), "");
     };
   const DiscreteBurning d = burn_discrete(mc, o);
   BurnOutcome out;
@@ -27,7 +27,7 @@ BurnOutcome burn_by_discrete(const BurnRequest& request) {
     out.query_values.push_back({discrete_burning_time_at(mc, d, request.sources, request.queries[i]),
                                 std::numeric_limits<double>::infinity()});
     if (request.progress && (i & 1023) == 1023)
-      request.progress("queries", static_cast<double>(i + 1) / static_cast<double>(request.queries.size()));
+      request.progress("queries", static_cast<double>(i + 1) / static_cast<double>(request.queries.size()), "");
   }
   out.report = {{"spacing", d.spacing},
                 {"steiner_points", d.stats.steiner_points},

@@ -16,7 +16,9 @@
 // the junction rule (junction_points.h), each a point of a singular edge with BT there:
 // {"x","y","z","bt","error"}, |coordinate or bt - exact| <= error (exact parameters are
 // enclosed from their closed form), with the count of switch points left unclassified.
+#include <algorithm>
 #include <chrono>
+#include <cstdio>
 #include <cmath>
 #include <limits>
 #include <sstream>
@@ -25,8 +27,10 @@
 #include "burn3/exact/burn_outputs.h"
 #include "burn3/exact/exact_burning.h"
 #include "burn3/exact/junction_points.h"
+#include "burn3/exact/sources.h"
 #include "pipeline/burn3d_methods.h"
 #include "support/cpu_clock.h"
+#include "support/progress.h"
 
 namespace grassfire {
 
@@ -98,6 +102,29 @@ nlohmann::json certification_report(const CertificationCounts& c) {
 
 }  // namespace
 
+std::function<void(double, std::uint64_t, std::uint64_t)> exact_sweep_reporter(
+    const MedialComplex& mc, double largest_source_time, std::function<void(double, const std::string&)> report) {
+  if (!progress_enabled()) return {};  // no lines are drawn: no events counted
+  double ignition = largest_source_time, largest_r = 0;
+  Vec3d lo = mc.vertex(0).approx, hi = lo;
+  for (std::uint32_t v = 0; v < mc.vertex_count(); ++v) {
+    if (const std::optional<ExactSum> f = exact_vertex_ignition(mc, v)) ignition = std::max(ignition, f->to_double());
+    if (std::isfinite(mc.vertex(v).radius)) largest_r = std::max(largest_r, mc.vertex(v).radius);
+    for (int i = 0; i < 3; ++i) lo[i] = std::min(lo[i], mc.vertex(v).approx[i]), hi[i] = std::max(hi[i], mc.vertex(v).approx[i]);
+  }
+  // On a medial axis BT >= R, and the fire from the border reaches the thickest part last;
+  // otherwise a front from the last ignition crosses the complex (its bounding box diagonal).
+  const double estimate =
+      largest_r > ignition ? largest_r : ignition + std::hypot(hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]);
+  return [=](double t, std::uint64_t events, std::uint64_t windows) {
+    if ((events & 255) != 0) return;
+    char line[160];
+    std::snprintf(line, sizeof line, "t = %.4g (largest ignition %.4g, final ~%.4g), %llu events, %llu windows", t,
+                  ignition, estimate, static_cast<unsigned long long>(events), static_cast<unsigned long long>(windows));
+    report(estimate > 0 ? std::min(t / estimate, 0.99) : 0.0, line);
+  };
+}
+
 BurnOutcome burn_by_exact(const BurnRequest& request) {
   const MedialComplex& mc = request.mc;
   const std::optional<std::string> why = exact_engine_unsupported(mc);
@@ -108,6 +135,13 @@ BurnOutcome burn_by_exact(const BurnRequest& request) {
   const auto start = std::chrono::steady_clock::now();
   ExactBurningOptions options;
   options.singular_walls = request.singular_walls;
+  if (request.progress) {
+    double largest_source_time = 0;
+    for (const PointSource& s : request.sources) largest_source_time = std::max(largest_source_time, s.t0.get_d());
+    options.on_event = exact_sweep_reporter(mc, largest_source_time, [&](double done, const std::string& detail) {
+      request.progress("exact propagation", done, detail);
+    });
+  }
   ExactBurning eb(mc, options);
   for (std::size_t i = 0; i < request.sources.size(); ++i) {
     try {
@@ -117,7 +151,7 @@ BurnOutcome burn_by_exact(const BurnRequest& request) {
     }
   }
   eb.add_border_ignition();
-  if (request.progress) request.progress("exact propagation", 0.0);
+  if (request.progress) request.progress("exact propagation", 0.0, "");
   eb.run();
   const double propagation_seconds = eb.propagation().stats().seconds;
   BurnOutcome out;
@@ -134,7 +168,7 @@ BurnOutcome burn_by_exact(const BurnRequest& request) {
     out.query_values.push_back(
         {v.value, std::isfinite(v.value) ? v.error + decisions : std::numeric_limits<double>::infinity()});
     if (request.progress && (i & 1023) == 1023)
-      request.progress("queries", static_cast<double>(i + 1) / static_cast<double>(request.queries.size()));
+      request.progress("queries", static_cast<double>(i + 1) / static_cast<double>(request.queries.size()), "");
   }
   double max_error = 0.0;  // over the vertices that burn (+infinity after an uncertified decision)
   for (std::size_t v = 0; v < out.vertex_bt.size(); ++v)

@@ -16,13 +16,16 @@ namespace grassfire {
 namespace {
 
 // The exact engine from the border ignition (the same refusal as burn3d --method exact).
-void load_exact_field(FieldRun& in, const FieldSetup& setup) {
+void load_exact_field(FieldRun& in, const FieldSetup& setup, Progress& progress) {
   const std::optional<std::string> why = exact_engine_unsupported(*in.complex);
   if (why && !setup.singular_walls)
     throw std::runtime_error(setup.input + ": method 'exact' cannot burn this complex: it has " + *why +
                              "; use --method discrete");
   ExactBurningOptions options;
   options.singular_walls = setup.singular_walls;  // else Definition 9 (the junction rule)
+  options.on_event = exact_sweep_reporter(*in.complex, 0, [&](double done, const std::string& detail) {
+    progress.fraction("exact propagation", done, detail);
+  });
   in.exact = std::make_unique<ExactBurning>(*in.complex, options);
   in.exact->add_border_ignition();
   in.exact->run();
@@ -51,7 +54,7 @@ FieldRun load_burning_field(const FieldSetup& setup) {
   if (!(in.spacing > 0) || !std::isfinite(in.spacing)) throw std::invalid_argument("--spacing must be a positive number");
   if (setup.method == "exact") {
     progress.stage("exact propagation");
-    load_exact_field(in, setup);
+    load_exact_field(in, setup, progress);
     return in;
   }
   DiscreteBurningOptions o;

@@ -33,8 +33,9 @@ struct BurnRequest {
   std::vector<ComplexPoint> queries;
   double spacing = 0.0;            // discrete: Steiner spacing h
   std::uint64_t max_points = 0;    // discrete: graph point budget
-  // Reports progress: a stage name and the fraction done in [0, 1].
-  std::function<void(const std::string&, double)> progress;
+  // Reports progress: a stage name, the fraction done in [0, 1] and, for a long stage, its
+  // state in words ("" when none; support/progress.h shows it).
+  std::function<void(const std::string& stage, double done, const std::string& detail)> progress;
   std::string input;               // names the input in a method's messages
   // exact: burn a complex with singular edges or singular points anyway, with every
   // singular edge a wall (fire stops there; docs/exact-engine.md). That is not Definition 9's
@@ -61,6 +62,17 @@ struct BurnOutcome {
 BurnOutcome burn_by_discrete(const BurnRequest& request);
 // The exact window-propagation engine (docs/exact-engine.md); pipeline/burn3d_exact.cpp.
 BurnOutcome burn_by_exact(const BurnRequest& request);
+
+// The exact engine's sweep as progress (ExactBurningOptions::on_event): every 256 events,
+// report(fraction, detail) with the current event time t against the largest ignition time
+// (`largest_source_time` and the border rules' f at the vertices) and an estimate of the
+// final time (the largest R when it is larger, as on a medial axis, where BT >= R; else the
+// largest ignition time plus the complex's bounding box diagonal), the events and the
+// windows so far; the fraction is t over the estimate, below 1 until the sweep ends. An
+// empty function when progress lines are off (support/progress.h): the engine then calls
+// nothing.
+std::function<void(double, std::uint64_t, std::uint64_t)> exact_sweep_reporter(
+    const MedialComplex& mc, double largest_source_time, std::function<void(double, const std::string&)> report);
 
 using BurnMethod = BurnOutcome (*)(const BurnRequest&);
 // The method called `name` ("discrete", "exact"); std::invalid_argument "unknown method

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <cstdlib>
 #include <stdexcept>
 
 namespace grassfire {
@@ -63,7 +64,9 @@ Progress::Progress(std::string task, std::uint64_t total)
       enabled_(progress_enabled()),
       terminal_(stderr_is_terminal()),
       start_(std::chrono::steady_clock::now()),
-      last_(start_) {}
+      last_(start_) {
+  if (const char* seconds = std::getenv("GRASSFIRE_PROGRESS_SECONDS")) interval_override_ = std::max(0.0, std::atof(seconds));
+}
 
 void Progress::done() {
   if (!enabled_ || !drawn_) return;
@@ -87,6 +90,7 @@ void Progress::item(const std::string& what) {
 }
 
 void Progress::stage(const std::string& what) {
+  detail_.clear();
   item_ = what;
   staged_ = true;  // stages differ in cost: a time estimate from their count would mislead
   if (!enabled_) return;
@@ -94,18 +98,21 @@ void Progress::stage(const std::string& what) {
   draw();
 }
 
-void Progress::fraction(const std::string& stage, double done) {
+void Progress::fraction(const std::string& stage, double done, const std::string& detail) {
   fraction_ = std::min(std::max(done, 0.0), 1.0);
   if (stage == item_) {
+    detail_ = detail;
     if (enabled_) maybe_draw();
     return;
   }
   this->stage(stage);
+  detail_ = detail;  // shown from the next line on
 }
 
 void Progress::maybe_draw() {
   const auto now = std::chrono::steady_clock::now();
-  if (seconds_between(last_, now) < (terminal_ ? 0.2 : 10.0)) return;
+  const double interval = interval_override_ >= 0 ? interval_override_ : !detail_.empty() ? 1.0 : terminal_ ? 0.2 : 10.0;
+  if (seconds_between(last_, now) < interval) return;
   last_ = now;
   draw();
 }
@@ -124,6 +131,7 @@ void Progress::draw() {
   if (total_ > 0 && done_ > 0 && done_ < total_ && !staged_)
     std::snprintf(eta, sizeof eta, ", about %.0f s left", elapsed * static_cast<double>(total_ - done_) / done_);
   std::string line = task_ + ": " + counts + ", " + std::to_string(static_cast<long long>(elapsed)) + " s" + eta;
+  if (!detail_.empty()) line += ", " + detail_;
   if (!item_.empty()) line += " -- " + item_;
   if (terminal_) {
     if (line.size() > 150) line = line.substr(0, 147) + "...";

@@ -9,7 +9,10 @@
 //   Auto     -- notes, and progress lines when stderr is a terminal (the default).
 // A Progress on a terminal redraws one line ("\r", at most 5 times a second) and clears it
 // when done; on a file or pipe (--progress) it writes a line every 10 seconds, so that a
-// cluster job's log shows where it is. Results never go to stderr, so --quiet changes no output file.
+// cluster job's log shows where it is; while a stage reports its state in words (fraction()
+// with a detail: the exact engine's sweep), at most once a second either way. The environment variable
+// GRASSFIRE_PROGRESS_SECONDS, when set, replaces both intervals (tests set it to 0 to see
+// every report without waiting). Results never go to stderr, so --quiet changes no output file.
 // Contract: not thread-safe (one Progress per thread at a time; the studies are sequential).
 // Complexity: advance() is O(1) and reads the clock once every 1024 calls.
 #pragma once
@@ -54,8 +57,9 @@ class Progress {
   void stage(const std::string& what);
   // For a run that knows the fraction done of its current stage (in [0, 1]) rather than a
   // step count (the burn3d methods, pipeline/burn3d_methods.h): shows "stage 45%"; a new
-  // stage draws at once, the same stage when due.
-  void fraction(const std::string& stage, double done);
+  // stage draws at once, the same stage when due. `detail` (e.g. "t = 1.2 of ~3.4, 5000
+  // events, 9000 windows") is shown before the stage, and makes a line due every second.
+  void fraction(const std::string& stage, double done, const std::string& detail = "");
   // Ends the report: clears the terminal line (call it before printing results) or logs
   // the total; later calls do nothing.
   void done();
@@ -64,7 +68,8 @@ class Progress {
   void maybe_draw();
   void draw();
 
-  std::string task_, item_;
+  std::string task_, item_, detail_;
+  double interval_override_ = -1;  // GRASSFIRE_PROGRESS_SECONDS, or -1
   std::uint64_t total_ = 0, done_ = 0, calls_ = 0;
   double fraction_ = -1;  // >= 0 once fraction() is used: shown instead of the step counts
   bool enabled_ = false, terminal_ = false, drawn_ = false, staged_ = false;  // staged: no time estimate

@@ -37,8 +37,13 @@ def python_stderr(call, verbosity):
 
 
 def stages(stderr):
-    """The (task word, stage) of every progress line: what was shown, without counts and times."""
-    return [m.groups() for m in map(STAGE.match, stderr.splitlines()) if m]
+    """The (task word, stage) of the progress lines: what was shown, without counts and times;
+    repeated lines of one stage count once (how many a long stage draws depends on its time)."""
+    out = []
+    for m in map(STAGE.match, stderr.splitlines()):
+        if m and (not out or out[-1] != m.groups()):
+            out.append(m.groups())
+    return out
 
 
 class ProgressLikeTheProgram(unittest.TestCase):

@@ -227,7 +227,7 @@ void WindowPropagation::add_border_ignition() {
 
 void WindowPropagation::run() {
   const auto start = std::chrono::steady_clock::now();
-  while (!queue_.empty()) {
+  for (std::uint64_t events = 1; !queue_.empty(); ++events) {
     const QueueEntry top = queue_.top();
     queue_.pop();
     switch (top.kind) {
@@ -237,6 +237,7 @@ void WindowPropagation::run() {
       case EventKind::VertexBurn: process_burn(top.id, top.key); break;
       case EventKind::Junction: process_junction(top.id, top.key); break;
     }
+    if (o_.on_event) o_.on_event(top.key, events, stats_.windows);
   }
   count_quenched();
   stats_.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

@@ -58,6 +58,9 @@ struct ExactBurningOptions {
   long max_bits = 512;                // Arb precision cap of the certified stages
   EngineMutant mutant = EngineMutant::none;  // checks only: a deliberate breakage (engine_mutant.h)
   std::uint64_t max_windows = 400'000'000;  // iteration bound (std::runtime_error beyond)
+  // Progress reports only: after every event of the sweep, its key (a lower bound of its
+  // time), the events so far and the windows created (support/progress.h via the pipeline).
+  std::function<void(double key, std::uint64_t events, std::uint64_t windows)> on_event{};
 };
 
 struct PropagationStats {

@@ -67,14 +67,19 @@ struct VoronoiTopology {
   std::vector<Edge> edges;
 };
 
+// How the Boost constructions read the builder's output: from its events (the default,
+// boost_voronoi_events.h), or from the full voronoi_diagram it would write (the reference
+// the tests compare the events with; boost_voronoi_extract.h).
+enum class BoostReader { Events, Diagram };
+
 // Boost.Polygon construct_voronoi; every frame coordinate must be an integer in int32.
-VoronoiTopology boost_segment_voronoi(const PolygonSites& sites);
+VoronoiTopology boost_segment_voronoi(const PolygonSites& sites, BoostReader reader = BoostReader::Events);
 // Boost.Polygon's voronoi builder with the wide coordinate traits (boost_wide_traits.h):
 // every frame coordinate an integer, each within 2^62 of the centre of the frame's bounding
 // box (fits_wide_boost); throws std::invalid_argument otherwise, std::overflow_error if an
 // exact intermediate exceeds 4096 bits (boost_wide_traits.h).
 bool fits_wide_boost(const PolygonSites& sites);
-VoronoiTopology boost_segment_voronoi_wide(const PolygonSites& sites);
+VoronoiTopology boost_segment_voronoi_wide(const PolygonSites& sites, BoostReader reader = BoostReader::Events);
 // Boost.Polygon's voronoi builder with the mp traits (boost_mp_traits.h): any finite double
 // frame, taken exactly as integers x 2^K (no limit on the coordinates' span); O(n log n).
 // `tier` reports the bits of those integers about the frame's centre and of the floats.
@@ -94,7 +99,7 @@ struct MpTier {
 // verify = true (tests; several times slower) checks every decision the filter stage takes
 // itself against the MPFR predicates' (MpTier::verified, verify_mismatches).
 VoronoiTopology boost_segment_voronoi_mp(const PolygonSites& sites, MpTier* tier = nullptr, bool filter = true,
-                                         bool verify = false);
+                                         bool verify = false, BoostReader reader = BoostReader::Events);
 // CGAL Segment_Delaunay_graph_2 (filtered exact traits, no intersecting segments).
 VoronoiTopology cgal_segment_voronoi(const PolygonSites& sites);
 

@@ -13,7 +13,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "medial2/polygon/boost_voronoi_extract.h"
+#include "medial2/polygon/boost_voronoi_events.h"
 #include "medial2/polygon/boost_wide_traits.h"
 #include "medial2/polygon/segment_voronoi.h"
 #include "number/interval.h"
@@ -61,7 +61,7 @@ std::optional<std::vector<std::int64_t>> wide_integers(const PolygonSites& sites
 
 }  // namespace
 
-VoronoiTopology boost_segment_voronoi(const PolygonSites& sites) {
+VoronoiTopology boost_segment_voronoi(const PolygonSites& sites, BoostReader reader) {
   std::vector<bp::segment_data<std::int32_t>> segments;
   segments.reserve(sites.vertex_count());
   for (std::uint32_t i = 0; i < sites.vertex_count(); ++i) {
@@ -69,24 +69,32 @@ VoronoiTopology boost_segment_voronoi(const PolygonSites& sites) {
     segments.emplace_back(bp::point_data<std::int32_t>(to_int32(a.x), to_int32(a.y)),
                           bp::point_data<std::int32_t>(to_int32(b.x), to_int32(b.y)));
   }
-  Diagram vd;
-  bp::construct_voronoi(segments.begin(), segments.end(), &vd);
-  return BoostExtractor<Diagram>(vd, sites).run();
+  return boost_interior_topology<Diagram>(
+      sites,
+      [&](auto* output) {
+        bp::voronoi_builder<std::int32_t> builder;
+        bp::insert(segments.begin(), segments.end(), &builder);
+        builder.construct(output);
+      },
+      reader == BoostReader::Diagram);
 }
 
 bool fits_wide_boost(const PolygonSites& sites) { return wide_integers(sites).has_value(); }
 
-VoronoiTopology boost_segment_voronoi_wide(const PolygonSites& sites) {
+VoronoiTopology boost_segment_voronoi_wide(const PolygonSites& sites, BoostReader reader) {
   const std::optional<std::vector<std::int64_t>> v = wide_integers(sites);
   if (!v) throw std::invalid_argument("boost_segment_voronoi_wide: a frame coordinate is not an integer within 2^62 of the frame's centre");
-  bp::voronoi_builder<std::int64_t, boost_wide::CtypeTraits> builder;
-  for (std::uint32_t i = 0; i < sites.vertex_count(); ++i) {
-    const std::uint32_t j = sites.next[i];
-    builder.insert_segment((*v)[2 * i], (*v)[2 * i + 1], (*v)[2 * j], (*v)[2 * j + 1]);
-  }
-  Diagram vd;
-  builder.construct(&vd);
-  return BoostExtractor<Diagram>(vd, sites).run();
+  return boost_interior_topology<Diagram>(
+      sites,
+      [&](auto* output) {
+        bp::voronoi_builder<std::int64_t, boost_wide::CtypeTraits> builder;
+        for (std::uint32_t i = 0; i < sites.vertex_count(); ++i) {
+          const std::uint32_t j = sites.next[i];
+          builder.insert_segment((*v)[2 * i], (*v)[2 * i + 1], (*v)[2 * j], (*v)[2 * j + 1]);
+        }
+        builder.construct(output);
+      },
+      reader == BoostReader::Diagram);
 }
 
 }  // namespace grassfire

@@ -16,7 +16,7 @@
 #include <string>
 
 #include "medial2/polygon/boost_mp_traits.h"
-#include "medial2/polygon/boost_voronoi_extract.h"
+#include "medial2/polygon/boost_voronoi_events.h"
 #include "medial2/polygon/segment_voronoi.h"
 
 namespace grassfire {
@@ -87,26 +87,30 @@ __int128 to_int(const mpz_class& z, __int128*) {
 boost_mp::Gmp to_int(const mpz_class& z, boost_mp::Gmp*) { return boost_mp::Gmp(z.get_mpz_t()); }
 
 template <class Traits, class Predicates = bp::detail::voronoi_predicates<Traits>>
-VoronoiTopology construct(const PolygonSites& sites, const std::vector<mpz_class>& v) {
+VoronoiTopology construct(const PolygonSites& sites, const std::vector<mpz_class>& v, BoostReader reader) {
   using Int = typename Traits::int_type;
   using F = typename Traits::fpt_type;
   std::vector<Int> c;
   c.reserve(v.size());
   for (const mpz_class& z : v) c.push_back(to_int(z, static_cast<Int*>(nullptr)));
-  bp::voronoi_builder<Int, Traits, Predicates> builder;
-  for (std::uint32_t i = 0; i < sites.vertex_count(); ++i) {
-    const std::uint32_t j = sites.next[i];
-    builder.insert_segment(c[2 * i], c[2 * i + 1], c[2 * j], c[2 * j + 1]);
-  }
   using Diagram = bp::voronoi_diagram<F, NoMergeTraits<F>>;
-  Diagram vd;
-  builder.construct(&vd);
-  return BoostExtractor<Diagram>(vd, sites).run();
+  return boost_interior_topology<Diagram>(
+      sites,
+      [&](auto* output) {
+        bp::voronoi_builder<Int, Traits, Predicates> builder;
+        for (std::uint32_t i = 0; i < sites.vertex_count(); ++i) {
+          const std::uint32_t j = sites.next[i];
+          builder.insert_segment(c[2 * i], c[2 * i + 1], c[2 * j], c[2 * j + 1]);
+        }
+        builder.construct(output);
+      },
+      reader == BoostReader::Diagram);
 }
 
 }  // namespace
 
-VoronoiTopology boost_segment_voronoi_mp(const PolygonSites& sites, MpTier* tier, bool filter, bool verify) {
+VoronoiTopology boost_segment_voronoi_mp(const PolygonSites& sites, MpTier* tier, bool filter, bool verify,
+                                         BoostReader reader) {
   const std::vector<mpz_class> v = exact_integers(sites);
   const int bits = bits_of(v);
   MpTier t;
@@ -114,7 +118,7 @@ VoronoiTopology boost_segment_voronoi_mp(const PolygonSites& sites, MpTier* tier
   VoronoiTopology out;
   if (bits <= boost_mp::Tier128::kInputBits && !filter) {
     t.float_bits = static_cast<int>(boost_mp::precision_bits<60>());
-    out = construct<boost_mp::Tier128>(sites, v);
+    out = construct<boost_mp::Tier128>(sites, v, reader);
   } else if (bits <= boost_mp::Tier128::kInputBits) {
     t.float_bits = static_cast<int>(boost_mp::precision_bits<60>());
     boost_mp::fallbacks = boost_mp::verified = boost_mp::verify_mismatches = 0;
@@ -130,20 +134,20 @@ VoronoiTopology boost_segment_voronoi_mp(const PolygonSites& sites, MpTier* tier
       }
     } scope(&origins, verify);
     try {
-      out = construct<boost_mp::Tier128Filter, boost_mp::FilterPredicates>(sites, v);
+      out = construct<boost_mp::Tier128Filter, boost_mp::FilterPredicates>(sites, v, reader);
       t.filtered = true;
       t.fallbacks = boost_mp::fallbacks;
       t.verified = boost_mp::verified;
       t.verify_mismatches = boost_mp::verify_mismatches;
     } catch (const FilterUndecided&) {
-      out = construct<boost_mp::Tier128>(sites, v);
+      out = construct<boost_mp::Tier128>(sites, v, reader);
     }
   } else if (bits + boost_mp::kGuardBits <= boost_mp::precision_bits<200>()) {
     t.float_bits = static_cast<int>(boost_mp::precision_bits<200>());
-    out = construct<boost_mp::TierGmp<200>>(sites, v);
+    out = construct<boost_mp::TierGmp<200>>(sites, v, reader);
   } else if (bits + boost_mp::kGuardBits <= boost_mp::precision_bits<700>()) {
     t.float_bits = static_cast<int>(boost_mp::precision_bits<700>());
-    out = construct<boost_mp::TierGmp<700>>(sites, v);
+    out = construct<boost_mp::TierGmp<700>>(sites, v, reader);
   } else {
     throw std::invalid_argument("boost_segment_voronoi_mp: the frame's integers need " + std::to_string(bits) +
                                 " bits, more than any pair of finite doubles");
