@@ -20,47 +20,22 @@ namespace {
 
 constexpr double kAmplitude = 0.015;
 
-double max_finite_bt(const MedialComplex& mc, const DiscreteBurning& d) {
-  double m = 0;
-  for (std::uint32_t v = 0; v < mc.vertex_count(); ++v)
-    if (std::isfinite(d.vertex_bt[v])) m = std::max(m, d.vertex_bt[v]);
-  return m;
-}
-
 std::vector<FigureFile> fig_5_5(const FigureContext& ctx) {
   const TriangleMesh3 original = read_triangle_mesh(ctx.data_dir + "/meshes/tripod.off");
   const double diagonal = mesh_bounding_diagonal(original), h = diagonal / 150;
   const TriangleMesh3 moved = perturb_mesh(original, kAmplitude * diagonal, 5);
   const CurvesScene a(mesh_medial_axis(original).complex, h), b(mesh_medial_axis(moved).complex, h);
-  const double hi = std::max(max_finite_bt(a.mc, a.burning), max_finite_bt(b.mc, b.burning));
+  const double hi = std::max(max_finite_bt(a), max_finite_bt(b));
   const Camera cam = framing_camera(std::vector<Vec3d>(original.vertices.begin(), original.vertices.end()), 55, 35, 26);
   SvgCanvas canvas(1500, 960);
-  const char* columns[3] = {"surface: BT of the touching medial ball", "medial axis: BT",
-                            "medial curves (axis as wireframe)"};
-  for (int c = 0; c < 3; ++c) canvas.text({250.0 + 500 * c, 26}, columns[c], 15, "middle");
-  for (int row = 0; row < 2; ++row) {
-    const CurvesScene& s = row == 0 ? a : b;
-    const TriangleMesh3& mesh = row == 0 ? original : moved;
-    const double y = 40 + 450.0 * row;
-    {
-      Renderer3d r(cam);
-      draw_surface_burning(r, mesh, s.k, 5, 0, hi);
-      r.render(canvas, 0, y, 500, 430);
-    }
-    {
-      Renderer3d r(cam);
-      draw_burning(r, s, 0, hi, 0);
-      r.render(canvas, 500, y, 500, 430);
-    }
-    {
-      Renderer3d r(cam);
-      for (const ComplexEdge& e : s.mc.edges())  // the axis as a wireframe, so the curves inside show
-        r.line(p3(s.mc.vertex(e.v[0]).approx), p3(s.mc.vertex(e.v[1]).approx), {0.7, 0.72, 0.76}, 0.5);
-      draw_curves(r, s.curves, {0.85, 0.05, 0.05}, 2.6);
-      r.render(canvas, 1000, y, 500, 430);
-    }
-    canvas.text({14, y + 20}, row == 0 ? "tripod" : "perturbed", 15);
-  }
+  draw_rows_of_three(canvas, cam,
+                     {"surface: BT of the touching medial ball", "medial axis: BT", "medial curves (axis as wireframe)"},
+                     [&](int row, int column, Renderer3d& r) {
+                       const CurvesScene& s = row == 0 ? a : b;
+                       if (column == 0) draw_surface_burning(r, row == 0 ? original : moved, s.k, 5, 0, hi);
+                       if (column == 1) draw_burning(r, s, 0, hi, 0);
+                       if (column == 2) draw_wire_and_curves(r, s);
+                     });
   colour_bar(canvas, 630, 930, 240, 0, hi, "burning time BT");
   canvas.save(ctx.out_dir + "/fig5_5.svg");
   const double distance = curve_hausdorff(a.curves, b.curves, h / 2);

@@ -19,6 +19,33 @@ CurvesScene::CurvesScene(const RawComplex& raw, double h, const MedialCurveOptio
   analysis = analyze_shape(k, curves);
 }
 
+void draw_wire_and_curves(Renderer3d& r, const CurvesScene& s) {
+  for (const ComplexEdge& e : s.mc.edges())
+    r.line(p3(s.mc.vertex(e.v[0]).approx), p3(s.mc.vertex(e.v[1]).approx), {0.7, 0.72, 0.76}, 0.5);
+  draw_curves(r, s.curves, {0.85, 0.05, 0.05}, 2.6);
+}
+
+void draw_rows_of_three(SvgCanvas& canvas, const Camera& cam, const std::array<std::string, 3>& titles,
+                        const std::function<void(int row, int column, Renderer3d& r)>& draw) {
+  for (int c = 0; c < 3; ++c) canvas.text({250.0 + 500 * c, 26}, titles[c], 15, "middle");
+  for (int row = 0; row < 2; ++row) {
+    const double y = 40 + 450.0 * row;
+    for (int c = 0; c < 3; ++c) {
+      Renderer3d r(cam);
+      draw(row, c, r);
+      r.render(canvas, 500.0 * c, y, 500, 430);
+    }
+    canvas.text({14, y + 20}, row == 0 ? "tripod" : "perturbed", 15);
+  }
+}
+
+double max_finite_bt(const CurvesScene& s) {
+  double m = 0;
+  for (double bt : s.burning.vertex_bt)
+    if (std::isfinite(bt)) m = std::max(m, bt);
+  return m;
+}
+
 std::vector<Vec3d> vertex_positions(const MedialComplex& mc) {
   std::vector<Vec3d> out;
   for (const ComplexVertex& v : mc.vertices()) out.push_back(v.approx);

@@ -3,6 +3,7 @@
 // paths as arrows, a complex coloured by BT or by a per-triangle colour, a mesh surface).
 #pragma once
 
+#include <array>
 #include <functional>
 #include <memory>
 #include <string>
@@ -39,6 +40,14 @@ void draw_burning(Renderer3d& r, const CurvesScene& s, double lo, double hi, dou
 void draw_flat(Renderer3d& r, const MedialComplex& mc, const std::function<Rgb(std::uint32_t triangle)>& color);
 void draw_curves(Renderer3d& r, const MedialCurves& c, const Rgb& color, double width,
                  const std::function<bool(std::uint32_t edge)>& keep = nullptr);
+// The complex as a light wireframe, so that the curves inside show, and its medial curves in red.
+void draw_wire_and_curves(Renderer3d& r, const CurvesScene& s);
+// Fig. 5.5's layout: column titles, then two rows (the shape, its perturbed copy) of three
+// 500 x 430 panels from `cam`; draw(row, column, r) fills each panel.
+void draw_rows_of_three(SvgCanvas& canvas, const Camera& cam, const std::array<std::string, 3>& titles,
+                        const std::function<void(int row, int column, Renderer3d& r)>& draw);
+// The largest finite BT at the scene's vertices (0 when none burns).
+double max_finite_bt(const CurvesScene& s);
 // Each path as a polyline with an arrowhead where it arrives (points[0]); arrowheads are
 // `head` long (in model units).
 void draw_paths(Renderer3d& r, const std::vector<BurningPath>& paths, const Rgb& color, double width, double head);

@@ -1,5 +1,11 @@
-// sqrt_field.h -- products and quotients of sums of square roots of rationals.
+// sqrt_field.h -- the arithmetic of ExactSum (number/exact_sum.h): products, quotients and
+// square roots of sums of square roots of rationals.
 //
+// ExactSum itself holds the representation, addition and the certified sign; this header
+// adds what turns it into a number type for exact constructions: multiplication, division
+// and square roots, each returning an ExactSum (or refusing when the result leaves that
+// form). Numbers of a fixed multiquadratic field with their own faster representations are
+// in number/multiquadratic.h; they convert to ExactSum.
 // Computes: exact products of ExactSums without constants (sqrt(a) sqrt(b) = sqrt(ab)),
 // and quotients by rationalising the denominator with conjugates (x / (a + b sqrt r) =
 // x (a - b sqrt r) / (a^2 - b^2 r)), which keeps Voronoi vertices of segment sites in the

@@ -1,6 +1,7 @@
 // burn3d_discrete.cpp -- `burn3d --method discrete`: the Steiner-point baseline.
 #include <cmath>
 #include <limits>
+#include <memory>
 #include <sstream>
 
 #include "burn3/discrete/discrete_burning.h"
@@ -19,8 +20,9 @@ BurnOutcome burn_by_discrete(const BurnRequest& request) {
     o.progress = [&](std::uint64_t burned, std::uint64_t total) {
       request.progress("burning", static_cast<double>(burned) / static_cast<double>(total), "");
     };
-  const DiscreteBurning d = burn_discrete(mc, o);
   BurnOutcome out;
+  out.discrete = std::make_shared<const DiscreteBurning>(burn_discrete(mc, o));
+  const DiscreteBurning& d = *out.discrete;
   out.vertex_bt = d.vertex_bt;
   for (std::size_t i = 0; i < request.queries.size(); ++i) {
     // An upper bound only: no certified bound below it (discrete_query.h).

@@ -8,8 +8,10 @@
 #include "burn3/discrete/discrete_burning_field.h"
 #include "burn3/exact/burn_outputs.h"
 #include "burn3/exact/exact_burning_field.h"
+#include "io/burn_field_file.h"
 #include "pipeline/burn3d.h"
 #include "pipeline/complex_input.h"
+#include "support/number_text.h"
 #include "support/progress.h"
 
 namespace grassfire {
@@ -42,6 +44,8 @@ FieldRun load_burning_field(const FieldSetup& setup) {
   if (setup.singular_walls && setup.method != "exact") throw std::invalid_argument("--singular-walls needs --method exact");
   if (setup.max_points < 1 || setup.max_points > 2'000'000'000ULL)
     throw std::invalid_argument("--max-points must be in [1, 2000000000]");
+  if (setup.field_file && setup.method != "discrete")
+    throw std::invalid_argument("--field " + *setup.field_file + " holds a discrete burning: it goes with --method discrete");
   // The stages on stderr as burn3d shows them (support/progress.h), for every command and
   // Python function that burns through here.
   Progress progress(setup.command + " " + setup.input, 0);
@@ -50,6 +54,16 @@ FieldRun load_burning_field(const FieldSetup& setup) {
   in.complex = std::make_unique<MedialComplex>(load_complex(setup.input, setup.mesh_is_complex, setup.command, setup.repair));
   in.complex->validate();
   if (in.complex->vertex_count() == 0) throw std::runtime_error(setup.input + ": the complex is empty");
+  if (setup.field_file) {
+    progress.stage("reading the field");
+    in.burning = std::make_unique<DiscreteBurning>(read_burn_field(*setup.field_file, *in.complex));
+    in.spacing = in.burning->spacing;
+    if (setup.spacing && *setup.spacing != in.spacing)
+      throw std::invalid_argument("--spacing " + shortest_double(*setup.spacing) + " is not the spacing of --field " +
+                                  *setup.field_file + " (" + shortest_double(in.spacing) + ")");
+    in.field = std::make_unique<DiscreteBurningField>(*in.complex, *in.burning);
+    return in;
+  }
   in.spacing = setup.spacing ? *setup.spacing : default_burn_spacing(*in.complex);
   if (!(in.spacing > 0) || !std::isfinite(in.spacing)) throw std::invalid_argument("--spacing must be a positive number");
   if (setup.method == "exact") {

@@ -8,13 +8,18 @@
 // `exact` runs the window-propagation engine from the border ignition
 // (burn3/exact/exact_burning.h; refused on complexes it cannot burn as Definition 9 unless
 // singular_walls) and wraps it (burn3/exact/exact_burning_field.h), with the spacing the
-// spacing of the edge points at which medial curves are traced. The program's commands and
+// spacing of the edge points at which medial curves are traced. With a field file (burn3d
+// --field, io/burn_field_file.h) the discrete burning is read from it, after checking it was
+// burned on INPUT's complex, instead of burning again: the same field, bit for bit, so the
+// same curves, paths and pruned axes. The program's commands and
 // the Python module call this, so both give the same field. A new method is a new branch
 // here that returns another BurningField.
 // Progress: the stages (loading, burning with its fraction, exact propagation) on stderr as
 // the verbosity says (support/progress.h), named "<command> <input>".
 // Contract: errors are exceptions naming the input and the problem (std::invalid_argument
-// for a bad method, spacing or point budget); nothing is returned then.
+// for a bad method, spacing or point budget, or options a field file contradicts; a
+// FormatError naming the field file when it is not one or belongs to another complex);
+// nothing is returned then.
 // Complexity: the builder's and the method's.
 // Section: ch. 4 (Definitions 9-10), 5.1.2.
 #pragma once
@@ -41,6 +46,9 @@ struct FieldSetup {
   std::uint64_t max_points = 50'000'000;  // discrete only
   std::string command = "burn3d";   // names the command in notes
   MeshRepairOptions repair;         // a defective mesh INPUT (medial3/mesh/mesh_repair.h)
+  // A burning burn3d --field wrote (io/burn_field_file.h), read instead of burning: it must
+  // have been burned on INPUT's complex; method discrete; its spacing is the field's.
+  std::optional<std::string> field_file;
 };
 
 struct FieldRun {

@@ -18,9 +18,11 @@
 
 #include <cstdint>
 #include <functional>
+#include <memory>
 #include <string>
 #include <vector>
 
+#include "burn3/discrete/discrete_burning.h"
 #include "burn3/point_sources.h"
 #include "complex3/medial_complex.h"
 #include "complex3/point_location.h"
@@ -56,6 +58,9 @@ struct BurnOutcome {
   std::vector<BurnValue> query_values;
   nlohmann::json report;
   std::string summary;
+  // The discrete method's whole burning (graph values and predecessors), which
+  // burn3d --field writes (io/burn_field_file.h); null for the other methods.
+  std::shared_ptr<const DiscreteBurning> discrete;
 };
 
 // Dijkstra over vertices and Steiner points (burn3/discrete/discrete_burning.h, discrete_query.h).

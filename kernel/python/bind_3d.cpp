@@ -46,7 +46,7 @@ py::dict medial3d(const py::object& input, const std::string& kind, double sampl
     progress.stage("building the medial axis");
     axis.emplace(build_medial_axis(file.path(), k, mesh, repair_options));
     if (const std::string r = axis->report.value("/mesh_input/repairs"_json_pointer, ""); !r.empty())
-      note(file.message("medial3d: " + label + ": " + r));
+      note("medial3d: " + label + ": " + r);
     progress.advance();
     progress.stage("building and validating the complex");
     mc.emplace(axis->complex);

@@ -38,8 +38,12 @@ struct RepairArgs {
 
 FieldSetup field_setup(const InputFile& file, const std::string& method, std::optional<double> spacing,
                        bool mesh_is_complex, bool singular_walls, std::uint64_t max_points, const RepairArgs& repair,
-                       const char* command) {
+                       const py::object& field, const char* command) {
   FieldSetup f;
+  if (!field.is_none()) {
+    if (!is_path(field)) throw std::invalid_argument("field: a path to the file burn3d --field wrote, or None");
+    f.field_file = path_text(field);
+  }
   f.repair = repair.options();
   f.input = file.path();
   f.method = method;
@@ -98,11 +102,11 @@ py::dict curves3d(const py::object& input, const std::string& method, std::optio
                   double arrive_cosine, double depart_cosine, double min_et, std::optional<double> time_margin,
                   double planar_tubularity, bool mesh_is_complex, bool singular_walls, std::uint64_t max_points,
                   bool repair, std::optional<double> repair_alpha, std::optional<double> repair_offset,
-                  const std::string& name) {
+                  const py::object& field, const std::string& name) {
   const InputFile file(input, name);
   Curves3dSetup setup;
   setup.field = field_setup(file, method, spacing, mesh_is_complex, singular_walls, max_points,
-                             {repair, repair_alpha, repair_offset}, "curves3d");
+                             {repair, repair_alpha, repair_offset}, field, "curves3d");
   setup.curves.arrive_cosine = arrive_cosine;
   setup.curves.depart_cosine = depart_cosine;
   setup.curves.min_et_fraction = min_et;
@@ -123,7 +127,7 @@ py::dict curves3d(const py::object& input, const std::string& method, std::optio
 py::dict paths3d(const py::object& input, const std::string& from, const py::object& points, const std::string& method,
                  std::optional<double> spacing, bool mesh_is_complex, bool singular_walls, std::uint64_t max_points,
                  bool repair, std::optional<double> repair_alpha, std::optional<double> repair_offset,
-                 const std::string& name) {
+                 const py::object& field, const std::string& name) {
   const InputFile file(input, name);
   Paths3dSetup setup;
   setup.from = from;
@@ -132,7 +136,7 @@ py::dict paths3d(const py::object& input, const std::string& from, const py::obj
   setup.points_name = p.file ? *p.file : p.name;
   setup.points = p.file ? read_point_csv(*p.file, false) : p.rows;
   setup.field = field_setup(file, method, spacing, mesh_is_complex, singular_walls, max_points,
-                            {repair, repair_alpha, repair_offset}, "paths3d");
+                            {repair, repair_alpha, repair_offset}, field, "paths3d");
   std::optional<Paths3dRun> run;
   file.run([&] { run.emplace(paths3d(setup)); });
   py::dict out;
@@ -150,7 +154,7 @@ std::optional<mpq_class> threshold(const py::object& x, const char* name) {
 py::dict prune3d(const py::object& input, const py::object& et, const py::object& st, bool relative,
                  const std::string& method, std::optional<double> spacing, bool mesh_is_complex, bool singular_walls,
                  std::uint64_t max_points, bool repair, std::optional<double> repair_alpha,
-                 std::optional<double> repair_offset, const std::string& name) {
+                 std::optional<double> repair_offset, const py::object& field, const std::string& name) {
   const InputFile file(input, name);
   Prune3dSetup setup = default_prune3d_setup();
   setup.erosion = threshold(et, "et");
@@ -158,7 +162,7 @@ py::dict prune3d(const py::object& input, const py::object& et, const py::object
   setup.relative = relative;
   if (relative && !setup.erosion) throw std::invalid_argument("--relative needs --et");
   setup.field = field_setup(file, method, spacing, mesh_is_complex, singular_walls, max_points,
-                             {repair, repair_alpha, repair_offset}, "prune3d");
+                             {repair, repair_alpha, repair_offset}, field, "prune3d");
   std::optional<Prune3dRun> run;
   file.run([&] { run.emplace(prune3d(setup)); });
   py::dict out;
@@ -200,7 +204,7 @@ singular_points, sheets) and "betti" [b0, b1, b2] by simplicial homology.
         py::arg("arrive_cosine") = 0.5, py::arg("depart_cosine") = 0.1, py::arg("min_et") = 0.0,
         py::arg("time_margin") = py::none(), py::arg("planar_tubularity") = 0.5, py::arg("mesh_is_complex") = false,
         py::arg("singular_walls") = false, py::arg("max_points") = 50'000'000, py::arg("repair") = false, py::arg("repair_alpha") = py::none(), py::arg("repair_offset") = py::none(),
-        py::arg("name") = "array",
+        py::arg("field") = py::none(), py::arg("name") = "array",
         R"doc(Medial curves of a 3D medial axis and its planar / tubular split (grassfire curves3d --json).
 
 input              as burn3d's
@@ -209,6 +213,9 @@ method, spacing    the burning field: "discrete" (Steiner spacing h) or "exact" 
 arrive_cosine, depart_cosine, min_et, time_margin, planar_tubularity: as the options of
                    the same names (grassfire curves3d --help)
 repair, repair_alpha, repair_offset: a defective mesh input repaired first, as medial3d's
+field              the path of the burning burn3d --field wrote for this input (discrete):
+                   read instead of burning again, the same curves; refused (ValueError
+                   or RuntimeError naming the file) when burned on another complex
 
 Returns the members of the grassfire-curves3d JSON ("nodes" columns x, y, z, R, bt, et;
 "edges" columns u, v, length, kind; "betti", "axis_betti", "analysis", ...) and the graph
@@ -221,7 +228,7 @@ as arrays: "points" (n, 3) and "segments" (m, 2).
   m.def("paths3d", &paths3d, py::arg("input"), py::arg("from_") = "ends", py::arg("points") = py::none(),
         py::arg("method") = "discrete", py::arg("spacing") = py::none(), py::arg("mesh_is_complex") = false,
         py::arg("singular_walls") = false, py::arg("max_points") = 50'000'000, py::arg("repair") = false, py::arg("repair_alpha") = py::none(), py::arg("repair_offset") = py::none(),
-        py::arg("name") = "array",
+        py::arg("field") = py::none(), py::arg("name") = "array",
         R"doc(Burning paths on a 3D medial axis (grassfire paths3d --json).
 
 input    as burn3d's
@@ -229,6 +236,7 @@ from_    "vertices", "curves", "ends" (the paths ending on the medial curves) or
 points   with from_="points": a CSV path (x,y,z) or an (n, 3) array; each point is
          located exactly at its nearest point of the complex
 repair, repair_alpha, repair_offset: a defective mesh input repaired first, as medial3d's
+field    as curves3d's: the burning burn3d --field wrote, read instead of burning again
 
 Returns the members of the grassfire-paths3d JSON: "paths" with columns "bt", "length"
 and "points" (a list of (k, 3) arrays, from the point back to where its fire started), and
@@ -242,7 +250,7 @@ and "points" (a list of (k, 3) arrays, from the point back to where its fire sta
         py::arg("relative") = false, py::arg("method") = "exact", py::arg("spacing") = py::none(),
         py::arg("mesh_is_complex") = false, py::arg("singular_walls") = false, py::arg("max_points") = 50'000'000,
         py::arg("repair") = false, py::arg("repair_alpha") = py::none(), py::arg("repair_offset") = py::none(),
-        py::arg("name") = "array",
+        py::arg("field") = py::none(), py::arg("name") = "array",
         R"doc(The 3D medial axis pruned by ET and ST thresholds, keeping its topology (grassfire prune3d --json).
 
 input     as burn3d's
@@ -251,6 +259,7 @@ et        keep ET = BT - R >= et (a fraction of the axis' largest R with relativ
 st        keep ST = 1 - R / BT >= st, in [0, 1]
 method    "exact" (default) or "discrete" (the baseline), with spacing as burn3d's
 repair, repair_alpha, repair_offset: a defective mesh input repaired first, as medial3d's
+field     as curves3d's (with method="discrete")
 
 Cuts exactly along the threshold lines of the piecewise-linear fields and removes failing
 parts only by collapses from the free border inward (kernel/curves3/axis_pruning3.h).

@@ -139,10 +139,8 @@ InputFile::~InputFile() {
 
 std::string InputFile::message(const std::string& m) const {
   if (dir_.empty()) return m;
-  std::string out = m;
-  for (std::size_t at = out.find(path_); at != std::string::npos; at = out.find(path_, at + name_.size()))
-    out.replace(at, path_.size(), name_);
-  return out;
+  const NoteAlias alias(path_, name_);
+  return NoteAlias::shown(m);
 }
 
 nlohmann::json InputFile::named(nlohmann::json report) const {

@@ -22,6 +22,7 @@
 #include <string>
 
 #include "pipeline/burn3d.h"
+#include "support/progress.h"
 #include "shapes/image_shape.h"
 #include "geometry2/shape2.h"
 
@@ -39,10 +40,12 @@ class InputFile {
   std::string message(const std::string& message) const;
   // A report with the temporary path replaced by the array's name in every string.
   nlohmann::json named(nlohmann::json report) const;
-  // Runs f (without the GIL) and rethrows its errors with messages naming the array.
+  // Runs f (without the GIL), its notes and progress lines naming the array
+  // (support/progress.h NoteAlias), and rethrows its errors with messages naming the array.
   template <class F>
   auto run(F f) const -> decltype(f()) {
     try {
+      const NoteAlias alias(dir_.empty() ? std::string() : path_, name_);
       pybind11::gil_scoped_release release;
       return f();
     } catch (const std::invalid_argument& e) {

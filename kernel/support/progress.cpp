@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <stdexcept>
+#include <utility>
 
 namespace grassfire {
 
@@ -20,7 +21,25 @@ double seconds_between(std::chrono::steady_clock::time_point a, std::chrono::ste
   return std::chrono::duration<double>(b - a).count();
 }
 
+thread_local const NoteAlias* t_alias = nullptr;
+
 }  // namespace
+
+NoteAlias::NoteAlias(std::string path, std::string name)
+    : path_(std::move(path)), name_(std::move(name)), outer_(t_alias) {
+  t_alias = this;
+}
+
+NoteAlias::~NoteAlias() { t_alias = outer_; }
+
+std::string NoteAlias::shown(std::string text) {
+  for (const NoteAlias* a = t_alias; a; a = a->outer_) {
+    if (a->path_.empty()) continue;
+    for (std::size_t at = text.find(a->path_); at != std::string::npos; at = text.find(a->path_, at + a->name_.size()))
+      text.replace(at, a->path_.size(), a->name_);
+  }
+  return text;
+}
 
 void set_verbosity(Verbosity v) { g_verbosity = v; }
 Verbosity verbosity() { return g_verbosity; }
@@ -40,7 +59,7 @@ bool progress_enabled() {
 }
 
 void note(const std::string& text) {
-  if (notes_enabled()) std::fprintf(stderr, "%s\n", text.c_str());
+  if (notes_enabled()) std::fprintf(stderr, "%s\n", NoteAlias::shown(text).c_str());
 }
 
 void take_verbosity_flags(int& argc, char** argv) {
@@ -59,7 +78,7 @@ void take_verbosity_flags(int& argc, char** argv) {
 }
 
 Progress::Progress(std::string task, std::uint64_t total)
-    : task_(std::move(task)),
+    : task_(NoteAlias::shown(std::move(task))),
       total_(total),
       enabled_(progress_enabled()),
       terminal_(stderr_is_terminal()),
@@ -132,7 +151,7 @@ void Progress::draw() {
     std::snprintf(eta, sizeof eta, ", about %.0f s left", elapsed * static_cast<double>(total_ - done_) / done_);
   std::string line = task_ + ": " + counts + ", " + std::to_string(static_cast<long long>(elapsed)) + " s" + eta;
   if (!detail_.empty()) line += ", " + detail_;
-  if (!item_.empty()) line += " -- " + item_;
+  if (!item_.empty()) line += " -- " + NoteAlias::shown(item_);
   if (terminal_) {
     if (line.size() > 150) line = line.substr(0, 147) + "...";
     std::fprintf(stderr, "\r\033[K%s", line.c_str());

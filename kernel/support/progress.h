@@ -13,6 +13,10 @@
 // with a detail: the exact engine's sweep), at most once a second either way. The environment variable
 // GRASSFIRE_PROGRESS_SECONDS, when set, replaces both intervals (tests set it to 0 to see
 // every report without waiting). Results never go to stderr, so --quiet changes no output file.
+// An input the user gave as something other than a path (the Python module writes an array
+// to a temporary file) is named in notes and progress lines as the user named it: while a
+// NoteAlias lives on a thread, every occurrence of its path in what that thread prints
+// reads as its name.
 // Contract: not thread-safe (one Progress per thread at a time; the studies are sequential).
 // Complexity: advance() is O(1) and reads the clock once every 1024 calls.
 #pragma once
@@ -34,6 +38,22 @@ bool progress_enabled();  // Progress, or Auto with stderr a terminal
 
 // One line on stderr unless Quiet.
 void note(const std::string& text);
+
+// Shows `name` for `path` in this thread's notes and progress lines while it lives (the
+// innermost alias wins; an empty path does nothing).
+class NoteAlias {
+ public:
+  NoteAlias(std::string path, std::string name);
+  ~NoteAlias();
+  NoteAlias(const NoteAlias&) = delete;
+  NoteAlias& operator=(const NoteAlias&) = delete;
+  // `text` with this thread's aliases applied.
+  static std::string shown(std::string text);
+
+ private:
+  std::string path_, name_;
+  const NoteAlias* outer_;
+};
 
 // For programs with their own argument handling (experiments, figures): removes --quiet
 // and --progress from the command line and sets the verbosity they ask for.

@@ -19,6 +19,7 @@
 #include <sstream>
 
 #include "support/atomic_file.h"
+#include "io/burn_field_file.h"
 #include "io/complex_export.h"
 #include "io/complex_text.h"
 #include "io/point_csv.h"
@@ -60,7 +61,9 @@ int run_burn3d(int argc, char** argv) {
       .option("csv", "OUT", "with --at: one row per query `x,y,z,bt,bt_error,snap` (inf where it never burns)")
       .option("ply", "OUT", "write the complex with per-vertex R, BT, ET as PLY")
       .option("vtk", "OUT", "write the complex with per-vertex R, BT, ET as legacy VTK")
-      .option("json", "OUT", "write a JSON report (counts, timings, per-vertex x y z R BT ET; null = never burns)");
+      .option("json", "OUT", "write a JSON report (counts, timings, per-vertex x y z R BT ET; null = never burns)")
+      .option("field", "OUT", "discrete, from the border: write the whole burning (format grassfire-burn3d-field),\n"
+                              "which curves3d, paths3d and prune3d --field read instead of burning again");
   add_repair_options(opt);
   opt.epilog("The discrete method over-estimates BT by O(h) (kernel/burn3/discrete/discrete_burning.h); at --at points its\n"
               "bt is an upper bound from the graph points of the point's triangles (kernel/burn3/discrete/discrete_query.h).\n"
@@ -84,6 +87,9 @@ int run_burn3d(int argc, char** argv) {
   if (setup.singular_walls && setup.method != "exact") throw std::runtime_error("--singular-walls needs --method exact");
   if (opt.has("spacing")) setup.spacing = opt.get_double("spacing");
   setup.max_points = static_cast<std::uint64_t>(opt.get_long("max-points", 1, 2'000'000'000L));
+  if (opt.has("field") && (setup.method != "discrete" || opt.has("sources") || setup.no_border_ignition))
+    throw std::runtime_error("--field writes a discrete burning from the border (--method discrete, no --sources, "
+                             "no --no-border-ignition): the burning curves3d, paths3d and prune3d make");
   if (opt.has("sources")) setup.sources.file = opt.get("sources");
   if (opt.has("at")) setup.queries.file = opt.get("at");
   const Burn3dRun run = burn3d(setup);
@@ -95,6 +101,7 @@ int run_burn3d(int argc, char** argv) {
   if (opt.has("ply")) write_complex_ply(mc, fields, opt.get("ply"));
   if (opt.has("vtk")) write_complex_vtk(mc, fields, opt.get("vtk"));
   if (opt.has("json")) write_file_atomically(opt.get("json"), run.report.dump(1) + "\n");
+  if (opt.has("field")) write_burn_field(mc, *run.outcome.discrete, setup.input, opt.get("field"));
   if (opt.has("quiet")) return 0;
   const nlohmann::json& summary = run.report["summary"];
   std::cout << "burn3d " << setup.input << ": " << mc.vertex_count() << " vertices, " << mc.triangle_count()

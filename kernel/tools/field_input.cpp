@@ -16,7 +16,9 @@ void declare_field_options(Options& opt, const std::string& default_method) {
       .flag("singular-walls", "exact: burn complexes with singular edges, each edge a wall where fronts stop\n"
                               "(an upper bound of BT, not Definition 9)")
       .option("max-points", "N", "refuse to place more than N graph points", "50000000")
-      .flag("mesh-is-complex", "use a mesh itself as the 2-complex (R = 0) instead of its medial axis");
+      .flag("mesh-is-complex", "use a mesh itself as the 2-complex (R = 0) instead of its medial axis")
+      .option("field", "FILE", "read the discrete burning burn3d --field wrote for INPUT instead of burning again\n"
+                               "(refused when it was burned on another complex)");
   add_repair_options(opt);
 }
 
@@ -30,6 +32,7 @@ FieldSetup field_setup(const Options& opt, const std::string& input, const std::
   setup.max_points = static_cast<std::uint64_t>(opt.get_long("max-points", 1, 2'000'000'000L));
   setup.command = command;
   setup.repair = repair_options(opt);
+  if (opt.has("field")) setup.field_file = opt.get("field");
   return setup;
 }
 

@@ -1,6 +1,6 @@
 // field_input.h -- the burning field a 3D analysis command works on (curves3d, paths3d,
 // prune3d): the options those commands share (--method, --spacing, --singular-walls,
-// --max-points, --mesh-is-complex) and the field they select (pipeline/burn3d_field.h,
+// --max-points, --mesh-is-complex, --field) and the field they select (pipeline/burn3d_field.h,
 // which the Python module calls too).
 #pragma once
 

@@ -66,6 +66,22 @@ class ProgressLikeTheProgram(unittest.TestCase):
         self.assertIn("medial axis by the balls builder", err)
         self.assertEqual(stages(err), [])
 
+    def test_notes_name_an_array_input_as_given(self):
+        # An array is written to a temporary file for the pipeline; notes and progress lines
+        # name the array (its `name`), never that file.
+        tetra = ("np.array([[0,0,0],[1,0,0],[0,1,0],[0,0,1]], float), "
+                 "np.array([[0,2,1],[0,1,3],[0,3,2],[1,2,3]])")
+        for call in (f"grassfire.burn3d(({tetra}), spacing=0.1)",
+                     f"grassfire.burn3d(({tetra}), spacing=0.1, name='tetra')",
+                     f"grassfire.curves3d(({tetra}), spacing=0.1)"):
+            with self.subTest(call=call):
+                err = python_stderr("import numpy as np\n" + call, "progress")
+                name = "tetra" if "name='tetra'" in call else "array"
+                self.assertIn(f": {name}: medial axis by the convex builder", err)
+                self.assertIn(f" {name}: ", err)  # the progress task
+                self.assertNotIn("grassfire_py_", err)
+                self.assertNotIn(".off", err)
+
 
 class ReleasesTheGil(unittest.TestCase):
     """Each call runs while a ticking thread is measured: with the GIL held through the

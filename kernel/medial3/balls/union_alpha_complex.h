@@ -34,7 +34,7 @@
 #include <vector>
 
 #include "geometry3/ball_set.h"
-#include "number/radical_number.h"
+#include "number/multiquadratic.h"
 
 namespace grassfire {
 

@@ -13,7 +13,7 @@
 //  - whether x is a medial point: the claimed radius R(x) is attained, nothing is closer,
 //    and two or more distinct boundary points (or a continuum) attain it.
 // Every comparison is exact: squared distances are of the form a + b sqrt(c) over the
-// field of x (radical_number.h: sign_plus_root, sign_two_roots), and an interval filter
+// field of x (number/multiquadratic.h: sign_plus_root, sign_two_roots), and an interval filter
 // skips features that are certainly farther.
 // Contract: the axis was built from these balls. Complexity: O(n^2 + |V|) features per
 // point, O(n) exact tests for each feature within the filter's reach; meant for tests on

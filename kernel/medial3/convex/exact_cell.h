@@ -2,7 +2,7 @@
 //
 // Computes: the cell  P ∩ {h_1 <= 0} ∩ ... ∩ {h_m <= 0}  of a convex polytope P, as
 // outward-oriented polygonal faces, where each h is a plane with coefficients in a
-// multiquadratic field (radical_number.h). Both medial-axis builders are cell
+// multiquadratic field (number/multiquadratic.h, RadicalNumber). Both medial-axis builders are cell
 // computations: the cell of a face of a convex polyhedron (the points for which that face
 // is the nearest, bounded by bisector planes), and the Voronoi cell of a vertex of the
 // boundary of a union of balls inside one tetrahedron of its alpha complex.
@@ -28,7 +28,7 @@
 #include <memory>
 #include <vector>
 
-#include "number/radical_number.h"
+#include "number/multiquadratic.h"
 #include "complex3/raw_complex.h"
 
 namespace grassfire {
