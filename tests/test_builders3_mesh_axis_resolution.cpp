@@ -95,7 +95,7 @@ TEST_CASE("resolution test against its definition: R(x) < (lambda / 2) h in rati
   }
 }
 
-TEST_CASE("a thin lens gets its axis by the resolution rule; without it the rounds diverge", "[mesh_axis][resolution]") {
+TEST_CASE("a thin lens gets its axis by the resolution rule, and without it the rounds diverge", "[mesh_axis][resolution]") {
   const TriangleMesh3 lens = thin_lens();
   const MeshAxis a = mesh_medial_axis(lens);
   CHECK(a.solid.betti == BettiNumbers{1, 0, 0});
