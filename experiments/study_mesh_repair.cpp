@@ -23,8 +23,11 @@
 //   mesh,defect,triangles,self_intersecting_pairs,border_edges,non_manifold_edges,
 //   non_manifold_vertices,shells,method,alpha,offset,repaired_vertices,repaired_triangles,
 //   repaired_shells,repair_cpu_s,hausdorff,input_to_repaired,repaired_to_input,
-//   hausdorff_error,hausdorff_cpu_s,solid_betti,axis_betti,axis_cpu_s,axis_samples
-// (Betti numbers b0:b1:b2; axis columns empty without --axis). A step that fails is a
+//   hausdorff_error,hausdorff_cpu_s,solid_betti,axis_betti,axis_cpu_s,axis_samples,axis_rounds,
+//   axis_dropped_components
+// (Betti numbers b0:b1:b2; axis columns empty without --axis; axis_rounds: the rounds run;
+// axis_dropped_components: components below the sampling's resolution dropped from the
+// returned round by the resolution rule, mesh_axis.h step 7, 0 when it did not apply). A step that fails is a
 // comment line with its message.
 #include <algorithm>
 #include <array>
@@ -87,7 +90,7 @@ void study(const std::string& name, const std::string& defect, const TriangleMes
   const MeshRepair r = repair_mesh(mesh, o);
   const MeshDefects& d = r.defects;
   const SolidTopology solid = solid_topology(r.mesh);
-  std::string axis_betti, axis_s, axis_samples;
+  std::string axis_betti, axis_s, axis_samples, axis_rounds, axis_dropped;
   if (axis) {
     const double t = cpu_seconds();
     try {
@@ -96,17 +99,21 @@ void study(const std::string& name, const std::string& defect, const TriangleMes
       const MeshAxis a = mesh_medial_axis(r.mesh, ao);
       axis_betti = betti_text(a.axis_betti);
       axis_samples = std::to_string(a.rounds[a.axis_round].samples);
+      axis_rounds = std::to_string(a.rounds.size());
+      const MeshAxisRound& accepted = a.rounds[a.axis_round];
+      axis_dropped = std::to_string(accepted.resolution_rule ? accepted.unresolved_components : 0);
       axis_s = std::to_string(cpu_seconds() - t);
     } catch (const std::exception& e) {
       std::printf("# %s %s: axis: %s\n", name.c_str(), defect.c_str(), e.what());
     }
   }
-  std::printf("%s,%s,%zu,%zu,%zu,%zu,%zu,%zu,%s,%.6g,%.6g,%zu,%zu,%zu,%.4f,%.6g,%.6g,%.6g,%.3g,%.4f,%s,%s,%s,%s\n",
+  std::printf("%s,%s,%zu,%zu,%zu,%zu,%zu,%zu,%s,%.6g,%.6g,%zu,%zu,%zu,%.4f,%.6g,%.6g,%.6g,%.3g,%.4f,%s,%s,%s,%s,%s,%s\n",
               name.c_str(), defect.c_str(), d.triangles, d.self_intersecting_pairs, d.border_edges,
               d.non_manifold_edges, d.non_manifold_vertices, d.shells, r.method.c_str(), r.alpha, r.offset,
               r.mesh.vertices.size(), r.mesh.triangles.size(), r.repaired_shells, r.repair_cpu_seconds, r.hausdorff,
               r.input_to_repaired, r.repaired_to_input, r.hausdorff_error, r.hausdorff_cpu_seconds,
-              betti_text(solid.betti).c_str(), axis_betti.c_str(), axis_s.c_str(), axis_samples.c_str());
+              betti_text(solid.betti).c_str(), axis_betti.c_str(), axis_s.c_str(), axis_samples.c_str(), axis_rounds.c_str(),
+              axis_dropped.c_str());
   std::fflush(stdout);
 }
 
@@ -122,7 +129,8 @@ int run(int argc, char** argv) {
   if (!(alpha_ratio > 0)) throw experiments::UsageError("--alpha-ratio must be positive");
   std::printf("mesh,defect,triangles,self_intersecting_pairs,border_edges,non_manifold_edges,non_manifold_vertices,"
               "shells,method,alpha,offset,repaired_vertices,repaired_triangles,repaired_shells,repair_cpu_s,hausdorff,"
-              "input_to_repaired,repaired_to_input,hausdorff_error,hausdorff_cpu_s,solid_betti,axis_betti,axis_cpu_s,axis_samples\n");
+              "input_to_repaired,repaired_to_input,hausdorff_error,hausdorff_cpu_s,solid_betti,axis_betti,axis_cpu_s,axis_samples,"
+              "axis_rounds,axis_dropped_components\n");
   for (const std::string& path : meshes) {
     const TriangleMesh3 mesh = read_triangle_mesh(path);
     std::array<double, 3> lo = mesh.vertices.front(), hi = lo;

@@ -20,18 +20,13 @@
 #include "io/mesh_io.h"
 #include "number/exact_sum.h"
 
+#include "test_mesh_axis_support.h"
+
 using namespace grassfire;
 
-namespace Catch {
-template <>
-struct StringMaker<BettiNumbers> {
-  static std::string convert(const BettiNumbers& b) { return betti_text(b); }
-};
-}  // namespace Catch
+using grassfire::testing::project_mesh;
 
 namespace {
-
-TriangleMesh3 project_mesh(const std::string& name) { return read_triangle_mesh(std::string(GF_PROJECT_DATA) + "/meshes/" + name); }
 
 std::vector<Voxel> scattered_cubes(int count) {
   std::vector<Voxel> v;

@@ -130,6 +130,44 @@ TriangleMesh3 prism_mesh(const std::vector<std::array<double, 2>>& polygon, doub
   return mesh;
 }
 
+TriangleMesh3 lens_mesh(double rim_angle, int rings, int sectors) {
+  TriangleMesh3 mesh;
+  mesh.source = "lens " + std::to_string(rim_angle);
+  const double a = rim_angle * M_PI / 180, z = std::cos(a), r = std::sin(a);
+  auto ring_point = [&](double radius, double height, int j) {
+    const double phi = 2 * M_PI * j / sectors;
+    return std::array<double, 3>{radius * std::cos(phi), radius * std::sin(phi), height};
+  };
+  mesh.vertices.push_back({0, 0, 1});  // the cap's pole
+  for (int i = 1; i <= rings; ++i)
+    for (int j = 0; j < sectors; ++j) mesh.vertices.push_back(ring_point(std::sin(a * i / rings), std::cos(a * i / rings), j));
+  std::vector<std::uint32_t> outer(sectors), inner(sectors);
+  auto cap = [&](int i, int j) { return static_cast<std::uint32_t>(1 + (i - 1) * sectors + j % sectors); };
+  for (int j = 0; j < sectors; ++j) mesh.triangles.push_back({0, cap(1, j), cap(1, j + 1)});
+  for (int i = 1; i < rings; ++i)
+    for (int j = 0; j < sectors; ++j) {
+      mesh.triangles.push_back({cap(i, j), cap(i + 1, j), cap(i + 1, j + 1)});
+      mesh.triangles.push_back({cap(i, j), cap(i + 1, j + 1), cap(i, j + 1)});
+    }
+  for (int j = 0; j < sectors; ++j) outer[j] = cap(rings, j);
+  for (int i = rings - 1; i >= 1; --i) {  // the disc, ring by ring inwards, facing -z
+    for (int j = 0; j < sectors; ++j) {
+      inner[j] = static_cast<std::uint32_t>(mesh.vertices.size());
+      mesh.vertices.push_back(ring_point(r * i / rings, z, j));
+    }
+    for (int j = 0; j < sectors; ++j) {
+      const int k = (j + 1) % sectors;
+      mesh.triangles.push_back({outer[j], inner[j], inner[k]});
+      mesh.triangles.push_back({outer[j], inner[k], outer[k]});
+    }
+    outer = inner;
+  }
+  const auto centre = static_cast<std::uint32_t>(mesh.vertices.size());
+  mesh.vertices.push_back({0, 0, z});
+  for (int j = 0; j < sectors; ++j) mesh.triangles.push_back({outer[j], centre, outer[(j + 1) % sectors]});
+  return mesh;
+}
+
 std::vector<Voxel> hollow_block_voxels(int n) {
   std::vector<Voxel> v;
   for (int x = 0; x < n; ++x)

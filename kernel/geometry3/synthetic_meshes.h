@@ -10,6 +10,7 @@
 //    solid's topology is the union's: a plate with g through-holes has genus g, disjoint
 //    voxels give separate shells, an empty cell enclosed by filled ones a cavity;
 //  - prism_mesh: a polygon extruded (notches and slits with sharp reflex edges);
+//  - lens_mesh: a spherical cap closed by its disc (a sharp convex rim);
 //  - random_convex_hull_mesh: a seeded random convex polyhedron (convex_hull_mesh.cpp).
 // Contract: for voxel_mesh, no two filled voxels that touch only along an edge or a corner
 // (the boundary would not be a manifold; require_closed_manifold says so), size > 0.
@@ -42,6 +43,13 @@ TriangleMesh3 voxel_mesh(const std::vector<Voxel>& filled, double size = 1, cons
 // The prism over a simple polygon (counter-clockwise, star-shaped from its first vertex,
 // which the top and bottom are fanned from) between z = 0 and z = height.
 TriangleMesh3 prism_mesh(const std::vector<std::array<double, 2>>& polygon, double height, const std::string& name = "prism");
+
+// The solid cut from the unit ball by the plane z = cos a, a = rim_angle degrees (0 < a <
+// 90): the spherical cap of polar angle a (`rings` rings of `sectors` vertices) closed by
+// its flat disc (rings of the same radii). Its rim is a circular edge of interior dihedral
+// angle a: a thin filled cap, a sharp wedge all around for small a (mesh_axis.h, step 7).
+// Outward; one shell, Betti numbers 1, 0, 0; rings >= 2, sectors >= 3.
+TriangleMesh3 lens_mesh(double rim_angle, int rings, int sectors);
 
 // The convex hull of `points` seeded random points on the sphere of radius 8, rounded to
 // integers (CGAL convex_hull_3; triangles outward, coplanar ones kept as triangles).

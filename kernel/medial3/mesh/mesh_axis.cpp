@@ -3,9 +3,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <optional>
 
 #include "medial3/mesh/axis_pruning.h"
+#include "medial3/mesh/axis_resolution.h"
 #include "medial3/mesh/inner_voronoi.h"
 #include "medial3/mesh/mesh_checks.h"
 #include "medial3/mesh/mesh_samples.h"
@@ -17,105 +19,6 @@
 namespace grassfire {
 
 namespace {
-
-
-
-// The angle test of a Voronoi vertex x against two samples u, v on its empty sphere:
-// |u - v|^2 >= kappa R(x)^2. In lattice units R(x) = |N| / |D| (the centre is
-// n_0 + N / D and n_0 lies on the sphere), so the test is D^2 |u - v|^2 >= kappa |N|^2:
-// an interval filter, then exact integers.
-class AngleTest {
- public:
-  AngleTest(const InnerVoronoi& vor, double angle_degrees)
-      : vor_(vor), kappa_(2 * (1 - std::cos(angle_degrees * M_PI / 180))), exact_kappa_(kappa_) {}
-
-  bool wide(std::uint32_t x, std::uint32_t u, std::uint32_t v) const {
-    if (kappa_ <= 0) return true;
-    const auto& a = vor_.samples.lattice[u];
-    const auto& b = vor_.samples.lattice[v];
-    const LatticeCentre& c = vor_.vertices[x].centre;
-    std::int64_t d2 = 0;  // < 3 * 2^54
-    for (int k = 0; k < 3; ++k) d2 += (a[k] - b[k]) * (a[k] - b[k]);
-    Interval n2(0.0);
-    for (int k = 0; k < 3; ++k) n2 += square(around(c.num[k]));
-    const int sign = certified_sign(square(around(c.den)) * Interval(static_cast<double>(d2)) - Interval(kappa_) * n2);
-    if (sign != kUndecided) return sign >= 0;
-    mpq_class nn = 0;
-    for (int k = 0; k < 3; ++k) nn += to_mpq(c.num[k]) * to_mpq(c.num[k]);
-    const mpq_class den = to_mpq(c.den);
-    return sgn(den * den * mpq_class(d2) - exact_kappa_ * nn) >= 0;
-  }
-
- private:
-  static Interval around(__int128 x) {
-    const double d = static_cast<double>(x);
-    return {round_down(d), round_up(d)};
-  }
-  const InnerVoronoi& vor_;
-  double kappa_;
-  mpq_class exact_kappa_;
-};
-
-// The separation test of two samples: |u - v| >= lambda max(h_u, h_v), h the spacing of
-// the triangles a sample lies on. Exact: |u - v|^2 is an integer in lattice units, compared
-// with the ceiling of the double threshold.
-class SeparationTest {
- public:
-  SeparationTest(const InnerVoronoi& vor, const std::vector<double>& triangle_spacing, double lambda)
-      : vor_(vor), spacing_(vor.samples.lattice.size(), INFINITY), lambda_(lambda) {
-    for (std::size_t t = 0; t + 1 < vor.samples.offset.size(); ++t)
-      for (std::uint32_t i = vor.samples.offset[t]; i < vor.samples.offset[t + 1]; ++i) {
-        double& h = spacing_[vor.samples.on_triangle[i]];
-        h = std::min(h, triangle_spacing[t] / vor.samples.grid);
-      }
-  }
-
-  bool apart(std::uint32_t u, std::uint32_t v) const {
-    if (lambda_ <= 0) return true;
-    const auto& a = vor_.samples.lattice[u];
-    const auto& b = vor_.samples.lattice[v];
-    std::int64_t d2 = 0;  // < 3 * 2^54
-    for (int k = 0; k < 3; ++k) d2 += (a[k] - b[k]) * (a[k] - b[k]);
-    const double h = lambda_ * std::max(spacing_[u], spacing_[v]);
-    const double threshold = std::ceil(h * h);
-    return threshold < 0x1p62 && d2 >= static_cast<std::int64_t>(threshold);
-  }
-
- private:
-  const InnerVoronoi& vor_;
-  std::vector<double> spacing_;  // per sample, in lattice units
-  double lambda_;
-};
-
-// The tests of the pruning: which polygons and edges may not be collapsed away.
-struct KeepTests {
-  const InnerVoronoi& vor;
-  const AngleTest& angle;
-  const SeparationTest& separation;
-
-  bool polygon(std::uint32_t i) const {
-    if (!separation.apart(vor.pq[i][0], vor.pq[i][1])) return false;
-    for (std::uint32_t k = 0; k < vor.polygons.ring_size(i); ++k)
-      if (!angle.wide(vor.polygons.ring(i)[k], vor.pq[i][0], vor.pq[i][1])) return false;
-    return true;
-  }
-
-  bool edge(const EdgeOrigin& o) const {
-    std::array<std::uint32_t, 2> ends;
-    std::array<std::uint32_t, 3> t;
-    if (o.segment) {
-      ends = vor.segments[o.index].v;
-      t = vor.segments[o.index].triangle;
-    } else {
-      ends = vor.polygons.side(o.index, o.side);
-      t = {vor.pq[o.index][0], vor.pq[o.index][1], vor.apex[vor.polygons.offset[o.index] + o.side]};
-    }
-    if (!separation.apart(t[0], t[1]) && !separation.apart(t[1], t[2]) && !separation.apart(t[2], t[0])) return false;
-    for (std::uint32_t x : ends)
-      if (!angle.wide(x, t[0], t[1]) && !angle.wide(x, t[1], t[2]) && !angle.wide(x, t[2], t[0])) return false;
-    return true;
-  }
-};
 
 PrunedComplex prune(const InnerVoronoi& vor, const KeepTests& keep) {
   PolygonalComplex complex;
@@ -152,6 +55,42 @@ AxisCells axis_cells(const InnerVoronoi& vor, const PrunedComplex& pruned) {
   }
   for (const auto& e : pruned.bare_edges) out.segments.push_back({out.vertex_id[e[0]], out.vertex_id[e[1]]});
   return out;
+}
+
+// The cells without the vertices `drop` marks (whole components: no kept cell has a
+// dropped and a kept vertex), ids compacted again.
+void drop_vertices(const std::vector<bool>& drop, AxisCells* cells) {
+  AxisCells out;
+  std::vector<std::uint32_t> id(cells->voronoi_vertex.size(), UINT32_MAX);
+  out.vertex_id.assign(cells->vertex_id.size(), UINT32_MAX);
+  for (std::uint32_t v = 0; v < cells->voronoi_vertex.size(); ++v)
+    if (!drop[v]) {
+      id[v] = static_cast<std::uint32_t>(out.voronoi_vertex.size());
+      out.vertex_id[cells->voronoi_vertex[v]] = id[v];
+      out.voronoi_vertex.push_back(cells->voronoi_vertex[v]);
+    }
+  for (std::size_t i = 0; i < cells->rings.size(); ++i) {
+    if (drop[cells->rings.ring(i)[0]]) continue;
+    out.polygons.push_back(cells->polygons[i]);
+    for (std::uint32_t k = 0; k < cells->rings.ring_size(i); ++k) out.rings.vertex.push_back(id[cells->rings.ring(i)[k]]);
+    out.rings.close();
+  }
+  for (const auto& e : cells->segments)
+    if (!drop[e[0]]) out.segments.push_back({id[e[0]], id[e[1]]});
+  *cells = std::move(out);
+}
+
+// The resolution rule (axis_resolution.h), in a round whose Betti numbers differ from the
+// solid's: its components made of unresolved vertices only are dropped and the Betti
+// numbers computed again. Returns how many were dropped.
+std::size_t drop_unresolved(const ResolutionTest& resolution, AxisCells* cells, BettiNumbers* betti) {
+  const UnresolvedComponents unresolved = unresolved_components(
+      cells->voronoi_vertex.size(), cells->rings, cells->segments,
+      [&](std::uint32_t v) { return resolution.unresolved(cells->voronoi_vertex[v]); });
+  if (unresolved.components == 0) return 0;
+  drop_vertices(unresolved.vertex_dropped, cells);
+  *betti = polygonal_betti_numbers(cells->voronoi_vertex.size(), cells->segments, cells->rings);
+  return unresolved.components;
 }
 
 // Exact coordinates and R^2 of the kept vertices; border rules on the polygons' free sides.
@@ -405,11 +344,176 @@ std::size_t refine_thin(const InnerVoronoi& vor, const KeepTests& keep, const Me
   return coarse;
 }
 
-// The accepted round: its Voronoi complex and kept cells, assembled once at the end.
+// The next spacing by the thickness rule for an accepted round's Voronoi complex.
+std::size_t thickness_spacing(const InnerVoronoi& vor, const MeshAxisOptions& options, std::vector<double>* spacing) {
+  const AngleTest angle(vor, options.angle_degrees);
+  const std::vector<double> density = sample_spacing(vor.samples, *spacing);
+  const SeparationTest separation(vor, density, options.separation);
+  return refine_thin(vor, KeepTests{vor, angle, separation}, options, spacing);
+}
+
+// How far Betti numbers are from the solid's: the sum of the differences.
+long discrepancy(const BettiNumbers& a, const BettiNumbers& b) {
+  return std::labs(a.b0 - b.b0) + std::labs(a.b1 - b.b1) + std::labs(a.b2 - b.b2);
+}
+
+// An accepted round, or a candidate of the resolution rule: its Voronoi complex, kept
+// cells and spacing, assembled once at the end.
 struct AcceptedAxis {
   std::size_t round = 0;
   InnerVoronoi vor;
   AxisCells cells;
+  std::vector<double> spacing;
+};
+
+// The rounds of mesh_medial_axis (mesh_axis.h, steps 2-6, and the resolution rule).
+class Rounds {
+ public:
+  Rounds(const TriangleMesh3& mesh, const MeshAxisOptions& options, MeshAxis* out)
+      : mesh_(mesh), options_(options), out_(*out), solid_(mesh) {}
+
+  AcceptedAxis run() {
+    std::vector<double> spacing(mesh_.triangles.size(), mean_edge_length(mesh_) / options_.samples_per_edge);
+    for (int round = 0;; ++round) {
+      MeshAxisRound r;
+      r.spacing = *std::min_element(spacing.begin(), spacing.end());
+      r.max_spacing = *std::max_element(spacing.begin(), spacing.end());
+      double t = cpu_seconds();
+      SurfaceSamples samples = sample_surface(mesh_, spacing);
+      r.samples = samples.lattice.size();
+      if (r.samples > options_.max_samples) {
+        if (accepted_) break;  // thickness refinement only: the accepted axis stands
+        if (candidate_ && accept_candidate(round, &spacing)) continue;
+        if (accepted_) break;
+        throw_over_limit(r.samples);
+      }
+      r.sample_seconds = cpu_seconds_since(t);
+      // A thickness round that adds under min_thickness_growth samples refines a handful of triangles (at
+      // the ends of sheets) for the cost of a whole round: the accepted axis stands.
+      if (accepted_ && static_cast<double>(r.samples) <
+                           (1 + options_.min_thickness_growth) * static_cast<double>(out_.rounds[accepted_->round].samples))
+        break;
+      InnerVoronoi vor = inner_voronoi(std::move(samples), solid_);
+      std::optional<AxisCells> resolved;
+      AxisCells cells = axis_of_round(vor, spacing, &r, &resolved);
+      if (r.betti == out_.solid.betti) {
+        t = cpu_seconds();
+        std::vector<double> next = spacing;
+        r.coarse_triangles = thickness_spacing(vor, options_, &next);
+        r.refine_seconds = cpu_seconds_since(t);
+        out_.rounds.push_back(r);
+        accepted_ = AcceptedAxis{out_.rounds.size() - 1, std::move(vor), std::move(cells), spacing};
+        if (r.coarse_triangles == 0 || round >= options_.max_refinements) break;
+        spacing = std::move(next);
+        continue;
+      }
+      out_.rounds.push_back(r);
+      // A thickness round whose sampling broke the topology (femur's thin features) would
+      // need Betti refinements of the whole sample (rounds of 10^5-10^6 samples): the
+      // accepted axis stands.
+      if (accepted_) break;
+      if (resolved) candidate_ = AcceptedAxis{out_.rounds.size() - 1, std::move(vor), std::move(*resolved), spacing};
+      const InnerVoronoi& round_vor = resolved ? candidate_->vor : vor;
+      const long off = discrepancy(r.betti, out_.solid.betti);
+      const bool stalled = off >= last_discrepancy_;
+      last_discrepancy_ = off;
+      if (candidate_ && (stalled || round >= options_.max_refinements)) {
+        if (accept_candidate(round, &spacing)) continue;
+        break;
+      }
+      if (round >= options_.max_refinements) {
+        throw MeshAxisTopologyError(mesh_.source + ": the axis has Betti numbers " + betti_text(r.betti) +
+                                    ", the solid " + betti_text(out_.solid.betti) + ", after " + std::to_string(round) +
+                                    " refinements (" + std::to_string(r.samples) +
+                                    " samples); no axis is returned. Try a larger --samples");
+      }
+      t = cpu_seconds();
+      refine(round_vor, options_, &spacing);
+      out_.rounds.back().refine_seconds = cpu_seconds_since(t);
+    }
+    out_.exact_locator_tests = solid_.stats().exact_tests;
+    return std::move(*accepted_);
+  }
+
+ private:
+  // Steps 3-5 for one round: V_in, the pruned axis, its Betti numbers; when they are not
+  // the solid's, also without the unresolved components: those cells are the round's
+  // axis once the resolution rule applies, else `resolved` when their Betti numbers are
+  // the solid's (a candidate).
+  AxisCells axis_of_round(const InnerVoronoi& vor, const std::vector<double>& spacing, MeshAxisRound* r,
+                          std::optional<AxisCells>* resolved) {
+    r->tetrahedra = vor.tetrahedra;
+    r->cells = vor.cells;
+    r->inner_cells = vor.vertices.size();
+    r->interior_samples = vor.interior_samples;
+    r->polygons = vor.polygons.size();
+    r->segments = vor.segments.size();
+    r->delaunay_seconds = vor.delaunay_seconds;
+    r->classify_seconds = vor.classify_seconds;
+    r->extract_seconds = vor.extract_seconds;
+    double t = cpu_seconds();
+    const AngleTest angle(vor, options_.angle_degrees);
+    const std::vector<double> density = sample_spacing(vor.samples, spacing);
+    const SeparationTest separation(vor, density, options_.separation);
+    AxisCells cells = axis_cells(vor, prune(vor, KeepTests{vor, angle, separation}));
+    r->kept_polygons = cells.polygons.size();
+    r->kept_segments = cells.segments.size();
+    r->prune_seconds = cpu_seconds_since(t);
+    t = cpu_seconds();
+    r->betti = r->all_components_betti = polygonal_betti_numbers(cells.voronoi_vertex.size(), cells.segments, cells.rings);
+    if (r->betti != out_.solid.betti && options_.resolution_rule) {
+      AxisCells resolved_cells = cells;
+      BettiNumbers betti = r->betti;
+      r->unresolved_components = drop_unresolved(ResolutionTest(vor, density, options_.separation), &resolved_cells, &betti);
+      if (resolving_) {
+        cells = std::move(resolved_cells);
+        r->betti = betti;
+        r->resolution_rule = true;
+      } else if (betti == out_.solid.betti) {
+        *resolved = std::move(resolved_cells);
+      }
+    }
+    r->betti_seconds = cpu_seconds_since(t);
+    return cells;
+  }
+
+  // The resolution rule takes over: the last candidate becomes the accepted axis (its
+  // Betti numbers are those without its unresolved components) and the thickness rounds
+  // continue from it, every later round dropping its unresolved components too. Returns
+  // whether a thickness round follows.
+  bool accept_candidate(int round, std::vector<double>* spacing) {
+    resolving_ = true;
+    accepted_ = std::move(*candidate_);
+    candidate_.reset();
+    MeshAxisRound& r = out_.rounds[accepted_->round];
+    r.betti = out_.solid.betti;
+    r.resolution_rule = true;
+    const double t = cpu_seconds();
+    *spacing = accepted_->spacing;
+    r.coarse_triangles = thickness_spacing(accepted_->vor, options_, spacing);
+    r.refine_seconds += cpu_seconds_since(t);
+    return r.coarse_triangles > 0 && round < options_.max_refinements;
+  }
+
+  [[noreturn]] void throw_over_limit(std::size_t samples) const {
+    std::string history;
+    for (const MeshAxisRound& done : out_.rounds)
+      history += (history.empty() ? "" : ", ") + std::to_string(done.samples) + " samples (Betti " + betti_text(done.betti) +
+                 (done.unresolved_components > 0 ? ", " + std::to_string(done.unresolved_components) + " components below the resolution"
+                                                 : "") + ")";
+    throw MeshAxisTopologyError(mesh_.source + ": the next round needs " + std::to_string(samples) +
+                                " samples, over the limit of " + std::to_string(options_.max_samples) +
+                                " (medial3d --max-samples); the rounds so far: " + history + "; the solid's Betti numbers are " +
+                                betti_text(out_.solid.betti) + "; no axis is returned");
+  }
+
+  const TriangleMesh3& mesh_;
+  const MeshAxisOptions& options_;
+  MeshAxis& out_;
+  const SolidLocator solid_;
+  std::optional<AcceptedAxis> accepted_, candidate_;
+  bool resolving_ = false;                            // the resolution rule applies to every round
+  long last_discrepancy_ = std::numeric_limits<long>::max();  // of the last Betti round
 };
 
 }  // namespace
@@ -420,88 +524,14 @@ MeshAxis mesh_medial_axis(const TriangleMesh3& mesh, const MeshAxisOptions& opti
   require_solid(mesh);  // with the defects and the --repair hint when it refuses
   MeshAxis out;
   out.solid = solid_topology(mesh);
-  const SolidLocator solid(mesh);
+  Rounds rounds(mesh, options, &out);
   out.check_seconds = cpu_seconds_since(start);
-  std::vector<double> spacing(mesh.triangles.size(), mean_edge_length(mesh) / options.samples_per_edge);
-  std::optional<AcceptedAxis> accepted;
-  for (int round = 0;; ++round) {
-    MeshAxisRound r;
-    r.spacing = *std::min_element(spacing.begin(), spacing.end());
-    r.max_spacing = *std::max_element(spacing.begin(), spacing.end());
-    double t = cpu_seconds();
-    SurfaceSamples samples = sample_surface(mesh, spacing);
-    r.samples = samples.lattice.size();
-    if (r.samples > options.max_samples) {
-      if (accepted) break;  // thickness refinement only: the accepted axis stands
-      std::string history;
-      for (const MeshAxisRound& done : out.rounds)
-        history += (history.empty() ? "" : ", ") + std::to_string(done.samples) + " samples (Betti " + betti_text(done.betti) + ")";
-      throw MeshAxisTopologyError(mesh.source + ": the next round needs " + std::to_string(r.samples) +
-                                  " samples, over the limit of " + std::to_string(options.max_samples) +
-                                  " (medial3d --max-samples); the rounds so far: " + history + "; the solid's Betti numbers are " +
-                                  betti_text(out.solid.betti) + "; no axis is returned");
-    }
-    r.sample_seconds = cpu_seconds_since(t);
-    // A thickness round that adds under min_thickness_growth samples refines a handful of triangles (at
-    // the ends of sheets) for the cost of a whole round: the accepted axis stands.
-    if (accepted && out.rounds.back().betti == out.solid.betti &&
-        static_cast<double>(r.samples) < (1 + options.min_thickness_growth) * static_cast<double>(out.rounds.back().samples))
-      break;
-    InnerVoronoi vor = inner_voronoi(std::move(samples), solid);
-    r.tetrahedra = vor.tetrahedra;
-    r.cells = vor.cells;
-    r.inner_cells = vor.vertices.size();
-    r.interior_samples = vor.interior_samples;
-    r.polygons = vor.polygons.size();
-    r.segments = vor.segments.size();
-    r.delaunay_seconds = vor.delaunay_seconds;
-    r.classify_seconds = vor.classify_seconds;
-    r.extract_seconds = vor.extract_seconds;
-    t = cpu_seconds();
-    const AngleTest angle(vor, options.angle_degrees);
-    const SeparationTest separation(vor, spacing, options.separation);
-    const KeepTests keep{vor, angle, separation};
-    const PrunedComplex pruned = prune(vor, keep);
-    AxisCells cells = axis_cells(vor, pruned);
-    r.kept_polygons = cells.polygons.size();
-    r.kept_segments = cells.segments.size();
-    r.prune_seconds = cpu_seconds_since(t);
-    t = cpu_seconds();
-    r.betti = polygonal_betti_numbers(cells.voronoi_vertex.size(), cells.segments, cells.rings);
-    r.betti_seconds = cpu_seconds_since(t);
-    const bool right = r.betti == out.solid.betti;
-    if (right) {
-      t = cpu_seconds();
-      std::vector<double> next = spacing;
-      r.coarse_triangles = refine_thin(vor, keep, options, &next);
-      r.refine_seconds = cpu_seconds_since(t);
-      out.rounds.push_back(r);
-      accepted = AcceptedAxis{out.rounds.size() - 1, std::move(vor), std::move(cells)};
-      if (r.coarse_triangles == 0 || round >= options.max_refinements) break;
-      spacing = std::move(next);
-      continue;
-    }
-    out.rounds.push_back(r);
-    // A thickness round whose sampling broke the topology (femur's thin features) would
-    // need Betti refinements of the whole sample (rounds of 10^5-10^6 samples): the
-    // accepted axis stands.
-    if (accepted) break;
-    if (round >= options.max_refinements) {
-      throw MeshAxisTopologyError(mesh.source + ": the axis has Betti numbers " + betti_text(r.betti) +
-                                  ", the solid " + betti_text(out.solid.betti) + ", after " + std::to_string(round) +
-                                  " refinements (" + std::to_string(r.samples) +
-                                  " samples); no axis is returned. Try a larger --samples");
-    }
-    t = cpu_seconds();
-    refine(vor, options, &spacing);
-    out.rounds.back().refine_seconds = cpu_seconds_since(t);
-  }
+  AcceptedAxis accepted = rounds.run();
   const double t = cpu_seconds();
-  out.axis_round = accepted->round;
-  out.complex = assemble(accepted->vor, accepted->cells, mesh.source);
-  out.samples = std::move(accepted->vor.samples);
+  out.axis_round = accepted.round;
+  out.complex = assemble(accepted.vor, accepted.cells, mesh.source);
+  out.samples = std::move(accepted.vor.samples);
   out.axis_betti = out.rounds[out.axis_round].betti;
-  out.exact_locator_tests = solid.stats().exact_tests;
   out.assemble_seconds = cpu_seconds_since(t);
   out.total_seconds = cpu_seconds_since(start);
   return out;
@@ -524,6 +554,9 @@ nlohmann::json mesh_axis_json(const MeshAxis& a) {
                       {"kept_segments", r.kept_segments},
                       {"coarse_triangles", r.coarse_triangles},
                       {"betti", betti(r.betti)},
+                      {"all_components_betti", betti(r.all_components_betti)},
+                      {"unresolved_components", r.unresolved_components},
+                      {"resolution_rule", r.resolution_rule},
                       {"seconds",
                        {{"samples", r.sample_seconds},
                         {"delaunay", r.delaunay_seconds},
@@ -539,6 +572,8 @@ nlohmann::json mesh_axis_json(const MeshAxis& a) {
           {"axis_betti", betti(a.axis_betti)},
           {"refinements", a.refinements()},
           {"axis_round", a.axis_round},
+          {"resolution_rule", a.rounds[a.axis_round].resolution_rule},
+          {"dropped_components", a.rounds[a.axis_round].resolution_rule ? a.rounds[a.axis_round].unresolved_components : 0},
           {"shells", shells},
           {"rounds", rounds},
           {"exact_locator_tests", a.exact_locator_tests},

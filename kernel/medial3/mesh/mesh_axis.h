@@ -14,8 +14,8 @@
 //     2 (1 - cos theta) taken as the rational value of its double;
 //  5. its Betti numbers by exact simplicial homology (simplicial_homology.h) on the
 //     triangulated axis. When they differ from S's, h is halved and steps 2-5 repeat, at
-//     most max_refinements times; then MeshAxisTopologyError says what was reached. A
-//     wrong axis is never returned.
+//     most max_refinements times; then, unless step 7 accepts a round, MeshAxisTopologyError
+//     says what was reached. A wrong axis is never returned.
 //  6. the thickness rule: the separation test (|p - q| >= lambda h) removes every face of a
 //     part thinner than about lambda h / 2, so a coarse sampling of a thin part (a tripod's
 //     arm, a cross's bar) prunes the part away and leaves the right Betti numbers on a
@@ -35,6 +35,18 @@
 //     band along convex edges and corners (within about lambda h / sin(alpha / 2) of them)
 //     is missing; tests/test_builders3_mesh_axis_convex.cpp checks this against the exact
 //     convex axis (Hausdorff <= 2 lambda h on the cube, octahedron and random hulls).
+//  7. the resolution rule (axis_resolution.h): a component of the pruned axis whose every
+//     vertex x has R(x) < (lambda / 2) h (h the spacing of its samples) lies within that
+//     distance of the surface, where the samples cannot certify depth; along a sharp wedge
+//     (a filled hole meeting a thin cap, an alpha wrap's crease, a thin lens) such
+//     components multiply as h shrinks, so the Betti rounds diverge. In a round with the
+//     wrong Betti numbers they are counted, and the round is a candidate when the axis
+//     without them has the solid's Betti numbers. The last candidate is accepted (its
+//     unresolved components dropped) when the rounds show they do not converge: a Betti
+//     round no closer to the solid's Betti numbers than the one before (the sum of the
+//     differences), or the next round over max_samples or max_refinements. From then on
+//     every round drops its unresolved components, the thickness rounds included. A
+//     refinement that converges without it is run as before, so its axis is unchanged.
 // Output: a RawComplex with exact rational vertices (the circumcentres, from the double
 // samples; distinct because equal circumcentres are one Delaunay cell), exact R^2 (the
 // squared circumradius), the Voronoi faces fanned into triangles (they are convex, and
@@ -82,6 +94,7 @@ struct MeshAxisOptions {
                                       // with every round's samples and Betti numbers and the
                                       // option's name (medial3d --max-samples)
   double min_thickness_growth = 0.10;  // a thickness round adding fewer samples (a fraction) is not run
+  bool resolution_rule = true;         // step 7 (false: diverging rounds end in MeshAxisTopologyError)
 };
 
 struct MeshAxisRound {
@@ -90,7 +103,11 @@ struct MeshAxisRound {
   std::size_t interior_samples = 0;  // samples whose Voronoi cell is inside (inner_voronoi.h)
   std::size_t polygons = 0, segments = 0, kept_polygons = 0, kept_segments = 0;
   std::size_t coarse_triangles = 0;  // too coarse for the thickness rule (rounds with the right Betti numbers)
-  BettiNumbers betti;
+  BettiNumbers betti;                 // of the round's axis (without its unresolved components when resolution_rule)
+  BettiNumbers all_components_betti;  // of every component of the pruned axis
+  std::size_t unresolved_components = 0;  // below the sampling's resolution (axis_resolution.h; counted when
+                                          // all_components_betti is not the solid's)
+  bool resolution_rule = false;           // the round's axis is without them (step 7)
   double sample_seconds = 0, delaunay_seconds = 0, classify_seconds = 0, extract_seconds = 0, prune_seconds = 0,
          betti_seconds = 0, refine_seconds = 0;  // refine: the next spacing (thickness or Betti rule)
 };
