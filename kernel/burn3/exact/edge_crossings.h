@@ -60,7 +60,9 @@ struct EdgeCrossings {
   std::uint32_t boxes = 0;      // boxes examined (cost)
 };
 
-EdgeCrossings isolate_crossings(const Unfolding& u, const WindowStore& s, Certifier& cert, std::uint32_t edge,
-                                std::uint32_t wa, std::uint32_t wb, const mpq_class& lo, const mpq_class& hi);
+class EdgeFronts;
+EdgeCrossings isolate_crossings(const Unfolding& u, const WindowStore& s, Certifier& cert, EdgeFronts& fronts,
+                                std::uint32_t edge, std::uint32_t wa, std::uint32_t wb, const mpq_class& lo,
+                                const mpq_class& hi);
 
 }  // namespace grassfire
