@@ -68,8 +68,8 @@ int corner_side(const OnLine& o, double a, double b) {
 }
 
 // f = time_a - time_b along E over boxes of doubles (exact rationals), from the fronts'
-// closed forms (edge_fronts.h): the double enclosures first, then Arb at 128 bits and at
-// max_bits, then the staged comparison at the exact point.
+// closed forms (edge_fronts.h): the double enclosures first, then Arb at 128 bits (boxes:
+// and at max_bits), then (signs at points) the staged comparison at the exact point.
 struct Difference {
   const Unfolding& u;
   Certifier& cert;
@@ -87,18 +87,18 @@ struct Difference {
   const FrontCoefficients<Ball>& ball_b(int level) { return fronts.ball(cert, wb, edge, level); }
   long bits(int level) const { return level == 0 ? 128 : cert.max_bits(); }
   int double_sign(double q) const { return certified_sign(value(Interval(q))); }
-  int arb_sign(double q, int level) {
-    BallPrecision guard(bits(level));
+  int arb_sign(double q) {  // at 128 bits
+    BallPrecision guard(bits(0));
     const Ball x(q);
-    return (front_time(ball_a(level), x) - front_time(ball_b(level), x)).sign();
+    return (front_time(ball_a(0), x) - front_time(ball_b(0), x)).sign();
   }
   // The certified sign of f at q (kUndecided: no stage settled it at max_bits).
   int sign(double q) {
     for (const auto& [x, g] : known)
       if (x == q) return g;
     int g = double_sign(q);
-    for (int level = 0; level < 2 && g != 1 && g != -1; ++level) g = arb_sign(q, level);
-    if (g != 1 && g != -1) {  // structural and exact stages: ties are common here
+    if (g != 1 && g != -1) g = arb_sign(q);
+    if (g != 1 && g != -1) {  // structural and exact stages, Arb to max_bits: ties are common here
       const mpq_class l(q);
       const ExactPoint3 p = edge_point_at(u.complex(), edge, l);
       g = cert.compare_times(wa, Target{kNoIndex, &p, 0, edge, &l}, wb, Target{kNoIndex, &p, 0, edge, &l}, false, true);
@@ -116,12 +116,12 @@ struct Difference {
     const Ball slope = front_rate(A, X) - front_rate(B, X);
     const int ms = slope.sign();
     if (ms == 1 || ms == -1) return 1;
-    const int naive = (front_time(A, X) - front_time(B, X)).sign();
-    if (naive == 1 || naive == -1) return -1;
+    const Ball naive = front_time(A, X) - front_time(B, X);
+    if (const int g = naive.sign(); g == 1 || g == -1) return -1;
     const Ball at_m = front_time(A, m) - front_time(B, m);
     const Interval c = (at_m + slope * (X - m)).to_interval(), pm = at_m.to_interval();
     if (certified_sign(c) == 1 || certified_sign(c) == -1) return -1;
-    const Interval v = (front_time(A, X) - front_time(B, X)).to_interval();
+    const Interval v = naive.to_interval();
     *bound = std::min(std::max(-c.lo, c.hi), std::max(-v.lo, v.hi));
     if (!(*bound >= 0)) *bound = std::numeric_limits<double>::infinity();
     *exhausted = 4 * (pm.hi - pm.lo) >= c.hi - c.lo;
@@ -138,7 +138,8 @@ struct Difference {
     return std::max(-d.lo, d.hi) <= kNegligible;
   }
   // The two fronts within 2^-64 of each other on the whole range [lo, hi], from their
-  // coefficients (edge_fronts.h front_difference_bound, at 128 bits, else max_bits): an
+  // coefficients (edge_fronts.h front_difference_bound, at 128 bits, else max_bits), else
+  // from Arb's centred form over the range (Certifier::edge_difference_bound): an
   // order taken anywhere in it moves the (k-1)-th arrival by at most that (order
   // statistics are 1-Lipschitz in the sup norm), far below the reported errors.
   bool tie_on_range(double lo, double hi) {
