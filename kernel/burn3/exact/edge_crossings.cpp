@@ -6,6 +6,7 @@
 #include <limits>
 #include <optional>
 
+#include "burn3/exact/edge_fronts.h"
 #include "burn3/exact/junction_kinks.h"
 #include "burn3/exact/junction_tangents.h"
 #include "geometry3/exact_predicates3.h"
@@ -56,80 +57,97 @@ OnLine on_line(const Unfolding& u, const WindowStore& s, std::uint32_t edge, std
   return o;
 }
 
-// A window's time and its derivative in l over a parameter box, by interval arithmetic on
-// the window's discs (window_values.h): rigorous enclosures.
-Interval box_time(const Window& w, const EdgeImage& e, const Interval& l) {
-  return window_time(w, IPoint{e.ax + l * e.dx, e.ay + l * e.dy});
-}
-// Which side of its corner the box [qa, qb] (enclosed by l) lies on: +1 after, -1 before,
-// 0 around it (or not on the line).
-int corner_side(const OnLine& o, const Interval& l, const mpq_class& qa, const mpq_class& qb) {
+// Which side of its corner the box [a, b] lies on: +1 after, -1 before, 0 around it (or
+// not on the line). The box's ends are exact doubles; a box ending at the corner is on
+// one side of it.
+int corner_side(const OnLine& o, double a, double b) {
   if (!o.on) return 0;
-  if (o.rational ? qa >= o.exact : l.lo > o.corner.hi) return 1;
-  if (o.rational ? qb <= o.exact : l.hi < o.corner.lo) return -1;
+  if (a >= o.corner.hi) return 1;
+  if (b <= o.corner.lo) return -1;
   return 0;
 }
 
-// The box is [qa, qb] (rationals), enclosed by l.
-Interval box_rate(const Window& w, const EdgeImage& e, const OnLine& o, const Interval& l, const mpq_class& qa,
-                  const mpq_class& qb) {
-  const Interval len = sqrt(square(e.dx) + square(e.dy));
-  if (o.on) {  // +-|E| on either side of the corner (and |rate| <= |E| everywhere)
-    const int side = corner_side(o, l, qa, qb);
-    if (side == 1) return len;
-    if (side == -1) return Interval(0.0) - len;
-    return {-len.hi, len.hi};
-  }
-  const IPoint s = ipoint(w.source);
-  if (w.plane()) return s.x * e.dx + s.y * e.dy;
-  const Interval x = e.ax + l * e.dx - s.x, y = e.ay + l * e.dy - s.y;
-  const Interval n2 = square(x) + square(y);
-  if (!(n2.lo > 0.0)) return {-len.hi, len.hi};
-  const Interval r = (x * e.dx + y * e.dy) / sqrt(n2);
-  return {std::max(r.lo, -len.hi), std::min(r.hi, len.hi)};
-}
-
+// f = time_a - time_b along E over boxes of doubles (exact rationals), from the fronts'
+// closed forms (edge_fronts.h): the double enclosures first, then Arb at 128 bits (boxes:
+// and at max_bits), then (signs at points) the staged comparison at the exact point.
 struct Difference {
   const Unfolding& u;
   Certifier& cert;
-  const Window &a, &b;
+  EdgeFronts& fronts;
   std::uint32_t edge, wa, wb;
-  EdgeImage ea, eb;
+  const EdgeFront &fa, &fb;
   OnLine oa, ob;
-  std::vector<mpq_class> zeros;  // distinct rationals where f = 0 is proved
-  std::vector<std::pair<mpq_class, int>> known;  // signs computed (a box's ends are asked twice)
+  std::vector<double> zeros;                    // distinct points where f = 0 is proved
+  std::vector<std::pair<double, int>> known;    // signs computed (a box's ends are asked twice)
+  std::optional<bool> tie;                      // tie_on_range(), once asked
 
-  Interval value(const Interval& l) const { return box_time(a, ea, l) - box_time(b, eb, l); }
-  Interval slope(const Interval& l, const mpq_class& qa, const mpq_class& qb) const {
-    return box_rate(a, ea, oa, l, qa, qb) - box_rate(b, eb, ob, l, qa, qb);
+  Interval value(const Interval& l) const { return front_time(fa.d, l) - front_time(fb.d, l); }
+  Interval slope(const Interval& l) const { return front_rate(fa.d, l) - front_rate(fb.d, l); }
+  const FrontCoefficients<Ball>& ball_a(int level) { return fronts.ball(cert, wa, edge, level); }
+  const FrontCoefficients<Ball>& ball_b(int level) { return fronts.ball(cert, wb, edge, level); }
+  long bits(int level) const { return level == 0 ? 128 : cert.max_bits(); }
+  int double_sign(double q) const { return certified_sign(value(Interval(q))); }
+  int arb_sign(double q) {  // at 128 bits
+    BallPrecision guard(bits(0));
+    const Ball x(q);
+    return (front_time(ball_a(0), x) - front_time(ball_b(0), x)).sign();
   }
-  int double_sign(const mpq_class& q) const { return certified_sign(value(enclose(q))); }
   // The certified sign of f at q (kUndecided: no stage settled it at max_bits).
-  int sign(const mpq_class& q) {
+  int sign(double q) {
     for (const auto& [x, g] : known)
       if (x == q) return g;
     int g = double_sign(q);
-    if (g == kUndecided) {  // the exact stage before Arb's higher levels: ties are common here
-      const ExactPoint3 p = edge_point_at(u.complex(), edge, q);
-      g = cert.compare_times(wa, Target{kNoIndex, &p, 0, edge, &q}, wb, Target{kNoIndex, &p, 0, edge, &q}, false, true);
+    if (g != 1 && g != -1) g = arb_sign(q);
+    if (g != 1 && g != -1) {  // structural and exact stages, Arb to max_bits: ties are common here
+      const mpq_class l(q);
+      const ExactPoint3 p = edge_point_at(u.complex(), edge, l);
+      g = cert.compare_times(wa, Target{kNoIndex, &p, 0, edge, &l}, wb, Target{kNoIndex, &p, 0, edge, &l}, false, true);
     }
     if (g == 0) zeros.push_back(q);
     known.emplace_back(q, g);
     return g;
   }
-  // |f(x)| <= 2^-64, by Arb at max_bits: a tie no stage proves (the usual cause: one value
+  // The box [a, b] in Arb at `level`: -1 excluded (no root), 1 monotone, 0 neither;
+  // *exhausted: the point value's own width dominates (a finer box would not help).
+  int arb_box(double a, double b, int level, bool* exhausted, double* bound) {
+    BallPrecision guard(bits(level));
+    const FrontCoefficients<Ball>&A = ball_a(level), &B = ball_b(level);
+    const Ball X = hull(Ball(a), Ball(b)), m(0.5 * a + 0.5 * b);
+    const Ball slope = front_rate(A, X) - front_rate(B, X);
+    const int ms = slope.sign();
+    if (ms == 1 || ms == -1) return 1;
+    const Ball naive = front_time(A, X) - front_time(B, X);
+    if (const int g = naive.sign(); g == 1 || g == -1) return -1;
+    const Ball at_m = front_time(A, m) - front_time(B, m);
+    const Interval c = (at_m + slope * (X - m)).to_interval(), pm = at_m.to_interval();
+    if (certified_sign(c) == 1 || certified_sign(c) == -1) return -1;
+    const Interval v = naive.to_interval();
+    *bound = std::min(std::max(-c.lo, c.hi), std::max(-v.lo, v.hi));
+    if (!(*bound >= 0)) *bound = std::numeric_limits<double>::infinity();
+    *exhausted = 4 * (pm.hi - pm.lo) >= c.hi - c.lo;
+    return 0;
+  }
+  // |f(q)| <= 2^-64, by Arb at max_bits: a tie no stage proves (the usual cause: one value
   // reached through two expressions). Where f is monotone with |f'| >= 2^-40, a root near
   // such a point lies within 2^-24 ulps-of-one of it, and between it and the point the two
   // times differ by at most 2^-64: an order taken there moves BT by at most that, far below
   // the engine's reported errors.
-  bool negligible(const Target& x) {
-    BallPrecision guard(cert.max_bits());
-    const Interval d = (cert.time_ball(wa, x) - cert.time_ball(wb, x)).to_interval();
-    return std::max(-d.lo, d.hi) <= 0x1p-64;
+  bool negligible_at(double q) {
+    BallPrecision guard(bits(1));
+    const Interval d = (front_time(ball_a(1), Ball(q)) - front_time(ball_b(1), Ball(q))).to_interval();
+    return std::max(-d.lo, d.hi) <= kNegligible;
   }
-  bool negligible_at(const mpq_class& q) {
-    const ExactPoint3 p = edge_point_at(u.complex(), edge, q);
-    return negligible(Target{kNoIndex, &p, 0, edge, &q});
+  // The two fronts within 2^-64 of each other on the whole range [lo, hi], from their
+  // coefficients (edge_fronts.h front_difference_bound, at 128 bits, else max_bits), else
+  // from Arb's centred form over the range (Certifier::edge_difference_bound): an
+  // order taken anywhere in it moves the (k-1)-th arrival by at most that (order
+  // statistics are 1-Lipschitz in the sup norm), far below the reported errors.
+  bool tie_on_range(double lo, double hi) {
+    if (!tie)
+      tie = front_difference_bound(ball_a(0), ball_b(0), lo, hi) <= kNegligible ||
+            front_difference_bound(ball_a(1), ball_b(1), lo, hi) <= kNegligible ||
+            cert.edge_difference_bound(wa, wb, edge, mpq_class(lo), mpq_class(hi), cert.max_bits()) <= kNegligible;
+    return *tie;
   }
 };
 
@@ -159,11 +177,11 @@ bool decided(int s) { return s != kUndecided; }
 // (a tangency or a spurious root of the squaring has equal signs). Returns false where the
 // candidates cannot be placed (overlapping enclosures, a candidate within an ulp of an end):
 // the subdivision decides then.
-bool exact_isolation(Difference& f, const std::vector<ExactSum>& candidates, const mpq_class& lo, const mpq_class& hi,
-                     std::vector<std::array<mpq_class, 2>>* found, std::uint32_t* undecided) {
-  auto order = [](const ExactSum& r, const mpq_class& q) {  // sign of r - q, kUndecided
-    if (r.constant_terms().empty()) return exact_sign(r - ExactSum::rational(q));
-    return certified_sign(r.approx() - enclose(q));
+bool exact_isolation(Difference& f, const std::vector<ExactSum>& candidates, double lo, double hi,
+                     std::vector<std::array<double, 2>>* found, std::uint32_t* undecided) {
+  auto order = [](const ExactSum& r, double q) {  // sign of r - q, kUndecided
+    if (r.constant_terms().empty()) return exact_sign(r - ExactSum::rational(mpq_class(q)));
+    return certified_sign(r.approx() - Interval(q));
   };
   std::vector<std::pair<Interval, const ExactSum*>> inside;
   for (const ExactSum& r : candidates) {
@@ -179,7 +197,7 @@ bool exact_isolation(Difference& f, const std::vector<ExactSum>& candidates, con
     inside.erase(inside.begin() + static_cast<std::ptrdiff_t>(i + 1)), --i;  // one root twice
   }
   for (const auto& [e, r] : inside) {
-    const mpq_class cl(std::nextafter(e.lo, -1.0)), cr(std::nextafter(e.hi, 2.0));
+    const double cl = std::nextafter(e.lo, -1.0), cr = std::nextafter(e.hi, 2.0);
     if (!(lo < cl && cr < hi)) return false;
     const int sl = f.sign(cl), sr = f.sign(cr);
     if (sl == 0 || sr == 0) return false;
@@ -191,18 +209,11 @@ bool exact_isolation(Difference& f, const std::vector<ExactSum>& candidates, con
 
 }  // namespace
 
-EdgeCrossings isolate_crossings(const Unfolding& u, const WindowStore& s, Certifier& cert, std::uint32_t edge,
-                                std::uint32_t wa, std::uint32_t wb, const mpq_class& lo, const mpq_class& hi) {
+EdgeCrossings isolate_crossings(const Unfolding& u, const WindowStore& s, Certifier& cert, EdgeFronts& fronts,
+                                std::uint32_t edge, std::uint32_t wa, std::uint32_t wb, const mpq_class& qlo,
+                                const mpq_class& qhi) {
   const Window &A = s.windows[wa], &B = s.windows[wb];
-  Difference f{u,  cert, A, B, edge, wa, wb, EdgeImage(u, A, edge), EdgeImage(u, B, edge),
-               on_line(u, s, edge, wa), on_line(u, s, edge, wb), {}, {}};
   EdgeCrossings out;
-  struct Box {
-    mpq_class a, b;
-    int depth;
-  };
-  std::vector<Box> todo;
-  std::vector<std::array<mpq_class, 2>> found;
   // One window thrown by the other's front (junction_tangents.h): b >= a on the whole
   // plane of their triangle, no sign change.
   if (A.triangle == B.triangle && (starts_on_front(u, s, cert, wa, wb) || starts_on_front(u, s, cert, wb, wa))) {
@@ -213,34 +224,43 @@ EdgeCrossings isolate_crossings(const Unfolding& u, const WindowStore& s, Certif
     out.equal = true;
     return out;
   }
-  // One function along the edge (the same source reached through different unfoldings,
-  // proved from exact data): no sign change anywhere.
-  if (identical_along_edge(u, s, cert, edge, wa, wb)) {
-    out.equal = true;
-    return out;
-  }
-  if (const std::optional<std::vector<ExactSum>> c = crossing_candidates(u, s, cert, edge, wa, wb)) {
-    std::uint32_t undecided = 0;
-    if (exact_isolation(f, *c, lo, hi, &found, &undecided)) {
-      out.undecided = undecided;
-      for (auto& [a, b] : found) out.roots.push_back({a, b, mpq_class((a + b) / 2).get_d()});
-      return out;
-    }
-    found.clear();
-  }
-  // The range cut at the corners of windows whose source lies on E's line: at a rational
-  // corner exactly; around an irrational one (an edge point known by its closed form or
-  // enclosure) at the rationals just outside its enclosure, the box between them decided by
-  // the sign of f at the corner itself (corner_box).
-  std::vector<mpq_class> cuts{lo, hi};
-  std::vector<std::array<mpq_class, 2>> corner_boxes;
+  // The range as doubles (the boxes' ends are doubles, exact rationals), outwards.
+  double lo = qlo.get_d(), hi = qhi.get_d();
+  if (mpq_class(lo) > qlo) lo = std::nextafter(lo, -1.0);
+  if (mpq_class(hi) < qhi) hi = std::nextafter(hi, 2.0);
+  const OnLine oa = on_line(u, s, edge, wa), ob = on_line(u, s, edge, wb);
+  Difference f{u, cert, fronts, edge, wa, wb, fronts.front(cert, wa, edge, oa.on, oa.corner),
+               fronts.front(cert, wb, edge, ob.on, ob.corner),
+               oa, ob, {}, {}, {}};
+  // One function along the edge (the same source reached through different unfoldings):
+  // proved from exact data where the coefficients say the fronts are within 2^-64 (asked
+  // only then: the exact data costs far more than the isolation).
+  auto tie = [&] {
+    if (!f.tie_on_range(lo, hi)) return false;
+    if (identical_along_edge(u, s, cert, edge, wa, wb)) out.equal = true;
+    else ++out.negligible;
+    return true;
+  };
+  struct Box {
+    double a, b;
+    int depth;
+    bool arb;  // the double enclosures no longer decide it
+  };
+  std::vector<Box> todo;
+  std::vector<std::array<double, 2>> found;
+  // The range cut at the corners of windows whose source lies on E's line: at a corner
+  // that is a double exactly; around any other (an edge point known by its closed form or
+  // enclosure, a rational between doubles) at the doubles just outside its enclosure, the
+  // box between them decided by the signs at its ends (corner_box).
+  std::vector<double> cuts{lo, hi};
+  std::vector<std::array<double, 2>> corner_boxes;
   for (const OnLine* o : {&f.oa, &f.ob}) {
-    if (!o->on || !(o->corner.hi > lo.get_d() && o->corner.lo < hi.get_d())) continue;
-    if (o->rational) {
-      if (lo < o->exact && o->exact < hi) cuts.push_back(o->exact);
+    if (!o->on || !(o->corner.hi > lo && o->corner.lo < hi)) continue;
+    if (o->corner.lo == o->corner.hi) {
+      cuts.push_back(o->corner.lo);
       continue;
     }
-    const mpq_class cl(std::nextafter(o->corner.lo, -1.0)), cr(std::nextafter(o->corner.hi, 2.0));
+    const double cl = std::nextafter(o->corner.lo, -1.0), cr = std::nextafter(o->corner.hi, 2.0);
     if (!(lo < cl && cr < hi)) {  // at the range's end: the whole range is decided around it
       ++out.undecided;
       continue;
@@ -262,25 +282,17 @@ EdgeCrossings isolate_crossings(const Unfolding& u, const WindowStore& s, Certif
       if (opposite(f.sign(cuts[i]), f.sign(cuts[i + 1]))) found.push_back({cuts[i], cuts[i + 1]});
       break;
     }
-    if (!corner) todo.push_back({cuts[i], cuts[i + 1], 0});
+    if (!corner) todo.push_back({cuts[i], cuts[i + 1], 0, false});
   }
   std::size_t near_ties = 0;
-  // The two fronts within 2^-64 of each other on the whole range (Arb at max_bits; asked
-  // once, when the subdivision first fails to settle a box): whichever order is taken
-  // anywhere in it, the (k-1)-th arrival moves by at most that (order statistics are
-  // 1-Lipschitz in the sup norm), far below the reported errors; no crossing is claimed.
-  std::optional<bool> tie_on_range;
-  auto negligible_range = [&] {
-    if (!tie_on_range) tie_on_range = cert.edge_difference_bound(wa, wb, edge, lo, hi, cert.max_bits()) <= kNegligible;
-    return *tie_on_range;
+  auto equal_fronts = [&] {  // f proved 0 at five points: one expression along the edge
+    out = EdgeCrossings{};
+    out.equal = true;
+    return out;
   };
   while (!todo.empty()) {
-    if (f.zeros.size() >= kEqualPoints) {  // one expression along the edge: no crossing
-      out.equal = true;
-      out.undecided = 0;
-      return out;
-    }
-    Box x = std::move(todo.back());
+    if (f.zeros.size() >= kEqualPoints) return equal_fronts();
+    const Box x = todo.back();
     todo.pop_back();
     ++out.boxes;
     auto monotone = [&](const Interval& slope) {  // at most one root: present iff the end signs differ
@@ -294,74 +306,83 @@ EdgeCrossings isolate_crossings(const Unfolding& u, const WindowStore& s, Certif
       if (!decided(sa) || !decided(sb)) ++out.undecided;
       else if (opposite(sa, sb)) found.push_back({x.a, x.b});
     };
-    const Interval L{enclose(x.a).lo, enclose(x.b).hi};
     // Both sources on E's line, the box on the same side of both corners: the slopes are
     // both +|E| or both -|E|, f is constant there (no sign change, whatever its sign).
-    if (const int side = corner_side(f.oa, L, x.a, x.b); side != 0 && side == corner_side(f.ob, L, x.a, x.b)) continue;
-    const Interval slope = f.slope(L, x.a, x.b);
-    if (const int m = certified_sign(slope); m == 1 || m == -1) {
-      monotone(slope);
-      continue;
-    }
-    const mpq_class mid = (x.a + x.b) / 2;
-    const Interval M = enclose(mid);
-    const bool bounded = std::isfinite(slope.lo) && std::isfinite(slope.hi);
-    const int naive = certified_sign(f.value(L));
-    if (naive == 1 || naive == -1) continue;  // excluded
-    if (bounded) {                            // the centred form, tighter on short boxes
-      const int c = certified_sign(f.value(M) + slope * (L - M));
-      if (c == 1 || c == -1) continue;
-    }
-    if (x.depth >= kMaxDepth || out.boxes > kNodeBudget) {
-      if (negligible_range()) {
-        ++out.negligible;
-        return out;
+    if (const int side = corner_side(f.oa, x.a, x.b); side != 0 && side == corner_side(f.ob, x.a, x.b)) continue;
+    const double mid = 0.5 * x.a + 0.5 * x.b;
+    bool exhausted = x.arb;
+    {
+      const Interval L(x.a, x.b), M(mid);
+      const Interval slope = f.slope(L);
+      if (const int m = certified_sign(slope); m == 1 || m == -1) {
+        monotone(slope);
+        continue;
       }
-      // Arb on the whole box: exclusion or monotonicity, else undecided.
-      int verdict = kUndecided;
+      if (const int naive = certified_sign(f.value(L)); naive == 1 || naive == -1) continue;  // excluded
+      const Interval at_m = f.value(M);
+      if (std::isfinite(slope.lo) && std::isfinite(slope.hi)) {  // the centred form, tighter on short boxes
+        const Interval c = at_m + slope * (L - M);
+        if (const int g = certified_sign(c); g == 1 || g == -1) continue;
+        exhausted = exhausted || 4 * (at_m.hi - at_m.lo) >= c.hi - c.lo;
+      }
+    }
+    const bool last = x.depth >= kMaxDepth || out.boxes > kNodeBudget || !(x.a < mid && mid < x.b);
+    if (exhausted || last) {  // Arb: at 128 bits, at max_bits where 128 are exhausted too
+      int verdict = 0;
+      bool deeper = false;
       double bound = std::numeric_limits<double>::infinity();  // |f| on the box, at the last level
-      for (long bits = 128; bits <= cert.max_bits() && verdict == kUndecided; bits *= 2) {
-        const auto g = cert.edge_difference_signs(wa, wb, edge, x.a, x.b, bits, &bound);
-        if (g[0] == 1 || g[0] == -1) verdict = 0;
-        else if (g[1] == 1 || g[1] == -1) verdict = 1;
+      for (int level = 0; level < 2 && verdict == 0; ++level) {
+        deeper = false;
+        verdict = f.arb_box(x.a, x.b, level, &deeper, &bound);
+        if (!deeper && !last) break;
       }
-      if (verdict == 1) monotone(Interval(0.0));
-      else if (verdict == kUndecided && bound <= kNegligible)
-        ++out.negligible;  // within 2^-64 on this box: either order moves A by at most that
-      else if (verdict == kUndecided) {
+      if (verdict == -1) continue;
+      if (verdict == 1) {
+        monotone(Interval(0.0));
+        continue;
+      }
+      if (last && bound <= kNegligible) {  // within 2^-64 on this box: either order moves A by at most that
+        ++out.negligible;
+        continue;
+      }
+      if (last) {
+        if (tie()) return out.equal ? equal_fronts() : out;
         ++out.undecided;
         if (opposite(f.sign(x.a), f.sign(x.b))) found.push_back({x.a, x.b});
+        continue;
       }
-      continue;
     }
     const int sm = f.sign(mid);
     if (sm == 0) found.push_back({mid, mid});  // undecided: the halves' tests count it if it matters
     // Signs no stage settles at three points (split points or the range's ends: ties no
     // stage proves, the fronts being one expression unproved): stop, one undecided
     // decision, rather than subdivide towards every point of the line.
-    if (sm == kUndecided && ++near_ties + (f.sign(lo) == kUndecided) + (f.sign(hi) == kUndecided) >= 3) {
-      if (negligible_range()) {
-        ++out.negligible;
-        return out;
-      }
+    if (sm == kUndecided && (tie() || ++near_ties + (f.sign(lo) == kUndecided) + (f.sign(hi) == kUndecided) >= 3)) {
+      if (out.equal) return equal_fronts();
+      if (out.negligible) return out;
       ++out.undecided;
       break;
     }
-    todo.push_back({mid, x.b, x.depth + 1});
-    todo.push_back({x.a, mid, x.depth + 1});
+    todo.push_back({mid, x.b, x.depth + 1, exhausted});
+    todo.push_back({x.a, mid, x.depth + 1, exhausted});
   }
-  if (f.zeros.size() >= kEqualPoints) {
-    out.equal = true;
-    out.undecided = 0;
-    return out;
-  }
+  if (f.zeros.size() >= kEqualPoints) return equal_fronts();
+  // What the subdivision left undecided, the exact path may settle (planar sheets with short
+  // rational data: every root of f among the roots of the squared polynomial).
+  if (out.undecided)
+    if (const std::optional<std::vector<ExactSum>> c = crossing_candidates(u, s, cert, edge, wa, wb)) {
+      std::uint32_t undecided = 0;
+      std::vector<std::array<double, 2>> exact;
+      if (exact_isolation(f, *c, lo, hi, &exact, &undecided)) found = std::move(exact), out.undecided = undecided;
+    }
   // Narrow each bracket while the double enclosures decide.
   for (auto& [a, b] : found) {
     if (a == b) continue;
     const int sa = f.double_sign(a);
     if (sa != 1 && sa != -1) continue;
     for (int i = 0; i < kNarrowSteps; ++i) {
-      const mpq_class mid = (a + b) / 2;
+      const double mid = 0.5 * a + 0.5 * b;
+      if (!(a < mid && mid < b)) break;
       const int sm = f.double_sign(mid);
       if (sm != 1 && sm != -1) break;
       (sm == sa ? a : b) = mid;
@@ -371,7 +392,7 @@ EdgeCrossings isolate_crossings(const Unfolding& u, const WindowStore& s, Certif
   for (auto& [a, b] : found) {
     // A proved zero at an end of the range is a record's end, not a crossing inside.
     if (a == b && (a == lo || a == hi)) continue;
-    out.roots.push_back({a, b, mpq_class((a + b) / 2).get_d()});
+    out.roots.push_back({mpq_class(a), mpq_class(b), 0.5 * a + 0.5 * b});
   }
   return out;
 }

@@ -154,7 +154,7 @@ void WindowPropagation::pair_new_records(std::uint32_t edge) {
       // is harmless; one inside must not be missed).
       const double mlo = std::max(0.0, lo - std::max(a.at_err[0], a.at_err[1]) - std::max(b.at_err[0], b.at_err[1]));
       const double mhi = std::min(1.0, hi + std::max(a.at_err[0], a.at_err[1]) + std::max(b.at_err[0], b.at_err[1]));
-      const EdgeCrossings c = isolate_crossings(u_, s_, cert_, edge, a.window, b.window, mpq_class(mlo), mpq_class(mhi));
+      const EdgeCrossings c = isolate_crossings(u_, s_, cert_, edge_fronts_, edge, a.window, b.window, mpq_class(mlo), mpq_class(mhi));
       stats_.crossing_boxes += c.boxes;
       cert_.counts.negligible_ties += c.negligible;
       if (c.undecided) ++stats_.uncertified_crossings, ++cert_.counts.uncertified;

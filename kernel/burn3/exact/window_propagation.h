@@ -42,6 +42,7 @@
 #include <queue>
 #include <vector>
 
+#include "burn3/exact/edge_fronts.h"
 #include "burn3/exact/engine_mutant.h"
 #include "burn3/exact/sector_geometry.h"
 #include "burn3/exact/window_certify.h"
@@ -290,6 +291,7 @@ class WindowPropagation {
   std::vector<std::uint32_t> junction_of_;   // edge -> index into junctions_, or kNoIndex
   std::vector<JunctionState> junctions_;
   std::vector<JunctionRecord> records_;
+  EdgeFronts edge_fronts_;                   // the records' closed forms along their edges (edge_crossings.h)
 };
 
 }  // namespace grassfire
