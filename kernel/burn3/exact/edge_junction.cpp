@@ -39,8 +39,9 @@
 // older record (equal times), so sources made on the edge never re-realise their own
 // pieces; the pieces' ends are edge points whose parameter is exact where a closed form is
 // found (junction_kinks.h) and a certified enclosure otherwise. What no stage settles is
-// counted `uncertified` (uncertified_crossings, uncertified_orders, uncertified_breaks),
-// never decided by a default.
+// counted `uncertified` (uncertified_crossings, uncertified_orders, uncertified_breaks:
+// also the order of two breakpoints whose enclosures overlap, break_order), never decided
+// by a default.
 // Complexity: per pass O(B R) certified comparisons for R records and B breakpoints
 // (B = O(R^2) crossings at worst; R is small: the windows of one triangle per side).
 #include <algorithm>
@@ -179,10 +180,50 @@ std::vector<WindowPropagation::Break> WindowPropagation::junction_breaks(std::ui
   pair_new_records(edge);
   for (const Crossing& c : junctions_[junction_of_[edge]].crossings)
     if (!s_.windows[records_[c.a].window].dead() && !s_.windows[records_[c.b].window].dead()) br.push_back(c.at);
-  // Equal parameters name one point: keep the smallest name (stable as records arrive).
   std::sort(br.begin(), br.end(), [](const Break& x, const Break& y) { return x.at < y.at || (x.at == y.at && x.id < y.id); });
+  // The double order is the true one where neighbours' certified enclosures are disjoint;
+  // elsewhere it is proved from the points themselves (break_order), or counted.
+  for (std::size_t i = 0; i + 1 < br.size(); ++i) break_order(edge, br[i], br[i + 1]);
+  // Equal parameters name one point: keep the smallest name (stable as records arrive).
   br.erase(std::unique(br.begin(), br.end(), [](const Break& x, const Break& y) { return x.at == y.at; }), br.end());
   return br;
+}
+
+// A breakpoint's certified enclosure from the double stage: an edge end exactly, a record's
+// end within its margin, a crossing inside its bracket.
+Interval WindowPropagation::break_enclosure(std::uint32_t edge, const Break& b) const {
+  const std::uint64_t kind = b.id >> 60;
+  if (kind == 0) return Interval(static_cast<double>(b.id & 1));
+  if (kind == (kRecordEnd >> 60)) {
+    const JunctionRecord& r = records_[(b.id >> 1) & 0x7fffffff];
+    const double e = r.at_err[b.id & 1];
+    return {round_down(b.at - e), round_up(b.at + e)};
+  }
+  for (const Crossing& c : junctions_[junction_of_[edge]].crossings)
+    if (c.at.id == b.id && c.bracketed)
+      return {std::nextafter(c.lo.get_d(), -kInf), std::nextafter(c.hi.get_d(), kInf)};
+  return {-kInf, kInf};
+}
+
+// Whether the breakpoints a <= b (by their doubles) are in that order, or one point: their
+// enclosures disjoint (the doubles lie inside them), else their edge points' certified
+// parameters (exact, a bracket, an enclosure: break_point) disjoint, or both exact and
+// compared exactly. What none proves is counted in `uncertified_breaks`, once per pair.
+void WindowPropagation::break_order(std::uint32_t edge, const Break& a, const Break& b) {
+  const Interval ia = break_enclosure(edge, a), ib = break_enclosure(edge, b);
+  if (ia.hi < ib.lo || (ia.hi == ib.lo && ia.lo == ia.hi && ib.lo == ib.hi)) return;
+  JunctionState& st = junctions_[junction_of_[edge]];
+  const std::pair<std::uint64_t, std::uint64_t> key{std::min(a.id, b.id), std::max(a.id, b.id)};
+  if (std::find(st.ordered.begin(), st.ordered.end(), key) != st.ordered.end()) return;
+  st.ordered.push_back(key);
+  const EdgePoint pa = s_.edge_points[break_point(edge, a)], pb = s_.edge_points[break_point(edge, b)];
+  mpq_class alo, ahi, blo, bhi;
+  if (cert_.edge_point_bounds(pa, &alo, &ahi) && cert_.edge_point_bounds(pb, &blo, &bhi) && (ahi < blo || bhi < alo)) {
+    if (bhi < alo) ++stats_.uncertified_breaks, ++cert_.counts.uncertified;  // proved the other way round
+    return;
+  }
+  if (pa.exact >= 0 && pb.exact >= 0 && exact_sign(s_.exact_times[pb.exact] - s_.exact_times[pa.exact]) >= 0) return;
+  ++stats_.uncertified_breaks, ++cert_.counts.uncertified;
 }
 
 // Whether record r covers the point x of parameter `at` (1, 0; kUndecided): the double range

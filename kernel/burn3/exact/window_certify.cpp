@@ -298,12 +298,14 @@ bool Certifier::edge_point_bounds(const EdgePoint& ep, mpq_class* lo, mpq_class*
   return true;
 }
 
-bool Certifier::same_expression(std::uint32_t w1, std::uint32_t w2, const Target& x) const {
+bool Certifier::same_expression(std::uint32_t w1, std::uint32_t w2, const Target& x) {
   const Window &a0 = s_.windows[w1], &b0 = s_.windows[w2];
-  if (a0.parent == kNoIndex && b0.parent == kNoIndex && same_point_source(a0.pseudo, b0.pseudo)) {
-    // Two first windows of one point S (closed in both triangles): at a point x of both
-    // closed triangles the time is sigma + |x - S| measured in 3D (a straight segment inside
-    // each triangle): a vertex of both, or a point of an edge of both.
+  const auto pa = point_fronts_.find(front_id(w1)), pb = point_fronts_.find(front_id(w2));
+  if (pa != point_fronts_.end() && pb != point_fronts_.end() && pa->second == pb->second) {
+    // Two windows whose fronts are one point S at its own place in their frames, with offsets
+    // proved equal (front_id; e.g. first windows of S, closed in both triangles): at a point x
+    // of both closed triangles the time is sigma + |x - S| measured in 3D (a straight segment
+    // inside each triangle): a vertex of both, or a point of an edge of both.
     const MedialComplex& mc = u_.complex();
     const ComplexTriangle &ta = mc.triangle(a0.triangle), &tb = mc.triangle(b0.triangle);
     if (!x.point) {
@@ -372,8 +374,10 @@ int Certifier::remember(const MemoKey& k, int outcome) {
 }
 
 // Mirrors same_expression: a window has its anchor's front; an anchor without a parent is
-// its pseudo-source (point kinds: one image per frame; plane waves: itself); an anchor with
-// one is the crossing (edge, triangle, parent's triangle) applied to its parent's front.
+// its pseudo-source (point kinds: one image per frame, named by the point and the offset's
+// expression id, so that two sources at one point with offsets proved equal are one front;
+// plane waves: itself); an anchor with one is the crossing (edge, triangle, parent's
+// triangle) applied to its parent's front.
 std::uint32_t Certifier::front_id(std::uint32_t w) {
   if (front_ids_.size() < s_.windows.size()) front_ids_.resize(s_.windows.size(), 0);
   std::vector<std::uint32_t> todo;  // anchors without an id, nearest first (iterative: long chains)
@@ -391,16 +395,67 @@ std::uint32_t Certifier::front_id(std::uint32_t w) {
     if (W.anchor != x) {
       id = front_ids_[W.anchor] - 1;
     } else if (W.parent == kNoIndex) {
-      const SourceOrigin o = s_.pseudo[W.pseudo].origin;
-      const bool point_kind = o == SourceOrigin::Vertex || o == SourceOrigin::GivenPoint || o == SourceOrigin::EdgePoint;
-      id = point_kind ? intern({tag(kRootFront, W.pseudo), u_.frame(W.triangle), 0}) : intern({tag(kPlaneRoot, x), 0, 0});
+      id = root_front(x);
     } else {
       const std::uint32_t parent = front_ids_[s_.windows[W.parent].anchor] - 1;
-      id = intern({tag(kCrossed, W.edge), std::uint64_t(W.triangle) << 32 | s_.windows[W.parent].triangle, parent});
+      const auto pf = point_fronts_.find(parent);
+      if (pf != point_fronts_.end() && point_on_edge(pf->second[0], W.edge)) {
+        // The crossing fixes its edge pointwise, so a point source on it keeps its place.
+        id = point_front(pf->second[0], u_.frame(W.triangle), pf->second[1]);
+      } else {
+        id = intern({tag(kCrossed, W.edge), std::uint64_t(W.triangle) << 32 | s_.windows[W.parent].triangle, parent});
+      }
     }
     front_ids_[x] = id + 1;
   }
   return front_ids_[w] - 1;
+}
+
+// A first window's front: sigma + |X - S| in its frame for a point S (a vertex, an edge
+// point, a caller's point; S lies in the frame's plane, so its image is S's coordinates
+// there), named by S (an edge point at an end of its edge is that vertex), the frame and
+// the offset's expression id; a plane wave by its window.
+std::uint32_t Certifier::root_front(std::uint32_t x) {
+  const Window& W = s_.windows[x];
+  const PseudoSource& ps = s_.pseudo[W.pseudo];
+  std::uint64_t where;
+  switch (ps.origin) {
+    case SourceOrigin::Vertex: where = ps.vertex; break;
+    case SourceOrigin::EdgePoint: where = canonical_point(ps.data | kEdgePointBound); break;
+    case SourceOrigin::GivenPoint: where = std::uint64_t(1) << 40 | ps.data; break;
+    default: return intern({tag(kPlaneRoot, x), 0, 0});
+  }
+  const std::uint64_t sigma = ps.time == kNoIndex ? 0 : std::uint64_t(expr_id(ps.time)) + 1;
+  return point_front(where, u_.frame(W.triangle), sigma);
+}
+
+std::uint32_t Certifier::point_front(std::uint64_t where, std::uint32_t frame, std::uint64_t sigma) {
+  const std::uint32_t id = intern({tag(kRootFront, where), frame, sigma});
+  point_fronts_.emplace(id, std::array<std::uint64_t, 2>{where, sigma});
+  return id;
+}
+
+// Whether the point p (a vertex, or an edge point with kEdgePointBound) lies on `edge`.
+bool Certifier::point_on_edge(std::uint64_t p, std::uint32_t edge) const {
+  if (p > 0xffffffffull) return false;  // a caller's point: not examined
+  const auto q = static_cast<std::uint32_t>(p);
+  if (is_edge_point(q)) return s_.edge_points[q & ~kEdgePointBound].edge == edge;
+  const auto& ev = u_.complex().edge(edge).v;
+  return ev[0] == q || ev[1] == q;
+}
+
+// An edge point whose parameter is exactly 0 or 1 is the edge's end vertex; any other
+// target names itself.
+std::uint32_t Certifier::canonical_point(std::uint32_t target) const {
+  if (!is_edge_point(target)) return target;
+  const EdgePoint& ep = s_.edge_points[target & ~kEdgePointBound];
+  if (ep.exact < 0) return target;
+  const ExactSum& l = s_.exact_times[ep.exact];
+  if (!l.sqrt_terms().empty() || !l.constant_terms().empty()) return target;
+  const auto& ev = u_.complex().edge(ep.edge).v;
+  if (l.rational_part() == 0) return ev[0];
+  if (l.rational_part() == 1) return ev[1];
+  return target;
 }
 
 std::uint32_t Certifier::expr_id(std::uint32_t i) {
@@ -409,9 +464,17 @@ std::uint32_t Certifier::expr_id(std::uint32_t i) {
   const TimeExpr& e = s_.times[i];
   std::uint32_t id;
   switch (e.kind) {
-    case TimeExpr::Kind::WindowAt: id = intern({tag(kWindowAt, front_id(e.a)), e.b, 0}); break;
+    case TimeExpr::Kind::WindowAt: {
+      const std::uint32_t p = canonical_point(e.b);
+      id = intern({tag(kWindowAt, front_id(e.a)), p, 0});
+      break;
+    }
     case TimeExpr::Kind::Plus: id = intern({tag(kPlus, expr_id(e.a)), e.b, 0}); break;
-    case TimeExpr::Kind::Min: id = intern({tag(kMin, expr_id(e.a)), expr_id(e.b), 0}); break;
+    case TimeExpr::Kind::Min: {
+      const std::uint32_t a = expr_id(e.a), b = expr_id(e.b);
+      id = a == b ? a : intern({tag(kMin, std::min(a, b)), std::max(a, b), 0});  // min(x, x) = x
+      break;
+    }
     default: id = intern({tag(kLeaf, i), 0, 0}); break;
   }
   expr_ids_[i] = id + 1;
@@ -845,7 +908,7 @@ int Certifier::compare_times(std::uint32_t w1, const Target& x1, std::uint32_t w
   const std::uint64_t where = x1.point ? x1.key : x1.vertex;
   const bool keyed = same_target && (x1.point ? x1.key != 0 : x1.vertex != kNoIndex);
   std::uint32_t fa = 0, fb = 0;
-  if (keyed) {
+  if (same_target) {  // one front (front_id): one function of the frame's points, one value
     fa = front_id(w1), fb = front_id(w2);
     if (fa == fb) {
       ++counts.structural_equal;
