@@ -123,6 +123,9 @@ class Certifier {
   // frame, as same_expression decides), and of a time expression (equal ids: one value).
   std::uint32_t front_id(std::uint32_t w);
   std::uint32_t expr_id(std::uint32_t expr);
+  // A pseudo-source's offset expression was replaced (an absorbed tie): the front and
+  // expression ids and the Arb chains, which name or hold offsets, are computed afresh.
+  void source_time_changed() { front_ids_.clear(), expr_ids_.clear(), chain_memo_.clear(); }
   // A WindowAt target as the point it is: an edge point at parameter exactly 0 or 1 is that
   // end vertex of its edge.
   std::uint32_t canonical_point(std::uint32_t target) const;

@@ -400,6 +400,7 @@ void WindowPropagation::vertex_arrival(std::uint32_t w, std::uint32_t v, std::ui
     PseudoSource& ps = s_.pseudo[sector_source_[sector]];
     if (c == kUndecided && ps.sigma.lo <= tv.lo) {
       ps.time = min_time(ps.time, e);
+      cert_.source_time_changed();
       ++stats_.ties_absorbed;
       return;
     }
