@@ -16,7 +16,8 @@
 //     (|x - S| = |x - p| + |p - S|: one value, even where p is known by a bracket only);
 //  3. exact: windows of a rational pseudo-source whose chain crosses only rational
 //     unfoldings (planar sheets, flat patches, cube-like meshes) are re-evaluated in
-//     rational local coordinates, times as ExactSum (exact sign, ties included);
+//     rational local coordinates, times as ExactSum (exact sign, ties included;
+//     window_exact.cpp);
 //  4. Arb: the chain is re-evaluated from the exact data (vertex coordinates, frames, the
 //     root) at 128, 256, ... bits up to max_bits; each level is a rigorous enclosure;
 //     Order: 1, 2, then Arb's first level (128 bits), then 3, then the rest of 4 (exact
