@@ -46,8 +46,6 @@
 // (B = O(R^2) crossings at worst; R is small: the windows of one triangle per side).
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
-#include <cstdlib>
 #include <functional>
 #include <optional>
 
@@ -173,52 +171,46 @@ void WindowPropagation::pair_new_records(std::uint32_t edge) {
 std::vector<WindowPropagation::Break> WindowPropagation::junction_breaks(std::uint32_t edge,
                                                                           const std::vector<std::uint32_t>& recs) {
   // Record ends at their double parameters (record_covers decides coverage near them by
-  // certified side tests); crossings at their certified brackets' midpoints.
-  std::vector<Break> br{{0.0, kEdgeEnd | 0}, {1.0, kEdgeEnd | 1}};
+  // certified side tests); crossings at their certified brackets' midpoints. Each with its
+  // certified enclosure from the double stage: an edge end exactly, a record's end within
+  // its margin, a crossing inside its bracket.
+  std::vector<std::pair<Break, Interval>> en{{{0.0, kEdgeEnd | 0}, Interval(0.0)}, {{1.0, kEdgeEnd | 1}, Interval(1.0)}};
   for (std::uint32_t r : recs)
-    for (int j = 0; j < 2; ++j)
-      if (records_[r].at[j] > 0.0 && records_[r].at[j] < 1.0)
-        br.push_back({records_[r].at[j], kRecordEnd | (std::uint64_t(r) << 1) | std::uint64_t(j)});
+    for (int j = 0; j < 2; ++j) {
+      const double at = records_[r].at[j], e = records_[r].at_err[j];
+      if (at > 0.0 && at < 1.0)
+        en.push_back({{at, kRecordEnd | (std::uint64_t(r) << 1) | std::uint64_t(j)}, {round_down(at - e), round_up(at + e)}});
+    }
   pair_new_records(edge);
   for (const Crossing& c : junctions_[junction_of_[edge]].crossings)
-    if (!s_.windows[records_[c.a].window].dead() && !s_.windows[records_[c.b].window].dead()) br.push_back(c.at);
-  std::sort(br.begin(), br.end(), [](const Break& x, const Break& y) { return x.at < y.at || (x.at == y.at && x.id < y.id); });
+    if (!s_.windows[records_[c.a].window].dead() && !s_.windows[records_[c.b].window].dead())
+      en.push_back({c.at, c.bracketed ? Interval{std::nextafter(c.lo.get_d(), -kInf), std::nextafter(c.hi.get_d(), kInf)}
+                                      : Interval{-kInf, kInf}});
+  std::sort(en.begin(), en.end(), [](const auto& x, const auto& y) {
+    return x.first.at < y.first.at || (x.first.at == y.first.at && x.first.id < y.first.id);
+  });
   // The double order is the true one where neighbours' certified enclosures are disjoint;
   // elsewhere it is proved from the points themselves (break_order), or counted.
-  for (std::size_t i = 0; i + 1 < br.size(); ++i) break_order(edge, br[i], br[i + 1]);
+  std::vector<Break> br;
+  for (std::size_t i = 0; i < en.size(); ++i) {
+    if (i + 1 < en.size() && !(en[i].second.hi < en[i + 1].second.lo))
+      break_order(edge, en[i].first, en[i + 1].first);
+    br.push_back(en[i].first);
+  }
   // Equal parameters name one point: keep the smallest name (stable as records arrive).
   br.erase(std::unique(br.begin(), br.end(), [](const Break& x, const Break& y) { return x.at == y.at; }), br.end());
   return br;
 }
 
-// A breakpoint's certified enclosure from the double stage: an edge end exactly, a record's
-// end within its margin, a crossing inside its bracket.
-Interval WindowPropagation::break_enclosure(std::uint32_t edge, const Break& b) const {
-  const std::uint64_t kind = b.id >> 60;
-  if (kind == 0) return Interval(static_cast<double>(b.id & 1));
-  if (kind == (kRecordEnd >> 60)) {
-    const JunctionRecord& r = records_[(b.id >> 1) & 0x7fffffff];
-    const double e = r.at_err[b.id & 1];
-    return {round_down(b.at - e), round_up(b.at + e)};
-  }
-  for (const Crossing& c : junctions_[junction_of_[edge]].crossings)
-    if (c.at.id == b.id && c.bracketed)
-      return {std::nextafter(c.lo.get_d(), -kInf), std::nextafter(c.hi.get_d(), kInf)};
-  return {-kInf, kInf};
-}
-
-// Whether the breakpoints a <= b (by their doubles) are in that order, or one point: their
-// enclosures disjoint (the doubles lie inside them), else their edge points' certified
+// Whether the breakpoints a <= b (by their doubles, their double-stage enclosures
+// overlapping) are in that order, or one point: their edge points' certified
 // parameters (exact, a bracket, an enclosure: break_point) disjoint, or both exact and
 // compared exactly, or within 2^-65 of arc length of each other (a negligible tie). What
 // none proves is counted in `uncertified_breaks`, once per pair.
 void WindowPropagation::break_order(std::uint32_t edge, const Break& a, const Break& b) {
-  const Interval ia = break_enclosure(edge, a), ib = break_enclosure(edge, b);
-  if (ia.hi < ib.lo || (ia.hi == ib.lo && ia.lo == ia.hi && ib.lo == ib.hi)) return;
+  if ((a.id >> 60) == 0 && (b.id >> 60) == 0) return;  // the edge's two ends
   JunctionState& st = junctions_[junction_of_[edge]];
-  const std::pair<std::uint64_t, std::uint64_t> key{std::min(a.id, b.id), std::max(a.id, b.id)};
-  if (std::find(st.ordered.begin(), st.ordered.end(), key) != st.ordered.end()) return;
-  st.ordered.push_back(key);
+  if (!st.ordered.insert({std::min(a.id, b.id), std::max(a.id, b.id)}).second) return;
   const EdgePoint pa = s_.edge_points[break_point(edge, a)], pb = s_.edge_points[break_point(edge, b)];
   mpq_class alo, ahi, blo, bhi;
   if (cert_.edge_point_bounds(pa, &alo, &ahi) && cert_.edge_point_bounds(pb, &blo, &bhi) && (ahi < blo || bhi < alo)) {

@@ -40,6 +40,7 @@
 #include <functional>
 #include <limits>
 #include <queue>
+#include <set>
 #include <vector>
 
 #include "burn3/exact/engine_mutant.h"
@@ -203,7 +204,7 @@ class WindowPropagation {
     std::vector<std::uint64_t> sources;  // break ids with an edge-point source
     std::vector<std::pair<std::uint64_t, std::uint32_t>> points;  // break id -> edge point
     std::vector<Crossing> crossings;     // of every pair among records[0, paired)
-    std::vector<std::pair<std::uint64_t, std::uint64_t>> ordered;  // breakpoint pairs whose order was examined
+    std::set<std::pair<std::uint64_t, std::uint64_t>> ordered;  // breakpoint pairs whose order was examined
     std::size_t paired = 0;
     std::vector<Piece> pieces;  // of the last pass (recomputed when records arrived)
     std::size_t counted = 0;            // records[0, counted) were known to that pass
@@ -243,7 +244,6 @@ class WindowPropagation {
   void schedule_junction(std::uint32_t edge, double key);
   void process_junction(std::uint32_t edge, double key);
   std::vector<Break> junction_breaks(std::uint32_t edge, const std::vector<std::uint32_t>& recs);
-  Interval break_enclosure(std::uint32_t edge, const Break& b) const;
   void break_order(std::uint32_t edge, const Break& a, const Break& b);
   std::uint32_t realising_record(std::uint32_t edge, const std::vector<std::uint32_t>& recs, double at);
   int record_covers(std::uint32_t edge, std::uint32_t r, double at, const std::function<const Target&()>& x);
