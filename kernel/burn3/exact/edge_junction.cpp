@@ -39,8 +39,9 @@
 // older record (equal times), so sources made on the edge never re-realise their own
 // pieces; the pieces' ends are edge points whose parameter is exact where a closed form is
 // found (junction_kinks.h) and a certified enclosure otherwise. What no stage settles is
-// counted `uncertified` (uncertified_crossings, uncertified_orders, uncertified_breaks),
-// never decided by a default.
+// counted `uncertified` (uncertified_crossings, uncertified_orders, uncertified_breaks:
+// also the order of two breakpoints whose enclosures overlap, break_order), never decided
+// by a default.
 // Complexity: per pass O(B R) certified comparisons for R records and B breakpoints
 // (B = O(R^2) crossings at worst; R is small: the windows of one triangle per side).
 #include <algorithm>
@@ -170,19 +171,65 @@ void WindowPropagation::pair_new_records(std::uint32_t edge) {
 std::vector<WindowPropagation::Break> WindowPropagation::junction_breaks(std::uint32_t edge,
                                                                           const std::vector<std::uint32_t>& recs) {
   // Record ends at their double parameters (record_covers decides coverage near them by
-  // certified side tests); crossings at their certified brackets' midpoints.
-  std::vector<Break> br{{0.0, kEdgeEnd | 0}, {1.0, kEdgeEnd | 1}};
+  // certified side tests); crossings at their certified brackets' midpoints. Each with its
+  // certified enclosure from the double stage: an edge end exactly, a record's end within
+  // its margin, a crossing inside its bracket.
+  std::vector<std::pair<Break, Interval>> en{{{0.0, kEdgeEnd | 0}, Interval(0.0)}, {{1.0, kEdgeEnd | 1}, Interval(1.0)}};
   for (std::uint32_t r : recs)
-    for (int j = 0; j < 2; ++j)
-      if (records_[r].at[j] > 0.0 && records_[r].at[j] < 1.0)
-        br.push_back({records_[r].at[j], kRecordEnd | (std::uint64_t(r) << 1) | std::uint64_t(j)});
+    for (int j = 0; j < 2; ++j) {
+      const double at = records_[r].at[j], e = records_[r].at_err[j];
+      if (at > 0.0 && at < 1.0)
+        en.push_back({{at, kRecordEnd | (std::uint64_t(r) << 1) | std::uint64_t(j)}, {round_down(at - e), round_up(at + e)}});
+    }
   pair_new_records(edge);
   for (const Crossing& c : junctions_[junction_of_[edge]].crossings)
-    if (!s_.windows[records_[c.a].window].dead() && !s_.windows[records_[c.b].window].dead()) br.push_back(c.at);
+    if (!s_.windows[records_[c.a].window].dead() && !s_.windows[records_[c.b].window].dead())
+      en.push_back({c.at, c.bracketed ? Interval{std::nextafter(c.lo.get_d(), -kInf), std::nextafter(c.hi.get_d(), kInf)}
+                                      : Interval{-kInf, kInf}});
+  std::sort(en.begin(), en.end(), [](const auto& x, const auto& y) {
+    return x.first.at < y.first.at || (x.first.at == y.first.at && x.first.id < y.first.id);
+  });
+  // The double order is the true one where neighbours' certified enclosures are disjoint;
+  // elsewhere it is proved from the points themselves (break_order), or counted.
+  std::vector<Break> br;
+  for (std::size_t i = 0; i < en.size(); ++i) {
+    if (i + 1 < en.size() && !(en[i].second.hi < en[i + 1].second.lo))
+      break_order(edge, en[i].first, en[i + 1].first);
+    br.push_back(en[i].first);
+  }
   // Equal parameters name one point: keep the smallest name (stable as records arrive).
-  std::sort(br.begin(), br.end(), [](const Break& x, const Break& y) { return x.at < y.at || (x.at == y.at && x.id < y.id); });
   br.erase(std::unique(br.begin(), br.end(), [](const Break& x, const Break& y) { return x.at == y.at; }), br.end());
   return br;
+}
+
+// Whether the breakpoints a <= b (by their doubles, their double-stage enclosures
+// overlapping) are in that order, or one point: their edge points' certified
+// parameters (exact, a bracket, an enclosure: break_point) disjoint, or both exact and
+// compared exactly, or within 2^-65 of arc length of each other (a negligible tie). What
+// none proves is counted in `uncertified_breaks`, once per pair.
+void WindowPropagation::break_order(std::uint32_t edge, const Break& a, const Break& b) {
+  if ((a.id >> 60) == 0 && (b.id >> 60) == 0) return;  // the edge's two ends
+  JunctionState& st = junctions_[junction_of_[edge]];
+  if (!st.ordered.insert({std::min(a.id, b.id), std::max(a.id, b.id)}).second) return;
+  const EdgePoint pa = s_.edge_points[break_point(edge, a)], pb = s_.edge_points[break_point(edge, b)];
+  mpq_class alo, ahi, blo, bhi;
+  if (cert_.edge_point_bounds(pa, &alo, &ahi) && cert_.edge_point_bounds(pb, &blo, &bhi) && (ahi < blo || bhi < alo)) {
+    if (bhi < alo) ++stats_.uncertified_breaks, ++cert_.counts.uncertified;  // proved the other way round
+    return;
+  }
+  if (pa.exact >= 0 && pb.exact >= 0 && exact_sign(s_.exact_times[pb.exact] - s_.exact_times[pa.exact]) >= 0) return;
+  // Both within a stretch of arc length d with 2 d <= 2^-64: whichever order is taken, the
+  // record given to the sliver between them realises A at a point of it (certified at the
+  // elementary interval's midpoint) and A is 1-Lipschitz, so A and the fire emitted there
+  // move by at most 2 d: a negligible tie (2^-64 added to every error, burn_outputs.h).
+  if (cert_.edge_point_bounds(pa, &alo, &ahi) && cert_.edge_point_bounds(pb, &blo, &bhi)) {
+    const mpq_class d = std::max(ahi, bhi) - std::min(alo, blo);
+    if (4 * d * d * cert_.edge_length2(edge) <= mpq_class(1, 1) / (mpq_class(1) << 128)) {
+      ++cert_.counts.negligible_ties;
+      return;
+    }
+  }
+  ++stats_.uncertified_breaks, ++cert_.counts.uncertified;
 }
 
 // Whether record r covers the point x of parameter `at` (1, 0; kUndecided): the double range

@@ -224,6 +224,7 @@ std::optional<ExactSum> exact_crossing(const EdgeTime& p, const EdgeTime& q, con
 
 bool identical_along_edge(const Unfolding& u, const WindowStore& s, Certifier& cert, std::uint32_t edge,
                           std::uint32_t wa, std::uint32_t wb) {
+  if (cert.front_id(wa) == cert.front_id(wb)) return true;  // one front in one frame
   const auto p = edge_time(u, s, cert, edge, wa);
   const auto q = p ? edge_time(u, s, cert, edge, wb) : std::nullopt;
   if (!p || !q || p->line != q->line) return false;

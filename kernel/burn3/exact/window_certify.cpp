@@ -23,33 +23,6 @@ void CertificationCounts::merge(const CertificationCounts& o) {
 
 namespace {
 
-using XV = Certifier::ExactVector;
-
-// A coordinate that grows past this many terms is given up (then Arb decides).
-constexpr std::size_t kMaxTerms = 32;
-constexpr int kMaxIrrationalCrossings = 4;
-
-ExactSum q(const mpq_class& x) { return ExactSum::rational(x); }
-XV xv(const std::array<mpq_class, 2>& a) { return {q(a[0]), q(a[1])}; }
-XV sub(const XV& a, const XV& b) { return {a[0] - b[0], a[1] - b[1]}; }
-ExactSum mul(const ExactSum& a, const ExactSum& b) { return multiply_simplified(a, b); }
-ExactSum cross_xv(const XV& a, const XV& b) { return mul(a[0], b[1]) - mul(a[1], b[0]); }
-ExactSum metric_dot(const XV& a, const XV& b, const mpq_class& g1, const mpq_class& g2) {
-  return scaled(mul(a[0], b[0]), g1) + scaled(mul(a[1], b[1]), g2);
-}
-bool small(const XV& a) { return a[0].term_count() <= kMaxTerms && a[1].term_count() <= kMaxTerms; }
-
-// X' = P(X) + k beta(X) w (Unfolding::ExactCrossing); `affine` false for directions.
-XV cross_over(const Unfolding::ExactCrossing& c, const ExactSum& k, const XV& x, bool affine) {
-  ExactSum beta = scaled(x[0], c.b0) + scaled(x[1], c.b1);
-  XV r{scaled(x[0], c.p00) + scaled(x[1], c.p01), scaled(x[0], c.p10) + scaled(x[1], c.p11)};
-  if (affine) beta += q(c.bc), r[0] += q(c.p0), r[1] += q(c.p1);
-  const ExactSum kb = mul(k, beta);
-  r[0] += scaled(kb, c.w0), r[1] += scaled(kb, c.w1);
-  r[0].simplify(), r[1].simplify();
-  return r;
-}
-
 Ball ball_cross(const BallVec2& a, const BallVec2& b) { return a.x * b.y - a.y * b.x; }
 BallVec2 ball_sub(const BallVec2& a, const BallVec2& b) { return {a.x - b.x, a.y - b.y}; }
 
@@ -92,20 +65,6 @@ Interval Certifier::time_interval(std::uint32_t w, const Target& x) const {
   const Window& win = s_.windows[w];
   const Approx a = approx_time(win, target_disc(win.triangle, x));
   return {round_down(a.v - a.e), round_up(a.v + a.e)};
-}
-
-std::optional<XV> Certifier::target_uv(std::uint32_t f, const Target& x) const {
-  if (x.point) return xv(u_.point_uv(f, *x.point));
-  if (!is_edge_point(x.vertex)) return xv(u_.vertex_uv(f, x.vertex));
-  // (1 - lambda) a + lambda b with lambda exact.
-  const EdgePoint& ep = s_.edge_points[x.vertex & ~kEdgePointBound];
-  if (ep.exact < 0) return std::nullopt;
-  const auto& ev = u_.complex().edge(ep.edge).v;
-  const auto a = u_.vertex_uv(f, ev[0]), b = u_.vertex_uv(f, ev[1]);
-  const ExactSum& l = s_.exact_times[ep.exact];
-  XV r{q(a[0]) + scaled(l, mpq_class(b[0] - a[0])), q(a[1]) + scaled(l, mpq_class(b[1] - a[1]))};
-  r[0].simplify(), r[1].simplify();
-  return r;
 }
 
 // ---- stage 4: Arb re-evaluation of the chain -------------------------------------------
@@ -298,12 +257,14 @@ bool Certifier::edge_point_bounds(const EdgePoint& ep, mpq_class* lo, mpq_class*
   return true;
 }
 
-bool Certifier::same_expression(std::uint32_t w1, std::uint32_t w2, const Target& x) const {
+bool Certifier::same_expression(std::uint32_t w1, std::uint32_t w2, const Target& x) {
   const Window &a0 = s_.windows[w1], &b0 = s_.windows[w2];
-  if (a0.parent == kNoIndex && b0.parent == kNoIndex && same_point_source(a0.pseudo, b0.pseudo)) {
-    // Two first windows of one point S (closed in both triangles): at a point x of both
-    // closed triangles the time is sigma + |x - S| measured in 3D (a straight segment inside
-    // each triangle): a vertex of both, or a point of an edge of both.
+  const auto pa = point_fronts_.find(front_id(w1)), pb = point_fronts_.find(front_id(w2));
+  if (pa != point_fronts_.end() && pb != point_fronts_.end() && pa->second == pb->second) {
+    // Two windows whose fronts are one point S at its own place in their frames, with offsets
+    // proved equal (front_id; e.g. first windows of S, closed in both triangles): at a point x
+    // of both closed triangles the time is sigma + |x - S| measured in 3D (a straight segment
+    // inside each triangle): a vertex of both, or a point of an edge of both.
     const MedialComplex& mc = u_.complex();
     const ComplexTriangle &ta = mc.triangle(a0.triangle), &tb = mc.triangle(b0.triangle);
     if (!x.point) {
@@ -372,8 +333,10 @@ int Certifier::remember(const MemoKey& k, int outcome) {
 }
 
 // Mirrors same_expression: a window has its anchor's front; an anchor without a parent is
-// its pseudo-source (point kinds: one image per frame; plane waves: itself); an anchor with
-// one is the crossing (edge, triangle, parent's triangle) applied to its parent's front.
+// its pseudo-source (point kinds: one image per frame, named by the point and the offset's
+// expression id, so that two sources at one point with offsets proved equal are one front;
+// plane waves: itself); an anchor with one is the crossing (edge, triangle, parent's
+// triangle) applied to its parent's front.
 std::uint32_t Certifier::front_id(std::uint32_t w) {
   if (front_ids_.size() < s_.windows.size()) front_ids_.resize(s_.windows.size(), 0);
   std::vector<std::uint32_t> todo;  // anchors without an id, nearest first (iterative: long chains)
@@ -391,16 +354,67 @@ std::uint32_t Certifier::front_id(std::uint32_t w) {
     if (W.anchor != x) {
       id = front_ids_[W.anchor] - 1;
     } else if (W.parent == kNoIndex) {
-      const SourceOrigin o = s_.pseudo[W.pseudo].origin;
-      const bool point_kind = o == SourceOrigin::Vertex || o == SourceOrigin::GivenPoint || o == SourceOrigin::EdgePoint;
-      id = point_kind ? intern({tag(kRootFront, W.pseudo), u_.frame(W.triangle), 0}) : intern({tag(kPlaneRoot, x), 0, 0});
+      id = root_front(x);
     } else {
       const std::uint32_t parent = front_ids_[s_.windows[W.parent].anchor] - 1;
-      id = intern({tag(kCrossed, W.edge), std::uint64_t(W.triangle) << 32 | s_.windows[W.parent].triangle, parent});
+      const auto pf = point_fronts_.find(parent);
+      if (pf != point_fronts_.end() && point_on_edge(pf->second[0], W.edge)) {
+        // The crossing fixes its edge pointwise, so a point source on it keeps its place.
+        id = point_front(pf->second[0], u_.frame(W.triangle), pf->second[1]);
+      } else {
+        id = intern({tag(kCrossed, W.edge), std::uint64_t(W.triangle) << 32 | s_.windows[W.parent].triangle, parent});
+      }
     }
     front_ids_[x] = id + 1;
   }
   return front_ids_[w] - 1;
+}
+
+// A first window's front: sigma + |X - S| in its frame for a point S (a vertex, an edge
+// point, a caller's point; S lies in the frame's plane, so its image is S's coordinates
+// there), named by S (an edge point at an end of its edge is that vertex), the frame and
+// the offset's expression id; a plane wave by its window.
+std::uint32_t Certifier::root_front(std::uint32_t x) {
+  const Window& W = s_.windows[x];
+  const PseudoSource& ps = s_.pseudo[W.pseudo];
+  std::uint64_t where;
+  switch (ps.origin) {
+    case SourceOrigin::Vertex: where = ps.vertex; break;
+    case SourceOrigin::EdgePoint: where = canonical_point(ps.data | kEdgePointBound); break;
+    case SourceOrigin::GivenPoint: where = std::uint64_t(1) << 40 | ps.data; break;
+    default: return intern({tag(kPlaneRoot, x), 0, 0});
+  }
+  const std::uint64_t sigma = ps.time == kNoIndex ? 0 : std::uint64_t(expr_id(ps.time)) + 1;
+  return point_front(where, u_.frame(W.triangle), sigma);
+}
+
+std::uint32_t Certifier::point_front(std::uint64_t where, std::uint32_t frame, std::uint64_t sigma) {
+  const std::uint32_t id = intern({tag(kRootFront, where), frame, sigma});
+  point_fronts_.emplace(id, std::array<std::uint64_t, 2>{where, sigma});
+  return id;
+}
+
+// Whether the point p (a vertex, or an edge point with kEdgePointBound) lies on `edge`.
+bool Certifier::point_on_edge(std::uint64_t p, std::uint32_t edge) const {
+  if (p > 0xffffffffull) return false;  // a caller's point: not examined
+  const auto q = static_cast<std::uint32_t>(p);
+  if (is_edge_point(q)) return s_.edge_points[q & ~kEdgePointBound].edge == edge;
+  const auto& ev = u_.complex().edge(edge).v;
+  return ev[0] == q || ev[1] == q;
+}
+
+// An edge point whose parameter is exactly 0 or 1 is the edge's end vertex; any other
+// target names itself.
+std::uint32_t Certifier::canonical_point(std::uint32_t target) const {
+  if (!is_edge_point(target)) return target;
+  const EdgePoint& ep = s_.edge_points[target & ~kEdgePointBound];
+  if (ep.exact < 0) return target;
+  const ExactSum& l = s_.exact_times[ep.exact];
+  if (!l.sqrt_terms().empty() || !l.constant_terms().empty()) return target;
+  const auto& ev = u_.complex().edge(ep.edge).v;
+  if (l.rational_part() == 0) return ev[0];
+  if (l.rational_part() == 1) return ev[1];
+  return target;
 }
 
 std::uint32_t Certifier::expr_id(std::uint32_t i) {
@@ -409,9 +423,17 @@ std::uint32_t Certifier::expr_id(std::uint32_t i) {
   const TimeExpr& e = s_.times[i];
   std::uint32_t id;
   switch (e.kind) {
-    case TimeExpr::Kind::WindowAt: id = intern({tag(kWindowAt, front_id(e.a)), e.b, 0}); break;
+    case TimeExpr::Kind::WindowAt: {
+      const std::uint32_t p = canonical_point(e.b);
+      id = intern({tag(kWindowAt, front_id(e.a)), p, 0});
+      break;
+    }
     case TimeExpr::Kind::Plus: id = intern({tag(kPlus, expr_id(e.a)), e.b, 0}); break;
-    case TimeExpr::Kind::Min: id = intern({tag(kMin, expr_id(e.a)), expr_id(e.b), 0}); break;
+    case TimeExpr::Kind::Min: {
+      const std::uint32_t a = expr_id(e.a), b = expr_id(e.b);
+      id = a == b ? a : intern({tag(kMin, std::min(a, b)), std::max(a, b), 0});  // min(x, x) = x
+      break;
+    }
     default: id = intern({tag(kLeaf, i), 0, 0}); break;
   }
   expr_ids_[i] = id + 1;
@@ -422,40 +444,6 @@ std::uint64_t Certifier::point_key(std::uint32_t edge, double at) {
   std::uint64_t bits;
   std::memcpy(&bits, &at, sizeof bits);
   return (1ull << 63) | intern({tag(kPoint, edge), bits, 0});
-}
-
-// ---- stage 3: exact (rational frames and crossings) -------------------------------------
-
-const ExactSum* Certifier::exact_sigma(std::uint32_t p) {
-  const PseudoSource& ps = s_.pseudo[p];
-  if (ps.time == kNoIndex) {
-    static const ExactSum zero;
-    return &zero;
-  }
-  return exact_expr(ps.time);
-}
-
-const ExactSum* Certifier::exact_expr(std::uint32_t i) {
-  if (auto it = exact_time_memo_.find(i); it != exact_time_memo_.end()) return it->second.get();
-  const TimeExpr& e = s_.times[i];
-  std::optional<ExactSum> r;
-  switch (e.kind) {
-    case TimeExpr::Kind::Exact: r = s_.exact_times[e.a]; break;
-    case TimeExpr::Kind::WindowAt: r = exact_time(e.a, Target{e.b, nullptr}); break;
-    case TimeExpr::Kind::Plus:
-      if (const ExactSum* x = exact_expr(e.a)) r = *x + ExactSum::sqrt_of(edge_length2(e.b));
-      break;
-    case TimeExpr::Kind::Enclosure: break;
-    case TimeExpr::Kind::Min: {
-      const ExactSum* x = exact_expr(e.a);
-      const ExactSum* y = x ? exact_expr(e.b) : nullptr;
-      if (x && y) r = exact_sign(*x - *y) <= 0 ? *x : *y;
-      break;
-    }
-  }
-  if (r) r->simplify();
-  std::unique_ptr<ExactSum> owned = r ? std::make_unique<ExactSum>(std::move(*r)) : nullptr;
-  return exact_time_memo_.emplace(i, std::move(owned)).first->second.get();
 }
 
 int Certifier::compare_time_exprs(std::uint32_t a, std::uint32_t b, bool prune_only) {
@@ -489,162 +477,6 @@ int Certifier::compare_time_exprs(std::uint32_t a, std::uint32_t b, bool prune_o
   const int r = escalate(cap, arb_level);
   if (r == kUndecided) ++counts.kept_undecided;
   return r == kUndecided ? remember(key, r) : remember(key, flip * r) * flip;
-}
-
-const Certifier::ExactWindow* Certifier::exact_window(std::uint32_t w) {
-  if (auto it = exact_memo_.find(w); it != exact_memo_.end()) return it->second.get();
-  auto r = build_exact_window(w);
-  return exact_memo_.emplace(w, std::move(r)).first->second.get();
-}
-
-std::unique_ptr<Certifier::ExactWindow> Certifier::build_exact_window(std::uint32_t w, std::uint32_t source_vertex) {
-  std::vector<std::uint32_t> chain;
-  for (std::uint32_t x = w; x != kNoIndex; x = s_.windows[x].parent) chain.push_back(x);
-  std::reverse(chain.begin(), chain.end());
-  const Window& first = s_.windows[chain[0]];
-  const Window& last = s_.windows[w];
-  const PseudoSource& ps = s_.pseudo[first.pseudo];
-  const MedialComplex& mc = u_.complex();
-  auto e = std::make_unique<ExactWindow>();
-  e->frame = u_.frame(first.triangle);
-  if (source_vertex != kNoIndex) {
-    e->s = xv(u_.vertex_uv(e->frame, source_vertex));
-  } else if (ps.origin == SourceOrigin::BorderPoint) {
-    // S = A + alpha E - sqrt(h^2 / |N|^2) N, N the part of C - A orthogonal to E (sources.h),
-    // all rational in local coordinates but the one square root.
-    const std::uint32_t edge = ps.data;
-    const auto& ev = mc.edge(edge).v;
-    const RotatedPoint rp = rotated_point(mc, edge);
-    const auto a = u_.vertex_uv(e->frame, ev[0]), b = u_.vertex_uv(e->frame, ev[1]);
-    const auto c = u_.vertex_uv(e->frame, third_vertex(mc.triangle(first.triangle), ev));
-    const mpq_class g1 = u_.g1(e->frame), g2 = u_.g2(e->frame);
-    const std::array<mpq_class, 2> E{b[0] - a[0], b[1] - a[1]}, AC{c[0] - a[0], c[1] - a[1]};
-    const mpq_class e2 = g1 * E[0] * E[0] + g2 * E[1] * E[1];
-    const mpq_class along = (g1 * AC[0] * E[0] + g2 * AC[1] * E[1]) / e2;
-    const std::array<mpq_class, 2> N{AC[0] - along * E[0], AC[1] - along * E[1]};
-    ExactSum k = ExactSum::sqrt_of(rp.h2 / (g1 * N[0] * N[0] + g2 * N[1] * N[1]));
-    k.simplify();
-    e->s = {q(a[0] + rp.alpha * E[0]) - scaled(k, N[0]), q(a[1] + rp.alpha * E[1]) - scaled(k, N[1])};
-    e->s[0].simplify(), e->s[1].simplify();
-  } else if (ps.origin == SourceOrigin::BorderPlane) {
-    if (ps.exact < 0) return nullptr;
-    const std::uint32_t edge = s_.exact[ps.exact].edge;
-    const auto& ev = mc.edge(edge).v;
-    e->line = true;
-    e->p = xv(u_.vertex_uv(e->frame, ev[0]));
-    e->d = sub(xv(u_.vertex_uv(e->frame, ev[1])), e->p);
-    const XV c = xv(u_.vertex_uv(e->frame, third_vertex(mc.triangle(border_triangle(mc, edge)), ev)));
-    e->inner = exact_sign(cross_xv(e->d, sub(c, e->p)));
-  } else if (ps.origin == SourceOrigin::EdgePoint) {
-    const std::optional<XV> p = target_uv(e->frame, Target{ps.data | kEdgePointBound, nullptr});
-    if (!p) return nullptr;
-    e->s = *p;
-  } else {
-    e->s = xv(ps.origin == SourceOrigin::Vertex ? u_.vertex_uv(e->frame, ps.vertex)
-                                                 : u_.point_uv(e->frame, s_.given[ps.data].point));
-  }
-  std::array<bool, 2> taken{false, false};
-  int generators = 0;
-  for (std::size_t i = 0; i < chain.size(); ++i) {
-    const Window& wi = s_.windows[chain[i]];
-    const std::uint32_t prev = i > 0 ? s_.windows[chain[i - 1]].triangle : kNoIndex;
-    if (i > 0 && !u_.same_frame(prev, wi.triangle)) {
-      const Unfolding::ExactCrossing& c = u_.exact_crossing(wi.edge, prev, wi.triangle);
-      ExactSum k = ExactSum::sqrt_of(c.kk);
-      k.scale(-1);
-      k.simplify();
-      // Each irrational crossing may double the terms: past a few, give up (Arb decides).
-      if (!k.sqrt_terms().empty() && ++generators > kMaxIrrationalCrossings) return nullptr;
-      if (e->line) {
-        e->p = cross_over(c, k, e->p, true), e->d = cross_over(c, k, e->d, false);
-        if (u_.crossing(wi.edge, prev, wi.triangle).reflect) e->inner = -e->inner;
-        if (!small(e->p) || !small(e->d)) return nullptr;
-      } else {
-        e->s = cross_over(c, k, e->s, true);
-        if (!small(e->s)) return nullptr;
-      }
-      for (int j = 0; j < 2; ++j)
-        if (taken[j]) e->image[j] = cross_over(c, k, e->image[j], true);
-      e->frame = u_.frame(wi.triangle);
-    }
-    for (int j = 0; j < 2; ++j)
-      if (!taken[j] && last.bound[j] != kNoIndex && last.bound_depth[j] == i) {
-        const std::optional<XV> b = target_uv(e->frame, Target{last.bound[j], nullptr});
-        if (!b) return nullptr;
-        e->image[j] = *b;
-        taken[j] = true;
-      }
-  }
-  return e;
-}
-
-int Certifier::exact_side(const ExactWindow& e, int j, const Target& x) const {
-  const std::optional<XV> px = target_uv(e.frame, x);
-  if (!px) return kUndecided;
-  const XV& p = *px;
-  if (!e.line) return exact_sign(cross_xv(sub(e.image[j], e.s), sub(p, e.s)));
-  // side = cross(u, X - B) with u the inner unit normal: sign = -inner * sign(E . (X - B)),
-  // the dot product in the frame's metric.
-  return -e.inner * exact_sign(metric_dot(e.d, sub(p, e.image[j]), u_.g1(e.frame), u_.g2(e.frame)));
-}
-
-std::optional<mpq_class> Certifier::line_length2(std::uint32_t w) {
-  const ExactWindow* e = exact_window(w);
-  if (!e || !e->line) return std::nullopt;
-  ExactSum n2 = metric_dot(e->d, e->d, u_.g1(e->frame), u_.g2(e->frame));
-  n2.simplify();
-  if (n2.sqrt_terms().empty() && n2.constant_terms().empty()) return n2.rational_part();
-  // Irrational crossings leave sums of square roots that the simplification does not fold:
-  // d is the border edge's vector carried by isometries, so |d|^2 is its squared length,
-  // proved here by exact comparison (not assumed).
-  const PseudoSource& ps = s_.pseudo[s_.windows[w].pseudo];
-  if (ps.origin != SourceOrigin::BorderPlane || ps.exact < 0 || !n2.constant_terms().empty()) return std::nullopt;
-  const mpq_class len2 = edge_length2(s_.exact[ps.exact].edge);
-  if (exact_sign(n2 - ExactSum::rational(len2)) != 0) return std::nullopt;
-  return len2;
-}
-
-std::optional<ExactSum> Certifier::exact_time(std::uint32_t w, const Target& x) {
-  const ExactWindow* e = exact_window(w);
-  if (!e) return std::nullopt;
-  const ExactSum* sigma = exact_sigma(s_.windows[w].pseudo);
-  if (!sigma) return std::nullopt;
-  const std::optional<XV> px = target_uv(e->frame, x);
-  if (!px) return std::nullopt;
-  const XV& p = *px;
-  const mpq_class &g1 = u_.g1(e->frame), &g2 = u_.g2(e->frame);
-  ExactSum r = *sigma;
-  if (!e->line) {
-    const XV d = sub(p, e->s);
-    ExactSum d2 = metric_dot(d, d, g1, g2);
-    d2.simplify();
-    if (d2.sqrt_terms().empty()) {
-      r += ExactSum::sqrt_of(d2.rational_part());
-    } else if (auto root = sqrt_of_sum(d2)) {
-      r += *root;
-    } else {
-      return std::nullopt;
-    }
-  } else {
-    // distance to the line = inner * cross(d, X - p) * sqrt(g1 g2 / |d|^2)
-    const std::optional<mpq_class> n2 = line_length2(w);
-    if (!n2) return std::nullopt;
-    const ExactSum dist = mul(ExactSum::sqrt_of(g1 * g2 / *n2), cross_xv(e->d, sub(p, e->p)));
-    r += e->inner > 0 ? dist : q(0) - dist;
-  }
-  r.simplify();
-  return r;
-}
-
-// Directions at v in local coordinates: a point source's v - S (cross products scale by
-// sqrt(g1 g2) > 0), a line's inner normal u, for which cross(u, Y) = -inner (E . Y) / |E|.
-int Certifier::exact_direction_cross(const ExactWindow& a, const ExactWindow& b, std::uint32_t v) const {
-  const mpq_class &g1 = u_.g1(a.frame), &g2 = u_.g2(a.frame);
-  const XV x = xv(u_.vertex_uv(a.frame, v));
-  if (!a.line && !b.line) return exact_sign(cross_xv(sub(x, a.s), sub(x, b.s)));
-  if (a.line && !b.line) return -a.inner * exact_sign(metric_dot(a.d, sub(x, b.s), g1, g2));
-  if (!a.line && b.line) return b.inner * exact_sign(metric_dot(b.d, sub(x, a.s), g1, g2));
-  return a.inner * b.inner * exact_sign(cross_xv(a.d, b.d));
 }
 
 // ---- the staged decisions ---------------------------------------------------------------
@@ -845,7 +677,7 @@ int Certifier::compare_times(std::uint32_t w1, const Target& x1, std::uint32_t w
   const std::uint64_t where = x1.point ? x1.key : x1.vertex;
   const bool keyed = same_target && (x1.point ? x1.key != 0 : x1.vertex != kNoIndex);
   std::uint32_t fa = 0, fb = 0;
-  if (keyed) {
+  if (same_target) {  // one front (front_id): one function of the frame's points, one value
     fa = front_id(w1), fb = front_id(w2);
     if (fa == fb) {
       ++counts.structural_equal;

@@ -16,7 +16,8 @@
 //     (|x - S| = |x - p| + |p - S|: one value, even where p is known by a bracket only);
 //  3. exact: windows of a rational pseudo-source whose chain crosses only rational
 //     unfoldings (planar sheets, flat patches, cube-like meshes) are re-evaluated in
-//     rational local coordinates, times as ExactSum (exact sign, ties included);
+//     rational local coordinates, times as ExactSum (exact sign, ties included;
+//     window_exact.cpp);
 //  4. Arb: the chain is re-evaluated from the exact data (vertex coordinates, frames, the
 //     root) at 128, 256, ... bits up to max_bits; each level is a rigorous enclosure;
 //     Order: 1, 2, then Arb's first level (128 bits), then 3, then the rest of 4 (exact
@@ -123,6 +124,12 @@ class Certifier {
   // frame, as same_expression decides), and of a time expression (equal ids: one value).
   std::uint32_t front_id(std::uint32_t w);
   std::uint32_t expr_id(std::uint32_t expr);
+  // A pseudo-source's offset expression was replaced (an absorbed tie): the front and
+  // expression ids and the Arb chains, which name or hold offsets, are computed afresh.
+  void source_time_changed() { front_ids_.clear(), expr_ids_.clear(), chain_memo_.clear(); }
+  // A WindowAt target as the point it is: an edge point at parameter exactly 0 or 1 is that
+  // end vertex of its edge.
+  std::uint32_t canonical_point(std::uint32_t target) const;
   // A key naming the point of parameter `at` (a double, taken exactly) of an edge.
   std::uint64_t point_key(std::uint32_t edge, double at);
 
@@ -163,6 +170,8 @@ class Certifier {
   // prune_only: the caller keeps everything when undecided (escalates to prune_bits only).
   int compare_time_exprs(std::uint32_t a, std::uint32_t b, bool prune_only = false);
   mpq_class edge_length2(std::uint32_t e) const;
+  // An edge point's parameter in rationals [lo, hi] (exact, its bracket, or its enclosure).
+  bool edge_point_bounds(const EdgePoint& ep, mpq_class* lo, mpq_class* hi) const;
 
   CertificationCounts counts;
 
@@ -170,11 +179,14 @@ class Certifier {
   Ball sigma_ball(std::uint32_t pseudo);
   WindowBall evaluate_chain(std::uint32_t w, bool with_offset, std::uint32_t source_vertex);
   void trim_memos();  // only between decisions: pointers into the memo stay valid within one
-  bool same_expression(std::uint32_t w1, std::uint32_t w2, const Target& x) const;
+  bool same_expression(std::uint32_t w1, std::uint32_t w2, const Target& x);
+  std::uint32_t root_front(std::uint32_t w);
+  // The front id of the point source `where` (a vertex, an edge point, a caller's point) at
+  // its own place in `frame`, with offset expression id sigma - 1 (0: no offset).
+  std::uint32_t point_front(std::uint64_t where, std::uint32_t frame, std::uint64_t sigma);
+  bool point_on_edge(std::uint64_t p, std::uint32_t edge) const;
   bool same_point_source(std::uint32_t pa, std::uint32_t pb) const;
   bool relayed_along_edge(std::uint32_t relay, std::uint32_t w, const Target& x) const;
-  // An edge point's parameter in rationals [lo, hi] (exact, its bracket, or its enclosure).
-  bool edge_point_bounds(const EdgePoint& ep, mpq_class* lo, mpq_class* hi) const;
   bool bound_fixed(std::uint32_t w, int j, std::uint32_t v) const;
   std::optional<ExactVector> target_uv(std::uint32_t f, const Target& x) const;
   int exact_side(const ExactWindow& e, int j, const Target& x) const;
@@ -202,6 +214,7 @@ class Certifier {
   long max_bits_, prune_bits_;
   std::unordered_map<MemoKey, std::uint32_t, MemoHash> ids_;  // front, expression and point ids
   std::vector<std::uint32_t> front_ids_, expr_ids_;           // per window / TimeExpr (+1; 0: none yet)
+  std::unordered_map<std::uint32_t, std::array<std::uint64_t, 2>> point_fronts_;  // front id -> (where, sigma)
   std::unordered_map<MemoKey, int, MemoHash> decided_;
   mutable std::unordered_map<MemoKey, DiscPoint, MemoHash> disc_cache_;  // (frame, point key)
   mutable std::unordered_map<MemoKey, BallVec2, MemoHash> ball_cache_;   // (frame, point key, bits)

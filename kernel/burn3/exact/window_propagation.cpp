@@ -386,11 +386,14 @@ void WindowPropagation::vertex_arrival(std::uint32_t w, std::uint32_t v, std::ui
   const std::uint32_t e = window_time_at(w, v);
   int c = -1;
   if (best != kNoIndex) c = cert_.compare_time_exprs(e, best, !is_link_vertex(v));
-  if (c == 0 || c == 1) return;
+  if (c == 1) return;
+  // A proved tie adds nothing to the sector but is still an arrival through its own link
+  // element (the link rule counts the elements arrived).
   if (is_link_vertex(v)) {
     const ComplexTriangle& tr = mc_.triangle(s_.windows[w].triangle);
     link_arrival(v, mc_.corner_element(s_.windows[w].triangle, corner_of(tr, v)), e);
   }
+  if (c == 0) return;
   if (sector_source_[sector] != kNoIndex) {
     // After the sector's source was made (its time was final): only an unprovable tie can
     // arrive; when the source's offset enclosure holds the new time's lower end its windows
@@ -398,6 +401,7 @@ void WindowPropagation::vertex_arrival(std::uint32_t w, std::uint32_t v, std::ui
     PseudoSource& ps = s_.pseudo[sector_source_[sector]];
     if (c == kUndecided && ps.sigma.lo <= tv.lo) {
       ps.time = min_time(ps.time, e);
+      cert_.source_time_changed();
       ++stats_.ties_absorbed;
       return;
     }

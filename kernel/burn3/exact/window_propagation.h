@@ -40,6 +40,7 @@
 #include <functional>
 #include <limits>
 #include <queue>
+#include <set>
 #include <vector>
 
 #include "burn3/exact/edge_fronts.h"
@@ -85,7 +86,9 @@ struct PropagationStats {
   std::uint64_t quenched = 0;         // arrivals that realise no piece (the front ends at the curve)
   std::uint64_t kinks = 0;            // kink points: point sources where the (k-1)-th arrival switches
   std::uint64_t stretch_ends = 0;     // ends of burned stretches next to unburned ones
-  std::uint64_t uncertified_breaks = 0;  // piece ends located only by an enclosure no stage certified
+  // Piece ends located only by an enclosure no stage certified, and neighbouring
+  // breakpoints whose order no stage proved (edge_junction.cpp, break_order).
+  std::uint64_t uncertified_breaks = 0;
   // Junction decisions no stage certified at max_bits (each also counted in the certifier's
   // `uncertified`): pairs of records whose crossings were not all isolated, orders of
   // arrivals and coverages at a point of an elementary interval.
@@ -205,6 +208,7 @@ class WindowPropagation {
     std::vector<std::uint64_t> sources;  // break ids with an edge-point source
     std::vector<std::pair<std::uint64_t, std::uint32_t>> points;  // break id -> edge point
     std::vector<Crossing> crossings;     // of every pair among records[0, paired)
+    std::set<std::pair<std::uint64_t, std::uint64_t>> ordered;  // breakpoint pairs whose order was examined
     std::size_t paired = 0;
     std::vector<Piece> pieces;  // of the last pass (recomputed when records arrived)
     std::size_t counted = 0;            // records[0, counted) were known to that pass
@@ -244,6 +248,7 @@ class WindowPropagation {
   void schedule_junction(std::uint32_t edge, double key);
   void process_junction(std::uint32_t edge, double key);
   std::vector<Break> junction_breaks(std::uint32_t edge, const std::vector<std::uint32_t>& recs);
+  void break_order(std::uint32_t edge, const Break& a, const Break& b);
   std::uint32_t realising_record(std::uint32_t edge, const std::vector<std::uint32_t>& recs, double at);
   int record_covers(std::uint32_t edge, std::uint32_t r, double at, const std::function<const Target&()>& x);
   std::vector<Piece> junction_pieces(std::uint32_t edge);
