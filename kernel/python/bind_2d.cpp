@@ -1,4 +1,4 @@
-// bind_2d.cpp -- grassfire.edf2d, prune2d and match2d: the 2D pipelines (pipeline/edf2d.h,
+// bind_2d.cpp -- grassfire.edf2d, prune2d, match2d, validate and shapes: the 2D pipelines (pipeline/edf2d.h,
 // prune2d.h, match2d.h) from Python.
 //
 // A shape is a file path or built-in name (as the program's SHAPE argument, images
@@ -13,6 +13,7 @@
 
 #include <cmath>
 #include <optional>
+#include <sstream>
 #include <string>
 
 #include "bindings.h"
@@ -21,6 +22,9 @@
 #include "pipeline/edf2d_json.h"
 #include "apps2d/match2d.h"
 #include "pipeline/prune2d.h"
+#include "pipeline/shape_report.h"
+#include "io/shape_json.h"
+#include "shapes/builtin_shapes.h"
 #include "python_inputs.h"
 #include "python_values.h"
 #include "shapes/image_shape.h"
@@ -99,6 +103,21 @@ py::dict match2d(const py::object& a, const py::object& b, const std::string& si
   return to_python(nlohmann::json::parse(json)).cast<py::dict>();
 }
 
+py::dict validate(const py::object& shape, const std::string& name, const ImageShapeOptions& image, bool image_given) {
+  ShapeValidation report;
+  const Shape2 s = shape_of(shape, name, image, image_given, &report);
+  return to_python(nlohmann::json::parse(shape_validation_json(s, report))).cast<py::dict>();
+}
+
+py::dict shapes(const std::optional<std::string>& name) {
+  if (!name) return to_python(nlohmann::json::parse(builtin_shapes_json())).cast<py::dict>();
+  if (!is_builtin_shape(*name))
+    throw std::invalid_argument("no built-in shape '" + *name + "' (built-in: " + builtin_shape_names() + ")");
+  std::ostringstream out;
+  write_shape_json(builtin_shape(*name), out);
+  return to_python(nlohmann::json::parse(out.str())).cast<py::dict>();
+}
+
 }  // namespace
 
 void bind_2d(py::module_& m) {
@@ -170,6 +189,37 @@ Returns the members of the grassfire-match2d JSON (kernel/apps2d/match2d.h): "co
 >>> m = grassfire.match2d("rectangle", "rectangle-bump", samples=40)
 >>> m["correspondence"].shape
 (40,))doc");
+  m.def(
+      "validate",
+      [](const py::object& shape, const std::string& name, const py::dict& image) {
+        return validate(shape, name, image_options(image), !image.empty());
+      },
+      py::arg("shape"), py::arg("name") = "array", py::arg("image") = py::dict(),
+      R"doc(Checks a planar shape exactly and describes it (grassfire validate --json).
+
+shape  as edf2d's (a path, a built-in name, (n, 2) arrays, a shapely polygon, a 2D boolean
+       array)
+name   the shape's name in messages and in the result, for arrays
+image  image options, as edf2d's
+
+Returns the members of the grassfire-shape-validation JSON (kernel/pipeline/shape_report.h):
+per ring its vertices, the repeated vertices dropped, whether it was reversed, its signed
+area and that area's certified error; the area; the exact predicates used. An invalid shape
+raises ValueError with the program's message (the first problem found).
+
+>>> import grassfire
+>>> v = grassfire.validate("hole")
+>>> v["valid"], v["area"], v["rings"]["orientation"]
+(True, 56.875, ['ccw', 'cw']))doc");
+  m.def("shapes", &shapes, py::arg("name") = py::none(),
+        R"doc(The built-in shapes (grassfire shapes --list-json), or one of them (grassfire shapes --json NAME).
+
+name  None for the list ("shapes": name, description, rings, vertices of each), or a
+      built-in name for that shape in the shapes2d JSON format
+
+>>> import grassfire
+>>> "rectangle" in list(grassfire.shapes()["shapes"]["name"])
+True)doc");
 }
 
 }  // namespace grassfire::python

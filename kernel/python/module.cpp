@@ -5,8 +5,8 @@
 //   a = grassfire.medial3d("data/balls/caffeine.cin")                # the axis as numpy arrays
 //   b = grassfire.burn3d("board-fin", spacing=0.1)                   # BT, ET per vertex
 //   p = grassfire.prune3d((V, F), et=0.2, relative=True)              # a mesh's axis, pruned
-// Every function (edf2d, prune2d, match2d, medial3d, burn3d, complex, curves3d, paths3d,
-// prune3d) runs the same kernel code as the program's command of the same name and returns
+// Every function (edf2d, prune2d, match2d, validate, shapes, medial3d, burn3d, complex,
+// curves3d, paths3d, prune3d) runs the same kernel code as the program's command of the same name and returns
 // what its --json writes, with numpy arrays (bind_2d.cpp, bind_3d.cpp, bind_3d_analysis.cpp;
 // inputs: python_inputs.h). The GIL is released while the kernel computes.
 #include <pybind11/pybind11.h>

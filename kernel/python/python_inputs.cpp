@@ -193,15 +193,18 @@ GrayAlphaImage mask_image(const py::array& mask) {
 }  // namespace
 
 Shape2 shape_of(const py::object& shape, const std::string& name, const ImageShapeOptions& image,
-                bool image_options_given) {
-  if (is_path(shape)) return load_shape(path_text(shape), image);
+                bool image_options_given, ShapeValidation* report) {
+  if (is_path(shape)) return load_shape(path_text(shape), image, report);
   Shape2 s;
   s.name = name;
   if (py::isinstance<py::array>(shape) && shape.cast<py::array>().dtype().kind() == 'b' &&
       shape.cast<py::array>().ndim() == 2) {
     ImageShapeOptions o = image;
     if (!image_options_given || o.foreground == ImageForeground::Auto) o.foreground = ImageForeground::Dark;
-    return image_shape(mask_image(shape.cast<py::array>()), o, name);
+    Shape2 traced = image_shape(mask_image(shape.cast<py::array>()), o, name);
+    // As load_shape does for an image file: validating the traced rings fills the report.
+    if (report) *report = validate_shape(traced, name);
+    return traced;
   }
   if (py::hasattr(shape, "geoms")) {  // a multi-polygon: one polygon only, as WKT's MULTIPOLYGON
     const py::list geoms(shape.attr("geoms"));
@@ -218,7 +221,8 @@ Shape2 shape_of(const py::object& shape, const std::string& name, const ImageSha
     throw std::invalid_argument(name + ": a shape is a file path, a built-in name, an (n, 2) array or a list of them, "
                                        "a shapely polygon, or a 2D boolean array (an image)");
   }
-  validate_shape(s, name);
+  const ShapeValidation v = validate_shape(s, name);
+  if (report) *report = v;
   return s;
 }
 

@@ -24,6 +24,7 @@
 #include "pipeline/burn3d.h"
 #include "support/progress.h"
 #include "shapes/image_shape.h"
+#include "shapes/validate_shape.h"
 #include "geometry2/shape2.h"
 
 namespace grassfire::python {
@@ -72,7 +73,8 @@ std::string path_text(const pybind11::object& x);
 // "<name>:<row from 1>" in messages.
 BurnPoints points_of(const pybind11::object& x, const std::string& name, pybind11::ssize_t columns);
 
+// With `report`, the validation's description (shapes/validate_shape.h) as load_shape gives it.
 Shape2 shape_of(const pybind11::object& shape, const std::string& name, const ImageShapeOptions& image,
-                bool image_options_given);
+                bool image_options_given, ShapeValidation* report = nullptr);
 
 }  // namespace grassfire::python

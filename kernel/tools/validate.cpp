@@ -3,6 +3,8 @@
 #include <iostream>
 
 #include "io/load_shape.h"
+#include "pipeline/shape_report.h"
+#include "support/atomic_file.h"
 #include "tools/commands.h"
 #include "tools/options.h"
 
@@ -24,10 +26,12 @@ int run_validate(int argc, char** argv) {
       .epilog("Repeated consecutive vertices and a repeated closing vertex are dropped silently; the outer\n"
               "ring is made counter-clockwise and holes clockwise. Vertex numbers in messages are\n"
               "0-based positions in the file.");
+  opt.option("json", "OUT", "also write the description as JSON (format: kernel/pipeline/shape_report.h)");
   add_image_options(opt);
   if (!opt.parse(argc, argv)) return opt.exit_code();
   ShapeValidation report;
   const Shape2 shape = load_shape(opt.arg("SHAPE"), image_options(opt), &report);
+  if (opt.has("json")) write_file_atomically(opt.get("json"), shape_validation_json(shape, report));
   if (opt.has("quiet")) return 0;  // the exit code says valid
   std::cout << shape.name << ": valid, " << shape.rings.size() << (shape.rings.size() == 1 ? " ring" : " rings")
             << "\n";

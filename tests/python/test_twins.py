@@ -4,6 +4,7 @@ same data as files; errors with the program's messages; the documented examples 
 (The GIL and progress: test_long_calls.py.)
 """
 import doctest
+import json
 import os
 import tempfile
 import types
@@ -12,7 +13,7 @@ import unittest
 import numpy as np
 
 import grassfire
-from support import PROJECT_DATA, TEST_DATA, cli_error, cli_json, json_number, same_number, write_png_gray
+from support import PROJECT_DATA, TEST_DATA, cli_error, cli_json, json_number, run_cli, same_number, write_png_gray
 
 CUBE = os.path.join(PROJECT_DATA, "meshes", "cube.off")
 BALLS = os.path.join(TEST_DATA, "3d", "three_balls.cin")
@@ -42,6 +43,13 @@ def plain(x):
     return x
 
 
+def as_columns(doc, key):
+    """doc with its array of objects doc[key] as the module gives it: a dict of columns."""
+    out = dict(doc)
+    out[key] = {k: [o[k] for o in doc[key]] for k in doc[key][0]}
+    return out
+
+
 def assert_columns_equal(test, columns, objects, keys):
     for key in keys:
         test.assertEqual(len(columns[key]), len(objects), key)
@@ -53,7 +61,8 @@ class DocumentedExamples(unittest.TestCase):
     def test_every_documented_example_runs(self):
         suite = doctest.DocTestSuite(grassfire)
         names = {t.id().split(".")[-1] for t in suite}
-        for f in ("prune2d", "match2d", "medial3d", "burn3d", "complex", "curves3d", "paths3d", "prune3d"):
+        for f in ("prune2d", "match2d", "medial3d", "burn3d", "complex", "curves3d", "paths3d", "prune3d",
+                  "validate", "shapes"):
             self.assertIn(f, names)
         result = unittest.TextTestRunner(verbosity=0).run(suite)
         self.assertTrue(result.wasSuccessful(), result.failures)
@@ -75,6 +84,42 @@ class TwinsEqualProgram(unittest.TestCase):
             self.assertEqual(r[key], j[key], key)
         self.assertEqual(r["correspondence"].tolist(), j["correspondence"])
         self.assertEqual(r["path"].tolist(), j["path"])
+
+    def test_validate(self):
+        for shape in ("hole", "blunt-sharp", os.path.join(PROJECT_DATA, "shapes2d", "LICENSE.md")):
+            if shape.endswith(".md"):
+                continue
+            r = grassfire.validate(shape)
+            j = cli_json("validate", shape)
+            self.assertEqual(plain(r), as_columns(j, "rings"))
+        ring = [[0, 0], [3, 0], [3, 0], [3, 2], [0, 2]]  # clockwise-free, one repeated vertex
+        with tempfile.TemporaryDirectory() as tmp:
+            wkt = os.path.join(tmp, "rect.wkt")
+            with open(wkt, "w", encoding="utf-8") as f:
+                f.write("POLYGON ((0 0, 3 0, 3 0, 3 2, 0 2, 0 0))")
+            j = cli_json("validate", wkt)
+        r = plain(grassfire.validate(np.array(ring, dtype=float), name="rect"))
+        for key in ("vertices", "orientation", "signed_area"):  # the WKT also counts its closing vertex as given
+            self.assertEqual(r["rings"][key], as_columns(j, "rings")["rings"][key], key)
+        self.assertEqual((r["area"], r["rings"]["input_vertices"], r["rings"]["vertices"]), (6.0, [5], [4]))
+
+    def test_shapes(self):
+        with tempfile.TemporaryDirectory() as tmp:
+            out = os.path.join(tmp, "list.json")
+            code, _, err = run_cli("shapes", "--list-json", out)
+            self.assertEqual(code, 0, err)
+            with open(out, encoding="utf-8") as f:
+                self.assertEqual(plain(grassfire.shapes()), as_columns(json.load(f), "shapes"))
+        code, text, err = run_cli("shapes", "--json", "rectangle")
+        self.assertEqual(code, 0, err)
+        expected = json.loads(text)
+        got = plain(grassfire.shapes("rectangle"))
+        self.assertEqual(set(got), set(expected))
+        for key in expected:
+            if not isinstance(expected[key], (list, dict)):
+                self.assertEqual(got[key], expected[key], key)
+        with self.assertRaises(ValueError):
+            grassfire.shapes("no-such-shape")
 
     def test_complex(self):
         r = grassfire.complex("y-junction")
@@ -173,6 +218,13 @@ class Errors(unittest.TestCase):
         with self.assertRaises(Exception) as e:
             grassfire.curves3d("no-such-file.off")
         self.assertEqual(str(e.exception), cli_error("curves3d", "no-such-file.off"))
+        with self.assertRaises(Exception) as e:
+            grassfire.validate(np.array([[0, 0], [2, 2], [2, 0], [0, 2]], dtype=float), name="bowtie")
+        with tempfile.TemporaryDirectory() as tmp:
+            wkt = os.path.join(tmp, "bowtie.wkt")
+            with open(wkt, "w", encoding="utf-8") as f:
+                f.write("POLYGON ((0 0, 2 2, 2 0, 0 2, 0 0))")
+            self.assertEqual(str(e.exception).replace("bowtie", "X"), cli_error("validate", wkt).replace(wkt, "X"))
         with self.assertRaises(ValueError) as e:
             grassfire.paths3d("tube", from_="nowhere")
         self.assertEqual(str(e.exception), cli_error("paths3d", "tube", "--from", "nowhere"))
