@@ -10,6 +10,7 @@
 #include <stdexcept>
 
 #include "io/complex_text.h"
+#include "io/json_numbers.h"
 #include "io/json_text.h"
 #include "support/atomic_file.h"
 #include "support/format_error.h"
@@ -28,12 +29,6 @@ struct Fnv1a {
   }
   void number(std::uint64_t n) { bytes(std::to_string(n)); }
 };
-
-nlohmann::json doubles(const std::vector<double>& values) {
-  nlohmann::json a = nlohmann::json::array();
-  for (double v : values) a.push_back(std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr));
-  return a;
-}
 
 [[noreturn]] void refuse(const std::string& path, const std::string& problem) { throw FormatError(path + ": " + problem); }
 
@@ -133,11 +128,11 @@ void write_burn_field(const MedialComplex& mc, const DiscreteBurning& d, const s
   j["method"] = "discrete";
   j["spacing"] = d.spacing;
   j["complex"] = complex_counts(mc);
-  j["vertex_bt"] = doubles(d.vertex_bt);
-  j["vertex_et"] = doubles(d.vertex_et);
-  j["steiner_bt"] = doubles(d.steiner_bt);
+  j["vertex_bt"] = finite_or_null(d.vertex_bt);
+  j["vertex_et"] = finite_or_null(d.vertex_et);
+  j["steiner_bt"] = finite_or_null(d.steiner_bt);
   j["edge_first_steiner"] = d.edge_first_steiner;
-  j["arrival_time"] = doubles(d.arrival_time);
+  j["arrival_time"] = finite_or_null(d.arrival_time);
   j["vertex_slot"] = d.vertex_slot;
   j["edge_slot"] = d.edge_slot;
   j["arrival_from"] = d.arrival_from;

@@ -1,11 +1,11 @@
 // curves_export.cpp -- JSON and polylines of medial curve graphs (see header).
 #include "io/curves_export.h"
 
+#include "io/json_numbers.h"
+
 #include <cmath>
 
 namespace grassfire {
-
-nlohmann::json finite_or_null(double x) { return std::isfinite(x) ? nlohmann::json(x) : nlohmann::json(nullptr); }
 
 nlohmann::json medial_curves_json(const MedialCurves& c, const std::string& input) {
   nlohmann::json j;

@@ -44,7 +44,5 @@ nlohmann::json burning_paths_json(const std::vector<BurningPath>& paths, const s
                                   const std::string& method, const std::string& from);
 PolylineSet burning_paths_polylines(const std::vector<BurningPath>& paths);
 
-// A finite number, or null.
-nlohmann::json finite_or_null(double x);
 
 }  // namespace grassfire

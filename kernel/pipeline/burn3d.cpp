@@ -8,6 +8,7 @@
 #include "burn3/point_sources.h"
 #include "complex3/point_location.h"
 #include "io/complex_text.h"
+#include "io/json_numbers.h"
 #include "support/progress.h"
 #include "pipeline/complex_input.h"
 
@@ -54,12 +55,6 @@ std::vector<PointSource> locate_sources(const ComplexLocator& locator, const Bur
     sources.push_back({std::move(x), row.t0});
   }
   return sources;
-}
-
-nlohmann::json finite_or_null(const std::vector<double>& values) {
-  nlohmann::json a = nlohmann::json::array();
-  for (double v : values) a.push_back(std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr));
-  return a;
 }
 
 nlohmann::json report(const Burn3dSetup& setup, const Burn3dRun& run) {

@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "io/curves_export.h"
+#include "io/json_numbers.h"
 #include "support/progress.h"
 
 namespace grassfire {
